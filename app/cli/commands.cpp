@@ -1,0 +1,50 @@
+#include "app/cli/commands.h"
+
+#include <array>
+
+namespace iec::cli {
+
+namespace {
+
+// Subcommands whose implementation arrives with a later part of IEC Studio say so plainly.
+int notAvailableYet(const QStringList &, Io io)
+{
+    io.err << "iecstudio-cli: this command is not available in this build yet.\n";
+    return ExitUsage;
+}
+
+constexpr std::array<Command, 5> kCommands{{
+    {"check", "check FILE", "Compile every POU and list the diagnostics; exit 1 on an error.", notAvailableYet},
+    {"info", "info FILE [--json]", "Count POUs, data types, variables and graphical elements.", notAvailableYet},
+    {"convert", "convert IN OUT", "Read a project (.xml or .st) and write it in the format of OUT.", notAvailableYet},
+    {"run", "run FILE [--program P] [--cycles N] [--cycle-time 10ms] [--set NAME=VALUE[@CYCLE]]... "
+            "[--watch NAME]... [--trace OUT.csv|OUT.vcd]",
+     "Run scan cycles on a virtual clock and print the watched values.", notAvailableYet},
+    {"render", "render FILE --pou NAME OUT.svg|OUT.png|OUT.pdf", "Draw a POU body without a display.",
+     notAvailableYet},
+}};
+
+} // namespace
+
+std::span<const Command> commands()
+{
+    return kCommands;
+}
+
+int printUsage(QTextStream &stream)
+{
+    stream << "Usage: iecstudio-cli COMMAND [ARGUMENTS]\n\n"
+           << "IEC Studio on the command line: check, inspect, convert, run and render IEC 61131-3 projects\n"
+           << "(PLCopen XML or IEC textual .st).\n\n"
+           << "Commands:\n";
+    for (const Command &command : kCommands)
+        stream << "  " << qSetFieldWidth(10) << Qt::left << command.name << qSetFieldWidth(0) << command.summary
+               << "\n" << "            iecstudio-cli " << command.synopsis << "\n";
+    stream << "\nOptions:\n"
+           << "  -h, --help     Show this help.\n"
+           << "  -v, --version  Show the version.\n\n"
+           << "Exit status: 0 success, 1 errors found, 2 wrong usage, 3 a file could not be read or written.\n";
+    return ExitOk;
+}
+
+} // namespace iec::cli

@@ -1,0 +1,69 @@
+#pragma once
+
+#include <QMainWindow>
+
+class QAction;
+class QDockWidget;
+class QMenu;
+class QPlainTextEdit;
+class QTreeWidget;
+class QUndoGroup;
+
+namespace iec::model {
+class ProjectModel;
+}
+
+namespace iec::app {
+
+// The IDE's main window: menus, the project tree and messages docks, and the central document
+// area. Texts are set in retranslateUi() so that switching the UI language updates them live.
+class MainWindow : public QMainWindow
+{
+    Q_OBJECT
+
+public:
+    explicit MainWindow(QWidget *parent = nullptr);
+    ~MainWindow() override;
+
+    [[nodiscard]] model::ProjectModel &projectModel() { return *m_projectModel; }
+    [[nodiscard]] QUndoGroup &undoGroup() { return *m_undoGroup; }
+
+public Q_SLOTS:
+    void showAboutBox();
+
+protected:
+    void changeEvent(QEvent *event) override;
+
+private:
+    void createActions();
+    void createMenus();
+    void createDocks();
+    void retranslateUi();
+
+    model::ProjectModel *m_projectModel = nullptr;
+    QUndoGroup *m_undoGroup = nullptr;
+
+    QMenu *m_fileMenu = nullptr;
+    QMenu *m_editMenu = nullptr;
+    QMenu *m_viewMenu = nullptr;
+    QMenu *m_projectMenu = nullptr;
+    QMenu *m_onlineMenu = nullptr;
+    QMenu *m_helpMenu = nullptr;
+
+    QAction *m_quitAction = nullptr;
+    QAction *m_undoAction = nullptr;
+    QAction *m_redoAction = nullptr;
+    QAction *m_buildAction = nullptr;
+    QAction *m_loginAction = nullptr;
+    QAction *m_stopAction = nullptr;
+    QAction *m_singleCycleAction = nullptr;
+    QAction *m_aboutAction = nullptr;
+    QAction *m_aboutQtAction = nullptr;
+
+    QDockWidget *m_projectDock = nullptr;
+    QDockWidget *m_messagesDock = nullptr;
+    QTreeWidget *m_projectTree = nullptr;
+    QPlainTextEdit *m_messages = nullptr;
+};
+
+} // namespace iec::app

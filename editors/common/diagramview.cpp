@@ -1,0 +1,83 @@
+#include "editors/common/diagramview.h"
+
+#include "editors/common/zoomsteps.h"
+
+#include <QMouseEvent>
+#include <QScrollBar>
+#include <QWheelEvent>
+
+namespace iec::editors {
+
+DiagramView::DiagramView(QWidget *parent)
+    : QGraphicsView(parent)
+{
+    setDragMode(QGraphicsView::RubberBandDrag);
+    setRenderHint(QPainter::Antialiasing);
+    setTransformationAnchor(QGraphicsView::AnchorUnderMouse);
+    setResizeAnchor(QGraphicsView::AnchorViewCenter);
+}
+
+void DiagramView::setZoom(double factor)
+{
+    const double clamped = clampZoom(factor);
+    if (qFuzzyCompare(clamped, m_zoom))
+        return;
+    m_zoom = clamped;
+    setTransform(QTransform::fromScale(m_zoom, m_zoom));
+    Q_EMIT zoomChanged(m_zoom);
+}
+
+void DiagramView::zoomIn() { setZoom(nextZoomIn(m_zoom)); }
+void DiagramView::zoomOut() { setZoom(nextZoomOut(m_zoom)); }
+void DiagramView::resetZoom() { setZoom(1.0); }
+
+void DiagramView::wheelEvent(QWheelEvent *event)
+{
+    if (!(event->modifiers() & Qt::ControlModifier)) {
+        QGraphicsView::wheelEvent(event);
+        return;
+    }
+    if (event->angleDelta().y() > 0)
+        zoomIn();
+    else if (event->angleDelta().y() < 0)
+        zoomOut();
+    event->accept();
+}
+
+void DiagramView::mousePressEvent(QMouseEvent *event)
+{
+    if (event->button() == Qt::MiddleButton) {
+        m_panning = true;
+        m_lastPanPosition = event->position().toPoint();
+        setCursor(Qt::ClosedHandCursor);
+        event->accept();
+        return;
+    }
+    QGraphicsView::mousePressEvent(event);
+}
+
+void DiagramView::mouseMoveEvent(QMouseEvent *event)
+{
+    if (m_panning) {
+        const QPoint delta = event->position().toPoint() - m_lastPanPosition;
+        m_lastPanPosition = event->position().toPoint();
+        horizontalScrollBar()->setValue(horizontalScrollBar()->value() - delta.x());
+        verticalScrollBar()->setValue(verticalScrollBar()->value() - delta.y());
+        event->accept();
+        return;
+    }
+    QGraphicsView::mouseMoveEvent(event);
+}
+
+void DiagramView::mouseReleaseEvent(QMouseEvent *event)
+{
+    if (m_panning && event->button() == Qt::MiddleButton) {
+        m_panning = false;
+        unsetCursor();
+        event->accept();
+        return;
+    }
+    QGraphicsView::mouseReleaseEvent(event);
+}
+
+} // namespace iec::editors

@@ -1,0 +1,24 @@
+#pragma once
+
+#include <QtGlobal>
+
+#include <compare>
+#include <functional>
+
+namespace iec::model {
+
+// Identifies a POU while the project is open. It survives renames, so undo commands and views
+// can refer to a POU by id (DESIGN.md: ids, not pointers, across layers).
+struct PouId {
+    quint32 value = 0;
+
+    [[nodiscard]] constexpr bool isValid() const { return value != 0; }
+    constexpr auto operator<=>(const PouId &) const = default;
+};
+
+} // namespace iec::model
+
+template <>
+struct std::hash<iec::model::PouId> {
+    std::size_t operator()(iec::model::PouId id) const noexcept { return std::hash<quint32>{}(id.value); }
+};

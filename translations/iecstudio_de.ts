@@ -1,0 +1,116 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de_DE">
+<context>
+    <name>iec::app::MainWindow</name>
+    <message>
+        <source>IEC Studio</source>
+        <translation>IEC Studio</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Project</source>
+        <translation>&amp;Projekt</translation>
+    </message>
+    <message>
+        <source>&amp;Online</source>
+        <translation>&amp;Online</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <source>&amp;Build</source>
+        <translation>&amp;Übersetzen</translation>
+    </message>
+    <message>
+        <source>Login and &amp;Run</source>
+        <translation>Einloggen und &amp;Starten</translation>
+    </message>
+    <message>
+        <source>&amp;Stop</source>
+        <translation>S&amp;toppen</translation>
+    </message>
+    <message>
+        <source>Single &amp;Cycle</source>
+        <translation>&amp;Einzelzyklus</translation>
+    </message>
+    <message>
+        <source>&amp;About IEC Studio</source>
+        <translation>Ü&amp;ber IEC Studio</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>Über &amp;Qt</translation>
+    </message>
+    <message>
+        <source>Project</source>
+        <translation>Projekt</translation>
+    </message>
+    <message>
+        <source>Messages</source>
+        <translation>Meldungen</translation>
+    </message>
+    <message>
+        <source>Open a POU from the project tree to edit it.</source>
+        <translation>Öffnen Sie einen Baustein im Projektbaum, um ihn zu bearbeiten.</translation>
+    </message>
+    <message>
+        <source>About IEC Studio</source>
+        <translation>Über IEC Studio</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;IEC Studio %1&lt;/h3&gt;&lt;p&gt;An IDE for the five IEC 61131-3 languages: Ladder Diagram, Function Block Diagram with CFC, Sequential Function Chart, Instruction List and Structured Text.&lt;/p&gt;&lt;p&gt;Projects are stored as PLCopen TC6 XML v2.01.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;IEC Studio %1&lt;/h3&gt;&lt;p&gt;Eine Entwicklungsumgebung für die fünf Sprachen der IEC 61131-3: Kontaktplan, Funktionsbausteinsprache mit CFC, Ablaufsprache, Anweisungsliste und Strukturierter Text.&lt;/p&gt;&lt;p&gt;Projekte werden als PLCopen TC6 XML v2.01 gespeichert.&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::AddPouCommand</name>
+    <message>
+        <source>Add POU %1</source>
+        <translation>Baustein %1 hinzufügen</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::RenamePouCommand</name>
+    <message>
+        <source>Rename %1 to %2</source>
+        <translation>%1 in %2 umbenennen</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>IEC 61131-3 development environment</source>
+        <translation>Entwicklungsumgebung für IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>PLCopen XML project to open.</source>
+        <translation>Zu öffnendes PLCopen-XML-Projekt.</translation>
+    </message>
+</context>
+</TS>
