@@ -1,15 +1,19 @@
 #include "app/mainwindow.h"
 
+#include "app/settingsdialog.h"
+#include "app/uitranslator.h"
 #include "model/projectmodel.h"
 
 #include <QAction>
 #include <QApplication>
+#include <QCloseEvent>
 #include <QDockWidget>
 #include <QEvent>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPlainTextEdit>
+#include <QSettings>
 #include <QStatusBar>
 #include <QTreeWidget>
 #include <QUndoGroup>
@@ -20,6 +24,8 @@ MainWindow::MainWindow(QWidget *parent)
     : QMainWindow(parent)
     , m_projectModel(new model::ProjectModel(this))
     , m_undoGroup(new QUndoGroup(this))
+    , m_translator(new UiTranslator(this))
+    , m_settings(Settings::load(QSettings()))
 {
     setObjectName(QStringLiteral("MainWindow"));
     auto *placeholder = new QLabel(this);
@@ -31,8 +37,10 @@ MainWindow::MainWindow(QWidget *parent)
     createMenus();
     createDocks();
     statusBar();
+    applyUiLanguage(m_settings.uiLanguage);
     retranslateUi();
     resize(1200, 800);
+    restoreWindowLayout();
 }
 
 MainWindow::~MainWindow() = default;
@@ -65,6 +73,10 @@ void MainWindow::createActions()
     m_singleCycleAction->setShortcut(QKeySequence(Qt::Key_F8));
     m_singleCycleAction->setEnabled(false);
 
+    m_settingsAction = new QAction(this);
+    m_settingsAction->setMenuRole(QAction::PreferencesRole);
+    connect(m_settingsAction, &QAction::triggered, this, &MainWindow::showSettingsDialog);
+
     m_aboutAction = new QAction(this);
     m_aboutAction->setMenuRole(QAction::AboutRole);
     connect(m_aboutAction, &QAction::triggered, this, &MainWindow::showAboutBox);
@@ -90,6 +102,8 @@ void MainWindow::createMenus()
     m_projectMenu = menuBar()->addMenu(QString());
     m_projectMenu->setObjectName(QStringLiteral("projectMenu"));
     m_projectMenu->addAction(m_buildAction);
+    m_projectMenu->addSeparator();
+    m_projectMenu->addAction(m_settingsAction);
 
     m_onlineMenu = menuBar()->addMenu(QString());
     m_onlineMenu->setObjectName(QStringLiteral("onlineMenu"));
@@ -138,6 +152,7 @@ void MainWindow::retranslateUi()
     m_undoAction->setText(tr("&Undo"));
     m_redoAction->setText(tr("&Redo"));
     m_buildAction->setText(tr("&Build"));
+    m_settingsAction->setText(tr("&Settings..."));
     m_loginAction->setText(tr("Login and &Run"));
     m_stopAction->setText(tr("&Stop"));
     m_singleCycleAction->setText(tr("Single &Cycle"));
@@ -156,6 +171,48 @@ void MainWindow::changeEvent(QEvent *event)
     if (event->type() == QEvent::LanguageChange)
         retranslateUi();
     QMainWindow::changeEvent(event);
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    saveWindowLayout();
+    QMainWindow::closeEvent(event);
+}
+
+void MainWindow::restoreWindowLayout()
+{
+    const QSettings store;
+    restoreGeometry(store.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(store.value(QStringLiteral("window/state")).toByteArray());
+}
+
+void MainWindow::saveWindowLayout() const
+{
+    QSettings store;
+    store.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    store.setValue(QStringLiteral("window/state"), saveState());
+}
+
+void MainWindow::applyUiLanguage(const QString &localeName)
+{
+    m_translator->apply(localeName.isEmpty() ? QLocale::system() : QLocale(localeName));
+}
+
+void MainWindow::applySettings(const Settings &settings)
+{
+    if (settings.uiLanguage != m_settings.uiLanguage)
+        applyUiLanguage(settings.uiLanguage);
+    m_settings = settings;
+    QSettings store;
+    m_settings.save(store);
+    Q_EMIT settingsChanged(m_settings);
+}
+
+void MainWindow::showSettingsDialog()
+{
+    SettingsDialog dialog(m_settings, this);
+    if (dialog.exec() == QDialog::Accepted)
+        applySettings(dialog.settings());
 }
 
 void MainWindow::showAboutBox()

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "app/settings.h"
+
 #include <QMainWindow>
 
 class QAction;
@@ -15,6 +17,8 @@ class ProjectModel;
 
 namespace iec::app {
 
+class UiTranslator;
+
 // The IDE's main window: menus, the project tree and messages docks, and the central document
 // area. Texts are set in retranslateUi() so that switching the UI language updates them live.
 class MainWindow : public QMainWindow
@@ -27,21 +31,35 @@ public:
 
     [[nodiscard]] model::ProjectModel &projectModel() { return *m_projectModel; }
     [[nodiscard]] QUndoGroup &undoGroup() { return *m_undoGroup; }
+    [[nodiscard]] const Settings &settings() const { return m_settings; }
+
+    // Stores the settings and applies them at once: UI language, editor font, grid, autosave.
+    void applySettings(const Settings &settings);
 
 public Q_SLOTS:
     void showAboutBox();
+    void showSettingsDialog();
+
+Q_SIGNALS:
+    void settingsChanged(const iec::app::Settings &settings);
 
 protected:
     void changeEvent(QEvent *event) override;
+    void closeEvent(QCloseEvent *event) override;
 
 private:
     void createActions();
     void createMenus();
     void createDocks();
     void retranslateUi();
+    void restoreWindowLayout();
+    void saveWindowLayout() const;
+    void applyUiLanguage(const QString &localeName);
 
     model::ProjectModel *m_projectModel = nullptr;
     QUndoGroup *m_undoGroup = nullptr;
+    UiTranslator *m_translator = nullptr;
+    Settings m_settings;
 
     QMenu *m_fileMenu = nullptr;
     QMenu *m_editMenu = nullptr;
@@ -54,6 +72,7 @@ private:
     QAction *m_undoAction = nullptr;
     QAction *m_redoAction = nullptr;
     QAction *m_buildAction = nullptr;
+    QAction *m_settingsAction = nullptr;
     QAction *m_loginAction = nullptr;
     QAction *m_stopAction = nullptr;
     QAction *m_singleCycleAction = nullptr;

@@ -87,6 +87,57 @@
         <source>&lt;h3&gt;IEC Studio %1&lt;/h3&gt;&lt;p&gt;An IDE for the five IEC 61131-3 languages: Ladder Diagram, Function Block Diagram with CFC, Sequential Function Chart, Instruction List and Structured Text.&lt;/p&gt;&lt;p&gt;Projects are stored as PLCopen TC6 XML v2.01.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;IEC Studio %1&lt;/h3&gt;&lt;p&gt;Eine Entwicklungsumgebung für die fünf Sprachen der IEC 61131-3: Kontaktplan, Funktionsbausteinsprache mit CFC, Ablaufsprache, Anweisungsliste und Strukturierter Text.&lt;/p&gt;&lt;p&gt;Projekte werden als PLCopen TC6 XML v2.01 gespeichert.&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>&amp;Settings...</source>
+        <translation>&amp;Einstellungen...</translation>
+    </message>
+</context>
+<context>
+    <name>iec::app::SettingsDialog</name>
+    <message>
+        <source>Settings</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source>System language</source>
+        <translation>Systemsprache</translation>
+    </message>
+    <message>
+        <source> pt</source>
+        <translation> pt</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <source>User interface language:</source>
+        <translation>Sprache der Oberfläche:</translation>
+    </message>
+    <message>
+        <source>Editor font:</source>
+        <translation>Editor-Schriftart:</translation>
+    </message>
+    <message>
+        <source>Editor font size:</source>
+        <translation>Editor-Schriftgröße:</translation>
+    </message>
+    <message>
+        <source>Diagram grid size:</source>
+        <translation>Rastergröße im Diagramm:</translation>
+    </message>
+    <message>
+        <source>Autosave every:</source>
+        <translation>Automatisch speichern alle:</translation>
+    </message>
 </context>
 <context>
     <name>iec::model::AddPouCommand</name>
@@ -100,17 +151,6 @@
     <message>
         <source>Rename %1 to %2</source>
         <translation>%1 in %2 umbenennen</translation>
-    </message>
-</context>
-<context>
-    <name>main</name>
-    <message>
-        <source>IEC 61131-3 development environment</source>
-        <translation>Entwicklungsumgebung für IEC 61131-3</translation>
-    </message>
-    <message>
-        <source>PLCopen XML project to open.</source>
-        <translation>Zu öffnendes PLCopen-XML-Projekt.</translation>
     </message>
 </context>
 </TS>

@@ -87,6 +87,57 @@
         <source>&lt;h3&gt;IEC Studio %1&lt;/h3&gt;&lt;p&gt;An IDE for the five IEC 61131-3 languages: Ladder Diagram, Function Block Diagram with CFC, Sequential Function Chart, Instruction List and Structured Text.&lt;/p&gt;&lt;p&gt;Projects are stored as PLCopen TC6 XML v2.01.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;IEC Studio %1&lt;/h3&gt;&lt;p&gt;面向 IEC 61131-3 五种编程语言的集成开发环境：梯形图、功能块图(含 CFC)、顺序功能图、指令表和结构化文本。&lt;/p&gt;&lt;p&gt;项目以 PLCopen TC6 XML v2.01 格式保存。&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>&amp;Settings...</source>
+        <translation>设置(&amp;S)...</translation>
+    </message>
+</context>
+<context>
+    <name>iec::app::SettingsDialog</name>
+    <message>
+        <source>Settings</source>
+        <translation>设置</translation>
+    </message>
+    <message>
+        <source>System language</source>
+        <translation>系统语言</translation>
+    </message>
+    <message>
+        <source> pt</source>
+        <translation> 磅</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> 像素</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> 分钟</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <source>User interface language:</source>
+        <translation>界面语言：</translation>
+    </message>
+    <message>
+        <source>Editor font:</source>
+        <translation>编辑器字体：</translation>
+    </message>
+    <message>
+        <source>Editor font size:</source>
+        <translation>编辑器字号：</translation>
+    </message>
+    <message>
+        <source>Diagram grid size:</source>
+        <translation>图形网格大小：</translation>
+    </message>
+    <message>
+        <source>Autosave every:</source>
+        <translation>自动保存间隔：</translation>
+    </message>
 </context>
 <context>
     <name>iec::model::AddPouCommand</name>
@@ -100,17 +151,6 @@
     <message>
         <source>Rename %1 to %2</source>
         <translation>将 %1 重命名为 %2</translation>
-    </message>
-</context>
-<context>
-    <name>main</name>
-    <message>
-        <source>IEC 61131-3 development environment</source>
-        <translation>IEC 61131-3 开发环境</translation>
-    </message>
-    <message>
-        <source>PLCopen XML project to open.</source>
-        <translation>要打开的 PLCopen XML 项目。</translation>
     </message>
 </context>
 </TS>

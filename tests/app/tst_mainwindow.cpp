@@ -1,9 +1,13 @@
 #include "app/mainwindow.h"
-#include "app/uitranslator.h"
+#include "app/settingsdialog.h"
 
+#include <QComboBox>
 #include <QDockWidget>
 #include <QMenu>
 #include <QMenuBar>
+#include <QSettings>
+#include <QSpinBox>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTreeWidget>
 
@@ -14,9 +18,17 @@ class TestMainWindow : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
+    void initTestCase();
+    void init();
     void opensWithMenusAndDocks();
-    void translationSwitchRetitlesMenus_data();
-    void translationSwitchRetitlesMenus();
+    void languageSettingRetitlesMenus_data();
+    void languageSettingRetitlesMenus();
+    void settingsPersistAndClamp();
+    void settingsDialogEditsACopy();
+    void windowLayoutIsRestored();
+
+private:
+    QTemporaryDir m_configHome;
 };
 
 namespace {
@@ -29,7 +41,29 @@ QStringList menuTitles(const MainWindow &window)
     return titles;
 }
 
+void deliverLanguageChange()
+{
+    // Qt posts LanguageChange to every widget; the event loop would deliver it.
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+}
+
 } // namespace
+
+void TestMainWindow::initTestCase()
+{
+    // Keep the user's real settings out of the tests.
+    QVERIFY(m_configHome.isValid());
+    qputenv("XDG_CONFIG_HOME", m_configHome.path().toLocal8Bit());
+    QCoreApplication::setOrganizationName(QStringLiteral("IEC Studio Tests"));
+    QCoreApplication::setApplicationName(QStringLiteral("tst_mainwindow"));
+}
+
+void TestMainWindow::init()
+{
+    QSettings store;
+    store.clear();
+    store.setValue(QStringLiteral("ui/language"), QStringLiteral("en"));
+}
 
 void TestMainWindow::opensWithMenusAndDocks()
 {
@@ -48,30 +82,93 @@ void TestMainWindow::opensWithMenusAndDocks()
     QVERIFY(window.close());
 }
 
-void TestMainWindow::translationSwitchRetitlesMenus_data()
+void TestMainWindow::languageSettingRetitlesMenus_data()
 {
-    QTest::addColumn<QString>("locale");
+    QTest::addColumn<QString>("language");
     QTest::addColumn<QString>("fileMenu");
     QTest::addColumn<QString>("helpMenu");
-    QTest::newRow("de") << QStringLiteral("de_DE") << QStringLiteral("&Datei") << QStringLiteral("&Hilfe");
+    QTest::newRow("de") << QStringLiteral("de") << QStringLiteral("&Datei") << QStringLiteral("&Hilfe");
     QTest::newRow("zh_CN") << QStringLiteral("zh_CN") << QStringLiteral("文件(&F)") << QStringLiteral("帮助(&H)");
+    QTest::newRow("en") << QStringLiteral("en") << QStringLiteral("&File") << QStringLiteral("&Help");
 }
 
-void TestMainWindow::translationSwitchRetitlesMenus()
+void TestMainWindow::languageSettingRetitlesMenus()
 {
-    QFETCH(QString, locale);
+    QFETCH(QString, language);
     QFETCH(QString, fileMenu);
     QFETCH(QString, helpMenu);
     MainWindow window;
-    UiTranslator translator;
+    Settings settings = window.settings();
+    settings.uiLanguage = language;
 
-    QVERIFY(translator.apply(QLocale(locale)));
-    // Qt posts LanguageChange to every widget; the event loop would deliver it.
-    QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+    window.applySettings(settings);
+    deliverLanguageChange();
 
     const QStringList titles = menuTitles(window);
     QCOMPARE(titles.first(), fileMenu);
     QCOMPARE(titles.last(), helpMenu);
+    // The choice is stored, so the next start uses it.
+    QCOMPARE(QSettings().value(QStringLiteral("ui/language")).toString(), language);
+
+    settings.uiLanguage = QStringLiteral("en");
+    window.applySettings(settings);
+    deliverLanguageChange();
+    QCOMPARE(menuTitles(window).first(), QStringLiteral("&File"));
+}
+
+void TestMainWindow::settingsPersistAndClamp()
+{
+    Settings settings;
+    settings.uiLanguage = QStringLiteral("de");
+    settings.gridSize = 20;
+    settings.autosaveMinutes = 0;
+    settings.editorFont = QFont(QStringLiteral("DejaVu Sans Mono"), 13);
+    {
+        QSettings store;
+        settings.save(store);
+    }
+    QCOMPARE(Settings::load(QSettings()), settings);
+
+    QSettings store;
+    store.setValue(QStringLiteral("diagram/gridSize"), 100000);
+    store.setValue(QStringLiteral("project/autosaveMinutes"), -3);
+    const Settings clamped = Settings::load(store);
+    QCOMPARE(clamped.gridSize, 100);
+    QCOMPARE(clamped.autosaveMinutes, 0);
+}
+
+void TestMainWindow::settingsDialogEditsACopy()
+{
+    Settings original;
+    original.gridSize = 10;
+    SettingsDialog dialog(original);
+    auto *language = dialog.findChild<QComboBox *>(QStringLiteral("language"));
+    QCOMPARE(language->count(), 4); // system + three languages
+    language->setCurrentIndex(language->findData(QStringLiteral("zh_CN")));
+    dialog.findChild<QSpinBox *>(QStringLiteral("gridSize"))->setValue(25);
+    dialog.findChild<QSpinBox *>(QStringLiteral("autosave"))->setValue(0);
+
+    const Settings edited = dialog.settings();
+    QCOMPARE(edited.uiLanguage, QStringLiteral("zh_CN"));
+    QCOMPARE(edited.gridSize, 25);
+    QCOMPARE(edited.autosaveMinutes, 0);
+    QCOMPARE(original.gridSize, 10);
+}
+
+void TestMainWindow::windowLayoutIsRestored()
+{
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.findChild<QDockWidget *>(QStringLiteral("messagesDock"))->hide();
+        window.close();
+    }
+    MainWindow reopened;
+    reopened.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&reopened));
+    QVERIFY(!reopened.findChild<QDockWidget *>(QStringLiteral("messagesDock"))->isVisible());
+    QVERIFY(reopened.findChild<QDockWidget *>(QStringLiteral("projectDock"))->isVisible());
 }
 
 QTEST_MAIN(TestMainWindow)
