@@ -1,5 +1,6 @@
 #include "app/mainwindow.h"
 
+#include "app/messagespane.h"
 #include "app/settingsdialog.h"
 #include "app/uitranslator.h"
 #include "model/projectmodel.h"
@@ -12,7 +13,6 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QPlainTextEdit>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTreeWidget>
@@ -126,9 +126,8 @@ void MainWindow::createDocks()
     m_projectDock->setWidget(m_projectTree);
     addDockWidget(Qt::LeftDockWidgetArea, m_projectDock);
 
-    m_messages = new QPlainTextEdit(this);
+    m_messages = new MessagesPane(this);
     m_messages->setObjectName(QStringLiteral("messages"));
-    m_messages->setReadOnly(true);
     m_messagesDock = new QDockWidget(this);
     m_messagesDock->setObjectName(QStringLiteral("messagesDock"));
     m_messagesDock->setWidget(m_messages);

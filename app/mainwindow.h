@@ -7,7 +7,6 @@
 class QAction;
 class QDockWidget;
 class QMenu;
-class QPlainTextEdit;
 class QTreeWidget;
 class QUndoGroup;
 
@@ -17,6 +16,7 @@ class ProjectModel;
 
 namespace iec::app {
 
+class MessagesPane;
 class UiTranslator;
 
 // The IDE's main window: menus, the project tree and messages docks, and the central document
@@ -32,6 +32,7 @@ public:
     [[nodiscard]] model::ProjectModel &projectModel() { return *m_projectModel; }
     [[nodiscard]] QUndoGroup &undoGroup() { return *m_undoGroup; }
     [[nodiscard]] const Settings &settings() const { return m_settings; }
+    [[nodiscard]] MessagesPane &messagesPane() { return *m_messages; }
 
     // Stores the settings and applies them at once: UI language, editor font, grid, autosave.
     void applySettings(const Settings &settings);
@@ -82,7 +83,7 @@ private:
     QDockWidget *m_projectDock = nullptr;
     QDockWidget *m_messagesDock = nullptr;
     QTreeWidget *m_projectTree = nullptr;
-    QPlainTextEdit *m_messages = nullptr;
+    MessagesPane *m_messages = nullptr;
 };
 
 } // namespace iec::app
