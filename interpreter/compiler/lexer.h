@@ -45,4 +45,15 @@ struct LexState {
 // the end of `text`.
 std::vector<Token> tokenize(QStringView text, LexState &state);
 
+// Additions for the compiler (the contract above is unchanged).
+
+// Tokenizes a whole source text from the initial state.
+std::vector<Token> tokenize(QStringView text);
+
+// Word classes, case-insensitive: what the lexer marks as Keyword / TypeName.
+bool isKeyword(QStringView word);
+bool isTypeName(QStringView word);
+// LD, ST, S, R, ADD, JMPC, ...: keywords in IL, but ordinary names (ADD(1, 2), Flipflop.R) in ST.
+bool isIlOperator(QStringView word);
+
 } // namespace iec::interp

@@ -1,5 +1,6 @@
 #include "interpreter/runtime/valueformat.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -30,7 +31,11 @@ QString formatReal(double value)
         return value > 0 ? QStringLiteral("+Inf") : QStringLiteral("-Inf");
     std::array<char, 64> buffer{};
     // std::to_chars without a precision gives the shortest round-trip form.
-    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+    auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+    // Plain digits read better than 1e+06 for magnitudes a PLC program meets every day.
+    const double magnitude = std::fabs(value);
+    if (std::find(buffer.data(), result.ptr, 'e') != result.ptr && magnitude >= 1e-5 && magnitude < 1e16)
+        result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value, std::chars_format::fixed);
     QString text = QString::fromLatin1(buffer.data(), result.ptr - buffer.data());
     if (!text.contains(QLatin1Char('.')) && !text.contains(QLatin1Char('e')))
         text += QStringLiteral(".0");
@@ -72,6 +77,46 @@ QString formatDuration(std::int64_t nanoseconds)
 
 namespace {
 
+constexpr std::int64_t kNsPerDay = 86'400'000'000'000LL;
+
+// Floor division, so times before 1970 still give a date and a time in [0, 24h).
+std::int64_t floorDiv(std::int64_t a, std::int64_t b)
+{
+    return a / b - ((a % b != 0) && ((a < 0) != (b < 0)) ? 1 : 0);
+}
+
+// Proleptic Gregorian date of a day count since 1970-01-01 (H. Hinnant's civil_from_days).
+QString dateText(std::int64_t days)
+{
+    days += 719468;
+    const std::int64_t era = floorDiv(days, 146097);
+    const std::int64_t doe = days - era * 146097;
+    const std::int64_t yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
+    const std::int64_t doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    const std::int64_t mp = (5 * doy + 2) / 153;
+    const std::int64_t day = doy - (153 * mp + 2) / 5 + 1;
+    const std::int64_t month = mp < 10 ? mp + 3 : mp - 9;
+    const std::int64_t year = yoe + era * 400 + (month <= 2 ? 1 : 0);
+    return QStringLiteral("%1-%2-%3").arg(year, 4, 10, QLatin1Char('0')).arg(month, 2, 10, QLatin1Char('0')).arg(day, 2, 10, QLatin1Char('0'));
+}
+
+QString clockText(std::int64_t ns)
+{
+    const std::int64_t seconds = ns / 1'000'000'000LL;
+    const std::int64_t fraction = ns % 1'000'000'000LL;
+    QString text = QStringLiteral("%1:%2:%3")
+                       .arg(seconds / 3600, 2, 10, QLatin1Char('0'))
+                       .arg(seconds / 60 % 60, 2, 10, QLatin1Char('0'))
+                       .arg(seconds % 60, 2, 10, QLatin1Char('0'));
+    if (fraction != 0) {
+        QString digits = QStringLiteral("%1").arg(fraction, 9, 10, QLatin1Char('0'));
+        while (digits.endsWith(QLatin1Char('0')))
+            digits.chop(1);
+        text += QLatin1Char('.') + digits;
+    }
+    return text;
+}
+
 QString quoted(const QString &value, QChar quote)
 {
     QString text(quote);
@@ -98,6 +143,22 @@ QString quoted(const QString &value, QChar quote)
 }
 
 } // namespace
+
+QString formatDate(std::int64_t nanoseconds)
+{
+    return QStringLiteral("D#") + dateText(floorDiv(nanoseconds, kNsPerDay));
+}
+
+QString formatTimeOfDay(std::int64_t nanoseconds)
+{
+    return QStringLiteral("TOD#") + clockText(nanoseconds - floorDiv(nanoseconds, kNsPerDay) * kNsPerDay);
+}
+
+QString formatDateAndTime(std::int64_t nanoseconds)
+{
+    const std::int64_t days = floorDiv(nanoseconds, kNsPerDay);
+    return QStringLiteral("DT#") + dateText(days) + QLatin1Char('-') + clockText(nanoseconds - days * kNsPerDay);
+}
 
 QString formatString(const QString &value)
 {

@@ -17,6 +17,11 @@ QString formatUnsigned(std::uint64_t value);
 QString formatReal(double value);
 // TIME and LTIME: nanoseconds as T#1h2m3s4ms5us6ns with zero parts left out; T#0s for zero.
 QString formatDuration(std::int64_t nanoseconds);
+// DATE: D#2024-01-31; TIME_OF_DAY: TOD#12:30:00(.5); DATE_AND_TIME: DT#2024-01-31-12:30:00.
+// Arguments are nanoseconds since 1970-01-01 (DATE, DT) or since midnight (TOD).
+QString formatDate(std::int64_t nanoseconds);
+QString formatTimeOfDay(std::int64_t nanoseconds);
+QString formatDateAndTime(std::int64_t nanoseconds);
 // STRING: single quotes, with $ escapes for quotes, $ and control characters.
 QString formatString(const QString &value);
 // WSTRING: the same in double quotes.

@@ -52,6 +52,9 @@ void TestValueFormat::reals_data()
     QTest::newRow("negative") << -0.25 << QStringLiteral("-0.25");
     QTest::newRow("shortest round trip") << 0.1 << QStringLiteral("0.1");
     QTest::newRow("exponent") << 1e300 << QStringLiteral("1e+300");
+    QTest::newRow("million in plain digits") << 1e6 << QStringLiteral("1000000.0");
+    QTest::newRow("small in plain digits") << 0.0001 << QStringLiteral("0.0001");
+    QTest::newRow("tiny keeps exponent") << 1e-7 << QStringLiteral("1e-07");
     QTest::newRow("infinity") << std::numeric_limits<double>::infinity() << QStringLiteral("+Inf");
 }
 

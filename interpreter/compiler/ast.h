@@ -1,0 +1,266 @@
+#pragma once
+
+#include "interpreter/compiler/diagnostics.h"
+#include "interpreter/compiler/lexer.h"
+
+#include <QString>
+#include <QStringList>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+// The compiler's input: compilation units of POUs, types and configurations. It holds no
+// pointers into any source text, so it can be built from a parsed .st file or, later, from the
+// project model (whose ST/IL bodies are parsed with parseStBody / parseIlBody and whose graphical
+// bodies are lowered to the same statements).
+namespace iec::interp::ast {
+
+// ---- expressions ---------------------------------------------------------------------------
+
+enum class ExprKind {
+    Literal,       // text = literal as written, literal = its token kind
+    Name,          // text = identifier
+    DirectAddress, // text = %IX0.1
+    Member,        // operands[0].text
+    BitAccess,     // operands[0].<bit> with bit = the integer in text
+    Index,         // operands[0][operands[1..]]
+    Unary,         // text = "-", "NOT", "+"
+    Binary,        // text = operator: "**" "*" "/" "MOD" "+" "-" "<" ... "=" "<>" "AND" "XOR" "OR"
+    Call,          // text = function name; callArgs
+    Error,         // a place where parsing failed; already diagnosed
+};
+
+struct CallArg;
+
+struct Expr {
+    ExprKind kind = ExprKind::Error;
+    SourceLocation location;
+    QString text;
+    TokenKind literal = TokenKind::Error;
+    std::vector<Expr> operands;
+    std::vector<CallArg> callArgs;
+};
+
+// One argument of a call: positional (name empty), `name := value` or `name => variable`.
+struct CallArg {
+    QString name;
+    bool isOutput = false;
+    bool negatedOutput = false; // NOT Q => x
+    Expr value;
+};
+
+// ---- types and initial values ----------------------------------------------------------------
+
+struct VarDecl;
+struct TypeSpec;
+
+struct Range {
+    Expr low;
+    Expr high;
+};
+
+struct TypeSpec {
+    enum class Kind { Named, String, Array, Subrange, Enum, Struct };
+    Kind kind = Kind::Named;
+    SourceLocation location;
+    QString name;                       // Named: INT, TON, MyType; Subrange/Enum: base type (may be empty)
+    bool wide = false;                  // String: WSTRING
+    std::optional<Expr> length;         // String: [n]
+    std::vector<Range> ranges;          // Array dimensions; Subrange: one
+    std::vector<TypeSpec> element;      // Array: the element type (one)
+    QStringList enumValues;             // Enum
+    std::vector<std::optional<Expr>> enumExplicit; // Enum: := value per item
+    std::vector<VarDecl> members;       // Struct
+};
+
+struct Initializer {
+    enum class Kind { None, Expression, Array, Struct };
+    Kind kind = Kind::None;
+    SourceLocation location;
+    std::optional<Expr> value;              // Expression
+    std::vector<Initializer> items;         // Array items / Struct member values
+    std::vector<std::optional<Expr>> repeats; // Array: 3(0) has repeat 3; parallel to items
+    QStringList memberNames;                // Struct: parallel to items
+};
+
+// ---- declarations ----------------------------------------------------------------------------
+
+enum class VarKind { Local, Input, Output, InOut, External, Global, Temp, Access, Config };
+
+struct VarDecl {
+    QString name;
+    SourceLocation location;
+    QString address; // AT %IX0.0; empty when none
+    TypeSpec type;
+    Initializer init;
+};
+
+struct VarSection {
+    VarKind kind = VarKind::Local;
+    bool constant = false;
+    bool retain = false;
+    bool nonRetain = false;
+    SourceLocation location;
+    std::vector<VarDecl> vars;
+};
+
+struct TypeDecl {
+    QString name;
+    SourceLocation location;
+    TypeSpec type;
+    Initializer init;
+};
+
+// ---- statements ------------------------------------------------------------------------------
+
+enum class StmtKind { Assign, Call, If, Case, For, While, Repeat, Exit, Continue, Return, Empty };
+
+struct Stmt;
+
+struct ConditionalBlock {
+    Expr condition;
+    SourceLocation location;
+    std::vector<Stmt> body;
+};
+
+struct CaseLabel {
+    Expr low;
+    std::optional<Expr> high; // 10..20
+};
+
+struct CaseBranch {
+    std::vector<CaseLabel> labels;
+    std::vector<Stmt> body;
+};
+
+struct Stmt {
+    StmtKind kind = StmtKind::Empty;
+    SourceLocation location;
+    Expr target;                           // Assign: left side; For: control variable; Case: selector; Call: the call
+    Expr value;                            // Assign: right side; For: start; While/Repeat: condition
+    std::optional<Expr> to, by;            // For
+    std::vector<ConditionalBlock> branches; // If: IF and ELSIF
+    std::vector<CaseBranch> cases;         // Case
+    std::vector<Stmt> body;                // For/While/Repeat body; If/Case ELSE part
+    bool hasElse = false;
+};
+
+// ---- instruction list ------------------------------------------------------------------------
+
+struct IlInstruction {
+    SourceLocation location;
+    QString label;            // "Next1" for "Next1:"; may stand alone with an empty op
+    QString op;               // upper case: LD, ANDN, JMPC, CAL, ")", or a function / FB input name
+    bool openParen = false;   // MUL (6  -> deferred operation
+    std::optional<Expr> operand;
+    std::vector<CallArg> callArgs; // CAL T1(PT := T#1s); function calls with several operands
+};
+
+// ---- sequential function chart (textual form) -------------------------------------------------
+
+struct SfcActionAssociation {
+    SourceLocation location;
+    QString action;
+    QString qualifier;      // N, R, S, L, D, P, P0, P1, SD, DS, SL; empty means N
+    std::optional<Expr> duration;
+    QString indicator;
+};
+
+struct SfcStep {
+    SourceLocation location;
+    QString name;
+    bool initial = false;
+    std::vector<SfcActionAssociation> actions;
+};
+
+struct Body;
+
+struct SfcTransition {
+    SourceLocation location;
+    QString name;              // may be empty
+    std::optional<Expr> priority;
+    QStringList from;
+    QStringList to;
+    std::optional<Expr> condition;      // := expression;
+    std::vector<IlInstruction> ilCondition; // or an IL body
+};
+
+struct SfcAction;
+
+struct SfcChart {
+    std::vector<SfcStep> steps;
+    std::vector<SfcTransition> transitions;
+    std::vector<SfcAction> actions;
+};
+
+// ---- POUs and units --------------------------------------------------------------------------
+
+enum class Language { None, ST, IL, SFC };
+
+struct Body {
+    Language language = Language::None;
+    std::vector<Stmt> statements;     // ST
+    std::vector<IlInstruction> il;    // IL
+    std::shared_ptr<SfcChart> sfc;    // SFC (shared_ptr breaks the Body <-> SfcAction cycle)
+};
+
+struct SfcAction {
+    SourceLocation location;
+    QString name;
+    Body body;
+};
+
+enum class PouKind { Program, FunctionBlock, Function };
+
+struct Pou {
+    PouKind kind = PouKind::Program;
+    QString name;
+    SourceLocation location;
+    std::optional<TypeSpec> returnType; // functions
+    std::vector<VarSection> sections;
+    Body body;
+    std::vector<SfcAction> actions;     // ACTION ... END_ACTION inside the POU (CODESYS style)
+};
+
+struct TaskDecl {
+    QString name;
+    SourceLocation location;
+    std::optional<Expr> single;
+    std::optional<Expr> interval;
+    std::optional<Expr> priority;
+};
+
+struct ProgramConfig {
+    QString instance;
+    SourceLocation location;
+    bool retain = false;
+    QString task; // empty: no WITH
+    QString type;
+    std::vector<CallArg> args;
+};
+
+struct ResourceDecl {
+    QString name;
+    QString on;
+    SourceLocation location;
+    std::vector<VarSection> globals;
+    std::vector<TaskDecl> tasks;
+    std::vector<ProgramConfig> programs;
+};
+
+struct ConfigurationDecl {
+    QString name;
+    SourceLocation location;
+    std::vector<VarSection> globals;
+    std::vector<ResourceDecl> resources;
+};
+
+struct CompilationUnit {
+    std::vector<TypeDecl> types;
+    std::vector<Pou> pous;
+    std::vector<VarSection> globals; // VAR_GLOBAL outside a configuration (CODESYS global lists)
+    std::vector<ConfigurationDecl> configurations;
+};
+
+} // namespace iec::interp::ast

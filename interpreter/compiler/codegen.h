@@ -1,0 +1,236 @@
+#pragma once
+
+// Internal to the compiler: the state shared by the files that turn the AST into bytecode
+// (compiler.cpp, declarations.cpp, expressions.cpp, conversions.cpp, calls.cpp, stdfunctions.cpp,
+// statements.cpp, il.cpp; typeutil.h holds the small shared type predicates).
+
+#include "interpreter/compiler/ast.h"
+#include "interpreter/compiler/compiler.h"
+#include "interpreter/compiler/diagnostics.h"
+#include "interpreter/compiler/types.h"
+#include "interpreter/vm/bytecode.h"
+
+#include <QHash>
+#include <QString>
+
+#include <map>
+#include <optional>
+#include <vector>
+
+namespace iec::interp::detail {
+
+// Set on operands of temporaries while a POU is compiled; they are moved to the POU's temporary
+// area once its size is known (see Codegen::finishTemporaries).
+constexpr std::uint32_t kTempMarker = 0x40000000u;
+
+// A value known at compile time: literals, CONSTANT variables, enumeration values.
+struct ConstValue {
+    enum class Kind { None, Int, Real, String };
+    Kind kind = Kind::None;
+    std::int64_t i = 0;       // Int (BOOL, integers, bit strings, times and dates as ns)
+    bool bigUnsigned = false; // Int: i holds a ULINT/LWORD above INT64_MAX as its bit pattern
+    double r = 0;             // Real
+    QString s;                // String
+    bool wide = false;
+};
+
+// The result of compiling an expression.
+struct Value {
+    enum class Kind { Invalid, Operand, Constant };
+    Kind kind = Kind::Invalid;
+    const Type *type = nullptr;
+    // An integer or real literal without a type prefix: it takes the type its use needs (type is
+    // then LINT or LREAL, standing for ANY_INT / ANY_REAL).
+    bool untyped = false;
+    std::uint32_t operand = 0;
+    ConstValue constant;
+
+    bool valid() const { return kind != Kind::Invalid && type; }
+};
+
+// Something that can be read and perhaps written: a variable, an element, a member, a bit.
+struct Place {
+    enum class Kind { Invalid, Direct, Indirect, Bit, IndirectBit, Constant };
+    Kind kind = Kind::Invalid;
+    const Type *type = nullptr;
+    std::uint32_t operand = 0; // Direct/Bit: the address; Indirect: where the address is stored
+    int bit = 0;
+    bool readOnly = false;
+    QString readOnlyReason;
+    QString text;              // as the user wrote it, for messages
+    ConstValue constant;       // Constant
+    int fbPou = -1;            // a function block instance: its POU
+};
+
+struct PouInfo {
+    const ast::Pou *ast = nullptr;
+    int index = -1;
+    QString name;
+    ast::PouKind kind = ast::PouKind::Program;
+    Type *frame = nullptr;          // instance layout (program, FB) or the function's variables
+    const Type *result = nullptr;   // function result type
+    std::uint32_t frameBase = 0;    // function: absolute address of its variables
+    std::uint32_t reinitFrom = 0;   // members from here on are reinitialised on every call
+    std::uint32_t templateOffset = 0; // absolute address of the frame with all initial values
+    std::vector<const Member *> parameters; // inputs and in-outs, in positional order
+    bool layoutInProgress = false;
+    bool laidOut = false;
+    bool fromLibrary = false;
+};
+
+struct GlobalVar {
+    const Type *type = nullptr;
+    std::uint32_t offset = 0;
+    bool constant = false;
+    std::optional<ConstValue> value; // CONSTANT with a constant initial value
+    QString name;
+};
+
+struct EnumValue {
+    const Type *type = nullptr;
+    std::int64_t value = 0;
+    bool ambiguous = false;
+};
+
+class Codegen
+{
+public:
+    Codegen(Diagnostics &diagnostics, const CompileOptions &options);
+    std::shared_ptr<Module> run(const std::vector<const ast::CompilationUnit *> &units);
+
+    // ---- declarations.cpp ----
+    void collectTypes(const ast::CompilationUnit &unit, bool library);
+    void collectPous(const ast::CompilationUnit &unit, bool library);
+    const Type *resolveType(const ast::TypeSpec &spec, const QString &name = {});
+    const Type *namedType(const QString &name, SourceLocation at, bool report = true);
+    bool layoutPou(PouInfo &pou);
+    void declareGlobals(const std::vector<ast::VarSection> &sections);
+    std::uint32_t allocate(std::uint32_t size, std::uint32_t align);
+    void writeInitial(std::uint32_t offset, const Type *type, const ast::Initializer *init, const QString &name = {});
+    bool writeConstant(std::uint32_t offset, const Type *type, const ConstValue &value, SourceLocation at);
+    std::optional<Value> evalConst(const ast::Expr &expr, bool report = true);
+    std::optional<std::int64_t> evalConstInt(const ast::Expr &expr);
+    std::optional<ConstValue> literalValue(const ast::Expr &expr, const Type **type, bool *untyped);
+    void locate(const QString &address, std::uint32_t offset, const Type *type, SourceLocation at);
+    const GlobalVar *directAddressVar(const QString &address, SourceLocation at);
+
+    // ---- expressions.cpp ----
+    Value compileExpr(const ast::Expr &expr, const Place *destination = nullptr);
+    Place resolvePlace(const ast::Expr &expr, bool reportUnknown = true);
+    Value read(const Place &place);
+    std::optional<std::uint16_t> fusedIndexOp(const Place &place, bool load) const;
+    void store(const Place &place, Value value, SourceLocation at);
+    Value coerce(Value value, const Type *to, SourceLocation at, const QString &context = {});
+    Value convertExplicit(Value value, const Type *to, SourceLocation at, bool truncate = false);
+    std::uint32_t materialize(const Value &value);
+    std::uint32_t constantOperand(const Type *type, const ConstValue &value);
+    std::uint32_t temp(const Type *type);
+    void emitMove(std::uint32_t to, std::uint32_t from, const Type *type);
+    Value binary(const QString &op, Value left, Value right, SourceLocation at, const Place *destination = nullptr);
+    Value unary(const QString &op, Value operand, SourceLocation at, const Place *destination = nullptr);
+    const Type *commonType(const Type *a, const Type *b) const;
+    Value operandValue(std::uint32_t operand, const Type *type) const;
+    Value constantValue(const Type *type, const ConstValue &value, bool untyped = false) const;
+    const Type *boolType() const { return m_types->elementary(Elem::Bool); }
+    const Type *elem(Elem e) const { return m_types->elementary(e); }
+    Place memberPlace(const Place &base, const Member &member, const QString &text);
+
+    // ---- calls.cpp ----
+    // One argument of a call: from the source (expr) or already computed (value, e.g. the IL
+    // accumulator that is a function's first argument).
+    struct Argument {
+        QString name;
+        bool isOutput = false;
+        bool negated = false;
+        const ast::Expr *expr = nullptr;
+        std::optional<Value> value;
+        SourceLocation location;
+    };
+    static std::vector<Argument> arguments(const std::vector<ast::CallArg> &args);
+    Value compileCall(const ast::Expr &call, bool asStatement, const Place *destination = nullptr);
+    Value callNamed(const QString &name, const Place *callee, std::vector<Argument> args, SourceLocation at,
+                    bool asStatement, const Place *destination);
+    void callFunctionBlock(const Place &instance, const std::vector<Argument> &args, SourceLocation at);
+    Value callUserFunction(PouInfo &fn, const std::vector<Argument> &args, SourceLocation at, const Place *destination);
+    void noteCall(int callee, SourceLocation at);
+    std::optional<NativeBlock> nativeBlock(const Type *fbType) const;
+
+    // ---- stdfunctions.cpp ----
+    // Standard functions and conversions; nullopt when `name` is none of them.
+    std::optional<Value> standardFunction(const QString &name, std::vector<Value> args,
+                                          const std::vector<QString> &argNames, SourceLocation at,
+                                          const Place *destination);
+
+    // ---- statements.cpp ----
+    void compileStatements(const std::vector<ast::Stmt> &list);
+    void compileStatement(const ast::Stmt &stmt);
+    Value condition(const ast::Expr &expr);
+
+    // ---- il.cpp ----
+    void compileIl(const std::vector<ast::IlInstruction> &list);
+
+    // ---- emission helpers (compiler.cpp) ----
+    std::uint32_t instr(std::uint16_t opcode, std::uint32_t a = 0, std::uint32_t b = 0, std::uint32_t c = 0,
+                       std::uint32_t d = 0, std::uint16_t aux = 0);
+    std::uint32_t here() const { return static_cast<std::uint32_t>(m_module->code.size()); }
+    void patchJump(std::uint32_t at, std::uint32_t target)
+    {
+        m_module->code[at].a = target;
+        markTarget(target);
+    }
+    // A jump lands at `pc`: the instruction before it may no longer be merged with what follows.
+    void markTarget(std::uint32_t pc) { m_lastTarget = std::max(m_lastTarget, pc); }
+    void markLine(SourceLocation at);
+    // Jumps to `target` when `condition` is `when`; a comparison just computed into a temporary
+    // becomes one fused compare-and-jump. Returns the instruction whose target may be patched.
+    std::uint32_t branchIf(const Value &condition, bool when, std::uint32_t target = 0);
+    bool lastWrites(std::uint32_t operand) const;
+    void error(SourceLocation at, const QString &message, const QString &hint = {});
+    void warning(SourceLocation at, const QString &message, const QString &hint = {});
+
+    // ---- state ----
+    Diagnostics &m_diagnostics;
+    CompileOptions m_options;
+    std::shared_ptr<Module> m_module;
+    TypeTable *m_types = nullptr;
+    QHash<QString, const Type *> m_namedTypes;       // upper-case name
+    QHash<QString, const ast::TypeDecl *> m_typeDecls;
+    QHash<QString, bool> m_typesInProgress;
+    QHash<QString, int> m_pouIndex;                  // upper-case name -> index in m_pous
+    std::vector<PouInfo> m_pous;
+    QHash<QString, GlobalVar> m_globals;             // upper-case name
+    QHash<QString, EnumValue> m_enumValues;          // upper-case value name
+    QHash<QByteArray, std::uint32_t> m_constants;    // type + bytes -> offset
+    std::map<int, std::vector<std::pair<int, SourceLocation>>> m_calls;
+
+    // The POU being compiled.
+    PouInfo *m_pou = nullptr;
+    const PouInfo *m_declaring = nullptr; // the POU whose variables are being laid out
+    QString m_pouName;
+    std::uint32_t m_tempTop = 0;
+    std::uint32_t m_tempMax = 0;
+    std::vector<std::pair<std::uint32_t, const Type *>> m_stringTemps;
+    std::uint32_t m_pouCodeStart = 0;
+    struct Loop {
+        std::vector<std::uint32_t> exits;
+        std::vector<std::uint32_t> continues;
+    };
+    std::vector<Loop> m_loops;
+    int m_lastLine = -1;
+    std::uint32_t m_lastTarget = 0;
+    bool m_tooLarge = false;
+    std::uint32_t m_returnJump = 0;
+
+    void compilePouBody(PouInfo &pou);
+    void finishTemporaries();
+    Value lookupName(const QString &name, SourceLocation at);
+    Place namePlace(const ast::Expr &expr, bool reportUnknown);
+};
+
+// Upper-case key for case-insensitive IEC names.
+inline QString key(const QString &name)
+{
+    return name.toUpper();
+}
+
+} // namespace iec::interp::detail

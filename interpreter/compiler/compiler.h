@@ -1,0 +1,35 @@
+#pragma once
+
+#include "interpreter/compiler/ast.h"
+#include "interpreter/compiler/diagnostics.h"
+#include "interpreter/vm/bytecode.h"
+
+#include <QStringView>
+
+#include <memory>
+#include <vector>
+
+namespace iec::interp {
+
+struct CompileOptions {
+    // The program a project without a configuration runs as its one cyclic task; empty: the only
+    // PROGRAM, else PLC_PRG or Main, else the first.
+    QString program;
+    std::int64_t cycleNs = 10'000'000;
+    // TON, TOF and TP run as C++ (op::NativeFb) instead of their ST code; both behave the same.
+    bool nativeStandardBlocks = true;
+};
+
+// Compiles units of POUs, types, globals and configurations (the standard library is added) to
+// bytecode. Returns nullptr when there are errors; every problem is in `diagnostics`.
+std::shared_ptr<const Module> compile(const std::vector<const ast::CompilationUnit *> &units,
+                                      Diagnostics &diagnostics, const CompileOptions &options = {});
+
+// Parses and compiles IEC textual source.
+std::shared_ptr<const Module> compileText(QStringView source, Diagnostics &diagnostics,
+                                          const CompileOptions &options = {});
+
+// The standard function blocks (SR, RS, R_TRIG, F_TRIG, CTU..., TP, TON, TOF), written in ST.
+const ast::CompilationUnit &standardLibrary();
+
+} // namespace iec::interp

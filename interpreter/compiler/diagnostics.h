@@ -1,0 +1,43 @@
+#pragma once
+
+#include <QString>
+
+#include <vector>
+
+namespace iec::interp {
+
+// Where something is in the user's program: the POU (empty for declarations outside any POU)
+// and a 1-based line and column in the text it came from. Graphical bodies will use localId.
+struct SourceLocation {
+    int line = 0;
+    int column = 0;
+    int localId = -1;
+};
+
+struct Diagnostic {
+    enum class Severity { Error, Warning };
+    Severity severity = Severity::Error;
+    QString pou;
+    SourceLocation location;
+    QString message; // one sentence a student understands
+    QString hint;    // what to do, when it is obvious; may be empty
+
+    // "Main:3:7: error: ... (hint: ...)"
+    QString toString() const;
+};
+
+class Diagnostics
+{
+public:
+    void error(const QString &pou, SourceLocation at, const QString &message, const QString &hint = {});
+    void warning(const QString &pou, SourceLocation at, const QString &message, const QString &hint = {});
+    bool hasErrors() const { return m_errors > 0; }
+    const std::vector<Diagnostic> &all() const { return m_list; }
+    void append(const Diagnostics &other);
+
+private:
+    std::vector<Diagnostic> m_list;
+    int m_errors = 0;
+};
+
+} // namespace iec::interp

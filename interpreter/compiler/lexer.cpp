@@ -1,0 +1,442 @@
+#include "interpreter/compiler/lexer.h"
+
+#include "interpreter/compiler/literals.h"
+
+#include <algorithm>
+#include <array>
+#include <string>
+#include <string_view>
+
+namespace iec::interp {
+
+namespace {
+
+// Sorted, upper case. The IL operators are kept apart because ST treats them as names.
+constexpr std::string_view kKeywords[] = {
+    "ACTION", "AND", "ARRAY", "AT", "BY", "CASE", "CONFIGURATION", "CONSTANT", "CONTINUE", "DO", "ELSE", "ELSIF",
+    "END_ACTION", "END_CASE", "END_CONFIGURATION", "END_FOR", "END_FUNCTION", "END_FUNCTION_BLOCK", "END_IF",
+    "END_PROGRAM", "END_REPEAT", "END_RESOURCE", "END_STEP", "END_STRUCT", "END_TRANSITION", "END_TYPE", "END_VAR",
+    "END_WHILE", "EXIT", "FALSE", "FOR", "FROM", "FUNCTION", "FUNCTION_BLOCK", "F_EDGE", "IF", "INITIAL_STEP",
+    "INTERVAL", "MOD", "NON_RETAIN", "NOT", "OF", "ON", "OR", "PERSISTENT", "PRIORITY", "PROGRAM", "READ_ONLY",
+    "READ_WRITE", "REPEAT", "RESOURCE", "RETAIN", "RETURN", "R_EDGE", "SINGLE", "STEP", "STRUCT", "TASK", "THEN",
+    "TO", "TRANSITION", "TRUE", "TYPE", "UNTIL", "VAR", "VAR_ACCESS", "VAR_CONFIG", "VAR_EXTERNAL", "VAR_GLOBAL",
+    "VAR_INPUT", "VAR_IN_OUT", "VAR_OUTPUT", "VAR_TEMP", "WHILE", "WITH", "XOR",
+};
+
+constexpr std::string_view kIlOperators[] = {
+    "ADD", "AND", "ANDN", "CAL", "CALC", "CALCN", "DIV", "EQ", "GE", "GT", "JMP", "JMPC", "JMPCN", "LD", "LDN", "LE",
+    "LT", "MOD", "MUL", "NE", "NOT", "OR", "ORN", "R", "RET", "RETC", "RETCN", "S", "ST", "STN", "SUB", "XOR", "XORN",
+};
+
+constexpr std::string_view kTypeNames[] = {
+    "ANY", "ANY_BIT", "ANY_DATE", "ANY_DERIVED", "ANY_ELEMENTARY", "ANY_INT", "ANY_MAGNITUDE", "ANY_NUM", "ANY_REAL",
+    "ANY_STRING", "BOOL", "BYTE", "CHAR", "DATE", "DATE_AND_TIME", "DINT", "DT", "DWORD", "INT", "LDATE",
+    "LDATE_AND_TIME", "LDT", "LINT", "LREAL", "LTIME", "LTIME_OF_DAY", "LTOD", "LWORD", "REAL", "SINT", "STRING",
+    "TIME", "TIME_OF_DAY", "TOD", "UDINT", "UINT", "ULINT", "USINT", "WCHAR", "WORD", "WSTRING", "ANY_SIGNED",
+    "ANY_UNSIGNED", "ANY_DURATION", "ANY_CHAR", "ANY_CHARS",
+};
+
+// Upper-cases an ASCII word; anything else makes it match no table entry.
+std::string upperAscii(QStringView word)
+{
+    std::string out;
+    out.reserve(static_cast<size_t>(word.size()));
+    for (const QChar c : word) {
+        const char16_t u = c.unicode();
+        if (u > 0x7f)
+            return {};
+        out.push_back(static_cast<char>(u >= u'a' && u <= u'z' ? u - 32 : u));
+    }
+    return out;
+}
+
+template<size_t N>
+bool inTable(const std::string_view (&table)[N], const std::string &upper)
+{
+    return std::find(std::begin(table), std::end(table), upper) != std::end(table);
+}
+
+bool isLetter(QChar c)
+{
+    const char16_t u = c.unicode();
+    return (u >= u'a' && u <= u'z') || (u >= u'A' && u <= u'Z') || u == u'_';
+}
+
+bool isDigit(QChar c)
+{
+    return c.unicode() >= u'0' && c.unicode() <= u'9';
+}
+
+bool isWordChar(QChar c)
+{
+    return isLetter(c) || isDigit(c);
+}
+
+bool isSpace(QChar c)
+{
+    const char16_t u = c.unicode();
+    return u == u' ' || u == u'\t' || u == u'\n' || u == u'\r' || u == u'\f' || u == u'\v' || u == 0xa0 || u == 0xfeff
+        || u == 0x3000;
+}
+
+// Operators, longest first so ":=" wins over ":".
+constexpr std::array<std::u16string_view, 23> kOperators{{
+    u":=", u"=>", u"**", u"<>", u"<=", u">=", u"..", u"+", u"-", u"*", u"/", u"=", u"<", u">", u"&", u"(", u")",
+    u"[", u"]", u",", u";", u":", u".",
+}};
+
+class Lexer
+{
+public:
+    Lexer(QStringView text, LexState &state)
+        : m_text(text)
+        , m_state(state)
+    {
+    }
+
+    std::vector<Token> run()
+    {
+        if (m_state.commentDepth > 0)
+            blockComment(0);
+        else if (m_state.inPragma)
+            pragma(0);
+        while (m_pos < m_text.size()) {
+            if (isSpace(m_text[m_pos])) {
+                ++m_pos;
+                continue;
+            }
+            next();
+        }
+        return std::move(m_tokens);
+    }
+
+private:
+    QChar at(qsizetype i) const { return i < m_text.size() ? m_text[i] : QChar(); }
+    bool startsWith(qsizetype i, std::u16string_view s) const
+    {
+        return m_text.mid(i).startsWith(QStringView(s.data(), static_cast<qsizetype>(s.size())));
+    }
+
+    void push(TokenKind kind, qsizetype start)
+    {
+        if (m_pos > start) // an empty line inside a comment has no token
+            m_tokens.push_back({kind, int(start), int(m_pos - start)});
+    }
+
+    void next()
+    {
+        const qsizetype start = m_pos;
+        const QChar c = m_text[m_pos];
+        if (startsWith(m_pos, u"(*")) {
+            m_state.commentDepth = 1;
+            m_pos += 2;
+            blockComment(start);
+        } else if (startsWith(m_pos, u"//")) {
+            while (m_pos < m_text.size() && m_text[m_pos] != QLatin1Char('\n'))
+                ++m_pos;
+            push(TokenKind::Comment, start);
+        } else if (c == QLatin1Char('{')) {
+            m_state.inPragma = true;
+            ++m_pos;
+            pragma(start);
+        } else if (isLetter(c)) {
+            word();
+        } else if (isDigit(c)) {
+            number(start);
+        } else if (c == QLatin1Char('\'') || c == QLatin1Char('"')) {
+            string(start, c == QLatin1Char('\'') ? TokenKind::StringLiteral : TokenKind::WStringLiteral);
+        } else if (c == QLatin1Char('%')) {
+            address();
+        } else {
+            op();
+        }
+    }
+
+    // Continues a (* *) comment, counting nesting, from m_pos; the token starts at `start`.
+    void blockComment(qsizetype start)
+    {
+        while (m_pos < m_text.size() && m_state.commentDepth > 0) {
+            if (startsWith(m_pos, u"(*")) {
+                ++m_state.commentDepth;
+                m_pos += 2;
+            } else if (startsWith(m_pos, u"*)")) {
+                --m_state.commentDepth;
+                m_pos += 2;
+            } else {
+                ++m_pos;
+            }
+        }
+        push(TokenKind::Comment, start);
+    }
+
+    void pragma(qsizetype start)
+    {
+        while (m_pos < m_text.size() && m_text[m_pos] != QLatin1Char('}'))
+            ++m_pos;
+        if (m_pos < m_text.size()) {
+            ++m_pos;
+            m_state.inPragma = false;
+        }
+        push(TokenKind::Pragma, start);
+    }
+
+    void word()
+    {
+        const qsizetype start = m_pos;
+        while (m_pos < m_text.size() && isWordChar(m_text[m_pos]))
+            ++m_pos;
+        const QStringView name = m_text.mid(start, m_pos - start);
+        if (at(m_pos) == QLatin1Char('#')) {
+            typedLiteral(start, name);
+            return;
+        }
+        const std::string upper = upperAscii(name);
+        if (inTable(kKeywords, upper) || inTable(kIlOperators, upper))
+            push(TokenKind::Keyword, start);
+        else if (inTable(kTypeNames, upper))
+            push(TokenKind::TypeName, start);
+        else
+            push(TokenKind::Identifier, start);
+    }
+
+    // Consumes characters while `accept` holds.
+    template<typename Accept>
+    void skipWhile(Accept accept)
+    {
+        while (m_pos < m_text.size() && accept(m_text[m_pos]))
+            ++m_pos;
+    }
+
+    void skipSign()
+    {
+        if (at(m_pos) == QLatin1Char('-') || at(m_pos) == QLatin1Char('+'))
+            ++m_pos;
+    }
+
+    // Emits `kind` when `valid`, an Error token otherwise.
+    void pushChecked(bool valid, TokenKind kind, qsizetype start) { push(valid ? kind : TokenKind::Error, start); }
+
+    void typedLiteral(qsizetype start, QStringView prefix)
+    {
+        ++m_pos; // '#'
+        const qsizetype bodyStart = m_pos;
+        const auto body = [&] { return m_text.mid(bodyStart, m_pos - bodyStart); };
+        switch (literalFamilyOfPrefix(prefix)) {
+        case LiteralFamily::Duration:
+            skipSign();
+            skipWhile([](QChar c) { return isWordChar(c) || c == QLatin1Char('.'); });
+            pushChecked(decodeDuration(body()).has_value(), TokenKind::TimeLiteral, start);
+            return;
+        case LiteralFamily::Date:
+            skipWhile([](QChar c) { return isDigit(c) || c == QLatin1Char('_') || c == QLatin1Char('-'); });
+            pushChecked(decodeDate(body()).has_value(), TokenKind::DateTimeLiteral, start);
+            return;
+        case LiteralFamily::TimeOfDay:
+            skipWhile([](QChar c) { return isDigit(c) || c == QLatin1Char('_') || c == QLatin1Char(':') || c == QLatin1Char('.'); });
+            pushChecked(decodeTimeOfDay(body()).has_value(), TokenKind::DateTimeLiteral, start);
+            return;
+        case LiteralFamily::DateAndTime:
+            skipWhile([](QChar c) {
+                return isDigit(c) || c == QLatin1Char('_') || c == QLatin1Char(':') || c == QLatin1Char('.')
+                    || c == QLatin1Char('-');
+            });
+            pushChecked(decodeDateAndTime(body()).has_value(), TokenKind::DateTimeLiteral, start);
+            return;
+        case LiteralFamily::String:
+        case LiteralFamily::WString:
+            if (at(m_pos) == QLatin1Char('\'') || at(m_pos) == QLatin1Char('"')) {
+                string(start, at(m_pos) == QLatin1Char('\'') ? TokenKind::StringLiteral : TokenKind::WStringLiteral);
+                return;
+            }
+            push(TokenKind::Error, start);
+            return;
+        case LiteralFamily::Bool:
+            if (isLetter(at(m_pos))) {
+                skipWhile(isWordChar);
+                const std::string upper = upperAscii(body());
+                pushChecked(upper == "TRUE" || upper == "FALSE", TokenKind::IntegerLiteral, start);
+                return;
+            }
+            typedNumber(start, false);
+            return;
+        case LiteralFamily::Integer:
+            typedNumber(start, false);
+            return;
+        case LiteralFamily::Real:
+            typedNumber(start, true);
+            return;
+        case LiteralFamily::Unknown:
+        case LiteralFamily::None:
+            // An enumerated value qualified by its type: Color#Red is one name.
+            if (isLetter(at(m_pos))) {
+                skipWhile(isWordChar);
+                push(TokenKind::Identifier, start);
+                return;
+            }
+            push(TokenKind::Error, start);
+            return;
+        }
+    }
+
+    void typedNumber(qsizetype start, bool real)
+    {
+        skipSign();
+        const qsizetype numberStart = m_pos;
+        if (!isDigit(at(m_pos))) {
+            push(TokenKind::Error, start);
+            return;
+        }
+        const TokenKind kind = scanNumber(numberStart);
+        if (kind == TokenKind::Error) {
+            push(TokenKind::Error, start);
+            return;
+        }
+        if (real)
+            push(TokenKind::RealLiteral, start);
+        else
+            pushChecked(kind == TokenKind::IntegerLiteral, TokenKind::IntegerLiteral, start);
+    }
+
+    void number(qsizetype start) { push(scanNumber(start), start); }
+
+    // Scans 42, 16#FF, 1.5E3 from `start`; returns its kind (Error when malformed).
+    TokenKind scanNumber(qsizetype start)
+    {
+        m_pos = start;
+        skipWhile([](QChar c) { return isDigit(c) || c == QLatin1Char('_'); });
+        if (at(m_pos) == QLatin1Char('#')) {
+            ++m_pos;
+            skipWhile(isWordChar);
+            return decodeInteger(m_text.mid(start, m_pos - start)) ? TokenKind::IntegerLiteral : TokenKind::Error;
+        }
+        bool real = false;
+        // "1..5" is a range, and "1.x" is not a number: a fraction needs a digit after the dot.
+        if (at(m_pos) == QLatin1Char('.') && isDigit(at(m_pos + 1))) {
+            real = true;
+            ++m_pos;
+            skipWhile([](QChar c) { return isDigit(c) || c == QLatin1Char('_'); });
+        }
+        if ((at(m_pos) == QLatin1Char('e') || at(m_pos) == QLatin1Char('E'))) {
+            qsizetype e = m_pos + 1;
+            if (at(e) == QLatin1Char('+') || at(e) == QLatin1Char('-'))
+                ++e;
+            if (isDigit(at(e))) {
+                real = true;
+                m_pos = e;
+                skipWhile(isDigit);
+            }
+        }
+        if (isLetter(at(m_pos))) { // 12abc
+            skipWhile(isWordChar);
+            return TokenKind::Error;
+        }
+        const QStringView text = m_text.mid(start, m_pos - start);
+        if (real)
+            return decodeReal(text) ? TokenKind::RealLiteral : TokenKind::Error;
+        return decodeInteger(text) ? TokenKind::IntegerLiteral : TokenKind::Error;
+    }
+
+    // A string literal from m_pos (the quote); ends at its closing quote or, unterminated, at the
+    // end of the line, which is an Error.
+    void string(qsizetype start, TokenKind kind)
+    {
+        const QChar quote = m_text[m_pos];
+        const qsizetype quoteStart = m_pos;
+        ++m_pos;
+        bool closed = false;
+        while (m_pos < m_text.size() && m_text[m_pos] != QLatin1Char('\n')) {
+            const QChar c = m_text[m_pos++];
+            if (c == QLatin1Char('$') && m_pos < m_text.size() && m_text[m_pos] != QLatin1Char('\n')) {
+                ++m_pos;
+            } else if (c == quote) {
+                closed = true;
+                break;
+            }
+        }
+        pushChecked(closed && decodeString(m_text.mid(quoteStart, m_pos - quoteStart)).has_value(), kind, start);
+    }
+
+    // %IX0.0, %QW3, %MD10, %I*, %IX1.2.3
+    void address()
+    {
+        const qsizetype start = m_pos++;
+        const QChar area = at(m_pos).toUpper();
+        if (area != QLatin1Char('I') && area != QLatin1Char('Q') && area != QLatin1Char('M')) {
+            skipWhile([](QChar c) { return isWordChar(c) || c == QLatin1Char('.'); });
+            push(TokenKind::Error, start);
+            return;
+        }
+        ++m_pos;
+        const QChar size = at(m_pos).toUpper();
+        if (size == QLatin1Char('X') || size == QLatin1Char('B') || size == QLatin1Char('W') || size == QLatin1Char('D')
+            || size == QLatin1Char('L'))
+            ++m_pos;
+        if (at(m_pos) == QLatin1Char('*')) {
+            ++m_pos;
+            push(TokenKind::DirectAddress, start);
+            return;
+        }
+        bool valid = isDigit(at(m_pos));
+        skipWhile(isDigit);
+        while (valid && at(m_pos) == QLatin1Char('.') && isDigit(at(m_pos + 1))) {
+            ++m_pos;
+            skipWhile(isDigit);
+        }
+        if (isLetter(at(m_pos))) {
+            skipWhile(isWordChar);
+            valid = false;
+        }
+        pushChecked(valid, TokenKind::DirectAddress, start);
+    }
+
+    void op()
+    {
+        const qsizetype start = m_pos;
+        for (const auto &candidate : kOperators) {
+            if (startsWith(m_pos, candidate)) {
+                m_pos += static_cast<qsizetype>(candidate.size());
+                push(TokenKind::Operator, start);
+                return;
+            }
+        }
+        ++m_pos;
+        push(TokenKind::Error, start);
+    }
+
+    QStringView m_text;
+    LexState &m_state;
+    qsizetype m_pos = 0;
+    std::vector<Token> m_tokens;
+};
+
+} // namespace
+
+std::vector<Token> tokenize(QStringView text, LexState &state)
+{
+    return Lexer(text, state).run();
+}
+
+std::vector<Token> tokenize(QStringView text)
+{
+    LexState state;
+    return tokenize(text, state);
+}
+
+bool isKeyword(QStringView word)
+{
+    const std::string upper = upperAscii(word);
+    return inTable(kKeywords, upper) || inTable(kIlOperators, upper);
+}
+
+bool isTypeName(QStringView word)
+{
+    return inTable(kTypeNames, upperAscii(word));
+}
+
+bool isIlOperator(QStringView word)
+{
+    const std::string upper = upperAscii(word);
+    return inTable(kIlOperators, upper);
+}
+
+} // namespace iec::interp

@@ -1,0 +1,1406 @@
+#include "interpreter/compiler/parser.h"
+
+#include <algorithm>
+#include <array>
+#include <string_view>
+
+namespace iec::interp {
+
+using namespace ast;
+
+namespace {
+
+// Words that are keywords only in a few places (tasks, SFC) and ordinary names elsewhere.
+constexpr std::string_view kSoftKeywords[] = {"INTERVAL", "PRIORITY", "SINGLE", "ON", "FROM", "STEP", "READ_ONLY",
+                                              "READ_WRITE", "CONSTANT"};
+// IL operators that are also ST operators, and so never names in ST.
+constexpr std::string_view kStOperatorWords[] = {"AND", "OR", "XOR", "NOT", "MOD"};
+
+bool equalsUpper(QStringView text, std::string_view upper)
+{
+    if (text.size() != static_cast<qsizetype>(upper.size()))
+        return false;
+    for (qsizetype i = 0; i < text.size(); ++i) {
+        if (text[i].toUpper().unicode() != static_cast<char16_t>(upper[static_cast<size_t>(i)]))
+            return false;
+    }
+    return true;
+}
+
+template<size_t N>
+bool inList(QStringView word, const std::string_view (&list)[N])
+{
+    return std::any_of(std::begin(list), std::end(list), [&](std::string_view w) { return equalsUpper(word, w); });
+}
+
+// Binary operators with their IEC precedence (higher binds tighter), the table of the grammar.
+struct BinaryOperator {
+    std::string_view spelling;
+    int precedence;
+    const char *canonical;
+};
+constexpr BinaryOperator kBinaryOperators[] = {
+    {"OR", 1, "OR"}, {"XOR", 2, "XOR"}, {"AND", 3, "AND"}, {"&", 3, "AND"},  {"=", 4, "="},
+    {"<>", 4, "<>"}, {"<", 5, "<"},     {">", 5, ">"},     {"<=", 5, "<="},  {">=", 5, ">="},
+    {"+", 6, "+"},   {"-", 6, "-"},     {"*", 7, "*"},     {"/", 7, "/"},    {"MOD", 7, "MOD"},
+    {"**", 8, "**"},
+};
+
+class Parser
+{
+public:
+    Parser(QStringView text, Diagnostics &diagnostics, QString pou, int firstLine)
+        : m_text(text)
+        , m_diagnostics(diagnostics)
+        , m_pou(std::move(pou))
+        , m_firstLine(firstLine)
+    {
+        for (const Token &t : tokenize(text)) {
+            if (t.kind != TokenKind::Comment && t.kind != TokenKind::Pragma)
+                m_tokens.push_back(t);
+        }
+        m_lineStarts.push_back(0);
+        for (qsizetype i = 0; i < text.size(); ++i) {
+            if (text[i] == QLatin1Char('\n'))
+                m_lineStarts.push_back(static_cast<int>(i + 1));
+        }
+    }
+
+    CompilationUnit unit();
+    std::vector<Stmt> stBody()
+    {
+        auto body = statements();
+        if (!atEnd())
+            unexpected(QStringLiteral("a statement"));
+        return body;
+    }
+    std::vector<IlInstruction> ilBody() { return ilInstructions(); }
+    std::vector<VarSection> declarations()
+    {
+        std::vector<VarSection> sections;
+        while (!atEnd()) {
+            if (isVarSectionStart())
+                sections.push_back(varSection());
+            else {
+                unexpected(QStringLiteral("VAR ... END_VAR"));
+                ++m_pos;
+            }
+        }
+        return sections;
+    }
+
+private:
+    // ---- tokens ----
+    bool atEnd(size_t ahead = 0) const { return m_pos + ahead >= m_tokens.size(); }
+    const Token &tok(size_t ahead = 0) const
+    {
+        static const Token end{TokenKind::Error, 0, 0};
+        return atEnd(ahead) ? end : m_tokens[m_pos + ahead];
+    }
+    QStringView text(const Token &t) const { return m_text.mid(t.offset, t.length); }
+    QStringView text(size_t ahead = 0) const { return atEnd(ahead) ? QStringView() : text(tok(ahead)); }
+
+    SourceLocation locationOf(int offset) const
+    {
+        const auto it = std::upper_bound(m_lineStarts.begin(), m_lineStarts.end(), offset);
+        const int line = static_cast<int>(it - m_lineStarts.begin());
+        return {line + m_firstLine - 1, offset - *(it - 1) + 1};
+    }
+    SourceLocation here() const
+    {
+        if (atEnd())
+            return locationOf(m_tokens.empty() ? 0 : m_tokens.back().offset + m_tokens.back().length);
+        return locationOf(tok().offset);
+    }
+    // Just after the previous token: where a missing ';' belongs.
+    SourceLocation afterPrevious() const
+    {
+        if (m_pos == 0)
+            return here();
+        const Token &t = m_tokens[m_pos - 1];
+        return locationOf(t.offset + t.length);
+    }
+    int lineOf(const Token &t) const { return locationOf(t.offset).line; }
+
+    bool isWordToken(const Token &t) const
+    {
+        return t.kind == TokenKind::Keyword || t.kind == TokenKind::Identifier || t.kind == TokenKind::TypeName;
+    }
+    bool isWord(std::string_view upper, size_t ahead = 0) const
+    {
+        return !atEnd(ahead) && isWordToken(tok(ahead)) && equalsUpper(text(ahead), upper);
+    }
+    bool isOp(std::u16string_view op, size_t ahead = 0) const
+    {
+        return !atEnd(ahead) && tok(ahead).kind == TokenKind::Operator
+            && text(ahead) == QStringView(op.data(), static_cast<qsizetype>(op.size()));
+    }
+    bool acceptWord(std::string_view upper)
+    {
+        if (!isWord(upper))
+            return false;
+        ++m_pos;
+        return true;
+    }
+    bool acceptOp(std::u16string_view op)
+    {
+        if (!isOp(op))
+            return false;
+        ++m_pos;
+        return true;
+    }
+    // A name in ST: identifiers, and keywords that are only keywords in IL or in tasks/SFC.
+    bool isName(size_t ahead = 0) const
+    {
+        if (atEnd(ahead))
+            return false;
+        const Token &t = tok(ahead);
+        if (t.kind == TokenKind::Identifier)
+            return true;
+        if (t.kind != TokenKind::Keyword)
+            return false;
+        const QStringView word = text(t);
+        return (isIlOperator(word) && !inList(word, kStOperatorWords)) || inList(word, kSoftKeywords);
+    }
+
+    // ---- diagnostics ----
+    void error(SourceLocation at, const QString &message, const QString &hint = {})
+    {
+        if (m_recovering)
+            return; // one typo, one message
+        m_diagnostics.error(m_pou, at, message, hint);
+        m_recovering = true;
+    }
+    QString describeCurrent() const
+    {
+        if (atEnd())
+            return QStringLiteral("the end of the text");
+        return QLatin1Char('\'') + text().toString() + QLatin1Char('\'');
+    }
+    void unexpected(const QString &expected)
+    {
+        if (!atEnd() && tok().kind == TokenKind::Error) {
+            error(here(), QStringLiteral("'%1' is not valid IEC 61131-3 text.").arg(text().toString()),
+                  badTokenHint(text()));
+            return;
+        }
+        error(here(), QStringLiteral("Expected %1 but found %2.").arg(expected, describeCurrent()));
+    }
+    static QString badTokenHint(QStringView bad)
+    {
+        if (bad.startsWith(QLatin1Char('\'')) || bad.startsWith(QLatin1Char('"')))
+            return QStringLiteral("close the string on the same line, and write $$ for a dollar sign");
+        if (bad.contains(QLatin1Char('#')))
+            return QStringLiteral("check the digits and units of the literal, e.g. 16#FF or T#1s500ms");
+        return {};
+    }
+    bool expectOp(std::u16string_view op, const QString &what)
+    {
+        if (acceptOp(op))
+            return true;
+        unexpected(what);
+        return false;
+    }
+    bool expectWord(std::string_view upper)
+    {
+        if (acceptWord(upper))
+            return true;
+        unexpected(QString::fromLatin1(upper.data(), static_cast<qsizetype>(upper.size())));
+        return false;
+    }
+    QString expectName(const QString &what)
+    {
+        if (isName())
+            return takeName();
+        unexpected(what);
+        return {};
+    }
+    QString takeName() { return text(m_tokens[m_pos++]).toString(); }
+    // Skips to just after the next ';' or to a word that starts something new.
+    void synchronize(bool stopAtStatementStart)
+    {
+        while (!atEnd()) {
+            if (acceptOp(u";"))
+                break;
+            if (isBlockWord() || (stopAtStatementStart && isStatementKeyword()))
+                break;
+            ++m_pos;
+        }
+        m_recovering = false;
+    }
+    // Recovery that stopped where it started would loop for ever: take one token.
+    void skipIfStuck(size_t before)
+    {
+        if (m_pos == before && !atEnd())
+            ++m_pos;
+    }
+    bool isBlockWord() const
+    {
+        if (atEnd() || tok().kind != TokenKind::Keyword)
+            return false;
+        const QStringView w = text();
+        return w.startsWith(QLatin1String("END_"), Qt::CaseInsensitive) || isWord("ELSE") || isWord("ELSIF")
+            || isWord("UNTIL") || isWord("VAR") || w.startsWith(QLatin1String("VAR_"), Qt::CaseInsensitive)
+            || isPouStart();
+    }
+    bool isStatementKeyword() const
+    {
+        return isWord("IF") || isWord("CASE") || isWord("FOR") || isWord("WHILE") || isWord("REPEAT")
+            || isWord("EXIT") || isWord("RETURN") || isWord("CONTINUE");
+    }
+    bool isPouStart() const
+    {
+        return isWord("PROGRAM") || isWord("FUNCTION") || isWord("FUNCTION_BLOCK") || isWord("TYPE")
+            || isWord("CONFIGURATION");
+    }
+
+    // ---- units ----
+    void pou(CompilationUnit &unit);
+    void typeBlock(CompilationUnit &unit);
+    void configuration(CompilationUnit &unit);
+    void resourceContents(ResourceDecl &resource, std::string_view end);
+    bool isVarSectionStart() const { return isWord("VAR") || (!atEnd() && tok().kind == TokenKind::Keyword && text().startsWith(QLatin1String("VAR_"), Qt::CaseInsensitive)); }
+    VarSection varSection();
+    void varDeclarations(std::vector<VarDecl> &out, std::string_view end);
+    TypeSpec typeSpec();
+    Initializer initializer();
+    Body body(std::initializer_list<std::string_view> ends);
+    bool looksLikeIl() const;
+    bool looksLikeSfc() const;
+    void sfc(SfcChart &chart, std::initializer_list<std::string_view> ends);
+    void sfcStep(SfcChart &chart, bool initial);
+    void sfcTransition(SfcChart &chart);
+    QStringList stepList();
+    bool isEnd(std::initializer_list<std::string_view> ends) const
+    {
+        return atEnd() || std::any_of(ends.begin(), ends.end(), [&](std::string_view e) { return isWord(e); });
+    }
+
+    // ---- ST ----
+    std::vector<Stmt> statements();
+    bool isStatementListEnd() const;
+    Stmt statement();
+    Stmt ifStatement();
+    Stmt caseStatement();
+    bool isCaseLabelStart() const;
+    Stmt forStatement();
+    Stmt whileStatement();
+    Stmt repeatStatement();
+    void closeBlock(std::string_view endWord, const char *blockName, SourceLocation opened);
+    void endStatement();
+
+    // ---- expressions ----
+    Expr expression(int minPrecedence = 1);
+    Expr unary();
+    Expr primary();
+    Expr postfix(Expr base);
+    std::vector<CallArg> callArguments();
+    const BinaryOperator *binaryOperator() const;
+    Expr errorExpr() const
+    {
+        Expr e;
+        e.location = here();
+        return e;
+    }
+
+    // ---- IL ----
+    std::vector<IlInstruction> ilInstructions(std::initializer_list<std::string_view> ends = {});
+    bool ilOperandFollows(const Token &opToken) const { return !atEnd() && lineOf(tok()) == lineOf(opToken); }
+
+    QStringView m_text;
+    Diagnostics &m_diagnostics;
+    QString m_pou;
+    int m_firstLine = 1;
+    std::vector<Token> m_tokens;
+    std::vector<int> m_lineStarts;
+    size_t m_pos = 0;
+    bool m_recovering = false;
+};
+
+// ============================================================================ units
+
+CompilationUnit Parser::unit()
+{
+    CompilationUnit unit;
+    while (!atEnd()) {
+        m_pou.clear();
+        if (isWord("PROGRAM") || isWord("FUNCTION") || isWord("FUNCTION_BLOCK")) {
+            pou(unit);
+        } else if (isWord("TYPE")) {
+            typeBlock(unit);
+        } else if (isWord("CONFIGURATION")) {
+            configuration(unit);
+        } else if (isVarSectionStart()) {
+            unit.globals.push_back(varSection());
+        } else {
+            unexpected(QStringLiteral("PROGRAM, FUNCTION_BLOCK, FUNCTION, TYPE or CONFIGURATION"));
+            ++m_pos;
+            while (!atEnd() && !isPouStart() && !isVarSectionStart())
+                ++m_pos;
+            m_recovering = false;
+        }
+    }
+    return unit;
+}
+
+void Parser::pou(CompilationUnit &unit)
+{
+    Pou p;
+    p.location = here();
+    std::string_view end;
+    if (acceptWord("PROGRAM")) {
+        p.kind = PouKind::Program;
+        end = "END_PROGRAM";
+    } else if (acceptWord("FUNCTION_BLOCK")) {
+        p.kind = PouKind::FunctionBlock;
+        end = "END_FUNCTION_BLOCK";
+    } else {
+        acceptWord("FUNCTION");
+        p.kind = PouKind::Function;
+        end = "END_FUNCTION";
+    }
+    p.name = expectName(QStringLiteral("the name of the POU"));
+    m_pou = p.name;
+    if (p.kind == PouKind::Function) {
+        if (acceptOp(u":"))
+            p.returnType = typeSpec();
+        else
+            error(here(), QStringLiteral("A FUNCTION needs a result type after its name."),
+                  QStringLiteral("write e.g. FUNCTION %1 : INT").arg(p.name));
+    }
+    while (isVarSectionStart())
+        p.sections.push_back(varSection());
+    p.body = body({end, "ACTION"});
+    // Actions after the body, as CODESYS exports them.
+    while (isWord("ACTION")) {
+        SfcAction action;
+        action.location = here();
+        ++m_pos;
+        action.name = expectName(QStringLiteral("the name of the action"));
+        acceptOp(u":");
+        action.body = body({"END_ACTION"});
+        expectWord("END_ACTION");
+        p.actions.push_back(std::move(action));
+    }
+    if (p.body.language == Language::SFC) { // in a chart, actions belong to the chart
+        for (SfcAction &action : p.actions)
+            p.body.sfc->actions.push_back(std::move(action));
+        p.actions.clear();
+    }
+    if (!acceptWord(end)) {
+        error(p.location, QStringLiteral("%1 has no %2.").arg(p.name, QString::fromLatin1(end.data(), qsizetype(end.size()))),
+              QStringLiteral("add %1 after its last statement").arg(QString::fromLatin1(end.data(), qsizetype(end.size()))));
+        while (!atEnd() && !isPouStart())
+            ++m_pos;
+        m_recovering = false;
+    }
+    unit.pous.push_back(std::move(p));
+}
+
+void Parser::typeBlock(CompilationUnit &unit)
+{
+    ++m_pos; // TYPE
+    while (!atEnd() && !isWord("END_TYPE") && !isPouStart()) {
+        const size_t before = m_pos;
+        TypeDecl decl;
+        decl.location = here();
+        decl.name = expectName(QStringLiteral("the name of a type"));
+        if (decl.name.isEmpty() || !expectOp(u":", QStringLiteral("':' after the type name"))) {
+            synchronize(false);
+            skipIfStuck(before);
+            continue;
+        }
+        decl.type = typeSpec();
+        if (acceptOp(u":="))
+            decl.init = initializer();
+        if (!acceptOp(u";")) {
+            error(afterPrevious(), QStringLiteral("Missing ';' after the declaration of type %1.").arg(decl.name));
+            synchronize(false);
+        }
+        m_recovering = false;
+        unit.types.push_back(std::move(decl));
+    }
+    expectWord("END_TYPE");
+    m_recovering = false;
+}
+
+void Parser::configuration(CompilationUnit &unit)
+{
+    ConfigurationDecl config;
+    config.location = here();
+    ++m_pos;
+    config.name = expectName(QStringLiteral("the name of the configuration"));
+    m_pou = config.name;
+    while (isVarSectionStart())
+        config.globals.push_back(varSection());
+    if (isWord("RESOURCE")) {
+        while (acceptWord("RESOURCE")) {
+            ResourceDecl resource;
+            resource.location = here();
+            resource.name = expectName(QStringLiteral("the name of the resource"));
+            if (acceptWord("ON"))
+                resource.on = expectName(QStringLiteral("the processor type after ON"));
+            resourceContents(resource, "END_RESOURCE");
+            expectWord("END_RESOURCE");
+            config.resources.push_back(std::move(resource));
+        }
+    } else {
+        ResourceDecl resource; // tasks and programs directly in the configuration
+        resource.location = config.location;
+        resourceContents(resource, "END_CONFIGURATION");
+        config.resources.push_back(std::move(resource));
+    }
+    expectWord("END_CONFIGURATION");
+    m_recovering = false;
+    unit.configurations.push_back(std::move(config));
+}
+
+void Parser::resourceContents(ResourceDecl &resource, std::string_view end)
+{
+    while (!atEnd() && !isWord(end) && !isWord("END_CONFIGURATION")) {
+        if (isVarSectionStart()) {
+            resource.globals.push_back(varSection());
+        } else if (acceptWord("TASK")) {
+            TaskDecl task;
+            task.location = here();
+            task.name = expectName(QStringLiteral("the name of the task"));
+            if (expectOp(u"(", QStringLiteral("'(' with the task's INTERVAL and PRIORITY"))) {
+                while (!atEnd() && !isOp(u")")) {
+                    const bool single = isWord("SINGLE"), interval = isWord("INTERVAL"), priority = isWord("PRIORITY");
+                    if (!single && !interval && !priority) {
+                        unexpected(QStringLiteral("SINGLE, INTERVAL or PRIORITY"));
+                        break;
+                    }
+                    ++m_pos;
+                    expectOp(u":=", QStringLiteral("':='"));
+                    Expr value = expression();
+                    (single ? task.single : interval ? task.interval : task.priority) = std::move(value);
+                    if (!acceptOp(u","))
+                        break;
+                }
+                expectOp(u")", QStringLiteral("')'"));
+            }
+            endStatement();
+            resource.tasks.push_back(std::move(task));
+        } else if (acceptWord("PROGRAM")) {
+            ProgramConfig program;
+            program.location = here();
+            program.retain = acceptWord("RETAIN");
+            acceptWord("NON_RETAIN");
+            program.instance = expectName(QStringLiteral("the name of the program instance"));
+            if (acceptWord("WITH"))
+                program.task = expectName(QStringLiteral("the task name after WITH"));
+            expectOp(u":", QStringLiteral("':' and the program type"));
+            program.type = expectName(QStringLiteral("the program type"));
+            if (acceptOp(u"("))
+                program.args = callArguments();
+            endStatement();
+            resource.programs.push_back(std::move(program));
+        } else {
+            const size_t before = m_pos;
+            unexpected(QStringLiteral("TASK, PROGRAM or %1").arg(QString::fromLatin1(end.data(), qsizetype(end.size()))));
+            synchronize(false);
+            skipIfStuck(before);
+        }
+    }
+}
+
+VarSection Parser::varSection()
+{
+    VarSection section;
+    section.location = here();
+    struct Kind {
+        std::string_view word;
+        VarKind kind;
+    };
+    static constexpr Kind kinds[] = {
+        {"VAR", VarKind::Local},          {"VAR_INPUT", VarKind::Input},   {"VAR_OUTPUT", VarKind::Output},
+        {"VAR_IN_OUT", VarKind::InOut},   {"VAR_EXTERNAL", VarKind::External}, {"VAR_GLOBAL", VarKind::Global},
+        {"VAR_TEMP", VarKind::Temp},      {"VAR_ACCESS", VarKind::Access}, {"VAR_CONFIG", VarKind::Config},
+    };
+    for (const Kind &k : kinds) {
+        if (isWord(k.word))
+            section.kind = k.kind;
+    }
+    ++m_pos;
+    for (;;) {
+        if (acceptWord("CONSTANT"))
+            section.constant = true;
+        else if (acceptWord("RETAIN"))
+            section.retain = true;
+        else if (acceptWord("NON_RETAIN"))
+            section.nonRetain = true;
+        else if (!acceptWord("PERSISTENT"))
+            break;
+    }
+    varDeclarations(section.vars, "END_VAR");
+    if (!acceptWord("END_VAR"))
+        error(section.location, QStringLiteral("This variable section has no END_VAR."),
+              QStringLiteral("add END_VAR after its last declaration"));
+    m_recovering = false;
+    return section;
+}
+
+void Parser::varDeclarations(std::vector<VarDecl> &out, std::string_view end)
+{
+    while (!atEnd() && !isWord(end) && !isBlockWord() && !isStatementKeyword()) {
+        // "a := 1;" is a statement: the section above lacks its END_VAR, which the caller reports.
+        if (isName() && (isOp(u":=", 1) || isOp(u"(", 1) || isOp(u".", 1) || isOp(u"[", 1)))
+            break;
+        std::vector<VarDecl> names;
+        do {
+            if (!isName()) {
+                unexpected(QStringLiteral("a variable name"));
+                break;
+            }
+            VarDecl decl;
+            decl.location = here();
+            decl.name = takeName();
+            names.push_back(std::move(decl));
+        } while (acceptOp(u","));
+        QString address;
+        if (acceptWord("AT")) {
+            if (!atEnd() && tok().kind == TokenKind::DirectAddress)
+                address = takeName();
+            else
+                unexpected(QStringLiteral("an address such as %IX0.0 after AT"));
+        }
+        if (names.empty() || !expectOp(u":", QStringLiteral("':' and a type"))) {
+            synchronize(false);
+            continue;
+        }
+        TypeSpec type = typeSpec();
+        Initializer init;
+        if (acceptOp(u":="))
+            init = initializer();
+        else if (isOp(u"="))
+            error(here(), QStringLiteral("An initial value is given with ':=', not '='."),
+                  QStringLiteral("write %1 : ... := value;").arg(names.front().name));
+        if (!acceptOp(u";")) {
+            error(afterPrevious(), QStringLiteral("Missing ';' after the declaration of %1.").arg(names.front().name));
+            synchronize(false);
+        }
+        m_recovering = false;
+        for (VarDecl &decl : names) {
+            decl.address = address;
+            decl.type = type;
+            decl.init = init;
+            out.push_back(std::move(decl));
+        }
+    }
+}
+
+TypeSpec Parser::typeSpec()
+{
+    TypeSpec spec;
+    spec.location = here();
+    if (acceptWord("ARRAY")) {
+        spec.kind = TypeSpec::Kind::Array;
+        if (expectOp(u"[", QStringLiteral("'[' and the index range, e.g. ARRAY[1..10]"))) {
+            do {
+                Range range;
+                range.low = expression();
+                if (expectOp(u"..", QStringLiteral("'..' between the bounds")))
+                    range.high = expression();
+                spec.ranges.push_back(std::move(range));
+            } while (acceptOp(u","));
+            expectOp(u"]", QStringLiteral("']'"));
+        }
+        expectWord("OF");
+        spec.element.push_back(typeSpec());
+        return spec;
+    }
+    if (acceptWord("STRUCT")) {
+        spec.kind = TypeSpec::Kind::Struct;
+        varDeclarations(spec.members, "END_STRUCT");
+        if (!acceptWord("END_STRUCT"))
+            error(spec.location, QStringLiteral("This STRUCT has no END_STRUCT."));
+        return spec;
+    }
+    if (acceptOp(u"(")) {
+        spec.kind = TypeSpec::Kind::Enum;
+        do {
+            spec.enumValues << expectName(QStringLiteral("an enumeration value"));
+            std::optional<Expr> value;
+            if (acceptOp(u":="))
+                value = expression();
+            spec.enumExplicit.push_back(std::move(value));
+        } while (acceptOp(u","));
+        expectOp(u")", QStringLiteral("')' after the enumeration values"));
+        if (!atEnd() && (tok().kind == TokenKind::TypeName))
+            spec.name = takeName(); // CODESYS: (a, b) INT
+        return spec;
+    }
+    if (isWord("STRING") || isWord("WSTRING")) {
+        spec.kind = TypeSpec::Kind::String;
+        spec.wide = isWord("WSTRING");
+        ++m_pos;
+        const bool square = acceptOp(u"[");
+        if (square || acceptOp(u"(")) {
+            spec.length = expression();
+            expectOp(square ? u"]" : u")", QStringLiteral("the closing bracket of the string length"));
+        }
+        return spec;
+    }
+    if (atEnd() || !(tok().kind == TokenKind::TypeName || isName())) {
+        unexpected(QStringLiteral("a type"));
+        return spec;
+    }
+    spec.name = takeName();
+    if (acceptOp(u"(")) { // subrange INT (0..100)
+        spec.kind = TypeSpec::Kind::Subrange;
+        Range range;
+        range.low = expression();
+        expectOp(u"..", QStringLiteral("'..' between the bounds"));
+        range.high = expression();
+        spec.ranges.push_back(std::move(range));
+        expectOp(u")", QStringLiteral("')'"));
+    }
+    return spec;
+}
+
+Initializer Parser::initializer()
+{
+    Initializer init;
+    init.location = here();
+    if (acceptOp(u"[")) {
+        init.kind = Initializer::Kind::Array;
+        if (acceptOp(u"]"))
+            return init;
+        do {
+            std::optional<Expr> repeat;
+            if (!atEnd() && tok().kind == TokenKind::IntegerLiteral && isOp(u"(", 1)) {
+                repeat = expression(9); // just the literal
+                ++m_pos;                // (
+                Initializer item;
+                if (!isOp(u")"))
+                    item = initializer();
+                expectOp(u")", QStringLiteral("')' after the repeated value"));
+                init.items.push_back(std::move(item));
+            } else {
+                init.items.push_back(initializer());
+            }
+            init.repeats.push_back(std::move(repeat));
+        } while (acceptOp(u","));
+        expectOp(u"]", QStringLiteral("']' at the end of the array's initial values"));
+        return init;
+    }
+    if (isOp(u"(") && isName(1) && isOp(u":=", 2)) {
+        ++m_pos;
+        init.kind = Initializer::Kind::Struct;
+        do {
+            init.memberNames << expectName(QStringLiteral("a member name"));
+            expectOp(u":=", QStringLiteral("':='"));
+            init.items.push_back(initializer());
+        } while (acceptOp(u","));
+        expectOp(u")", QStringLiteral("')' at the end of the structure's initial values"));
+        return init;
+    }
+    init.kind = Initializer::Kind::Expression;
+    init.value = expression();
+    return init;
+}
+
+Body Parser::body(std::initializer_list<std::string_view> ends)
+{
+    Body b;
+    if (isEnd(ends))
+        return b;
+    if (looksLikeSfc()) {
+        b.language = Language::SFC;
+        b.sfc = std::make_shared<SfcChart>();
+        sfc(*b.sfc, ends);
+    } else if (looksLikeIl()) {
+        b.language = Language::IL;
+        b.il = ilInstructions(ends);
+    } else {
+        b.language = Language::ST;
+        b.statements = statements();
+        if (!isEnd(ends) && !atEnd()) {
+            unexpected(QStringLiteral("a statement"));
+            while (!isEnd(ends) && !isPouStart())
+                ++m_pos;
+            m_recovering = false;
+        }
+    }
+    return b;
+}
+
+bool Parser::looksLikeSfc() const
+{
+    return isWord("INITIAL_STEP") || isWord("STEP") || isWord("TRANSITION");
+}
+
+bool Parser::looksLikeIl() const
+{
+    if (atEnd())
+        return false;
+    // A label "Start:" only exists in IL.
+    if (isName() && isOp(u":", 1))
+        return true;
+    if (tok().kind != TokenKind::Keyword || !isIlOperator(text()))
+        return false;
+    // "R := TRUE;" and "ADD(...)" are ST; "LD x" is IL.
+    return !(isOp(u":=", 1) || isOp(u"(", 1) || isOp(u".", 1) || isOp(u"[", 1) || isOp(u"=>", 1));
+}
+
+// ============================================================================ SFC
+
+void Parser::sfc(SfcChart &chart, std::initializer_list<std::string_view> ends)
+{
+    while (!isEnd(ends)) {
+        if (acceptWord("INITIAL_STEP")) {
+            sfcStep(chart, true);
+        } else if (acceptWord("STEP")) {
+            sfcStep(chart, false);
+        } else if (isWord("TRANSITION")) {
+            sfcTransition(chart);
+        } else if (isWord("ACTION")) {
+            SfcAction action;
+            action.location = here();
+            ++m_pos;
+            action.name = expectName(QStringLiteral("the name of the action"));
+            acceptOp(u":");
+            action.body = body({"END_ACTION"});
+            expectWord("END_ACTION");
+            chart.actions.push_back(std::move(action));
+        } else {
+            unexpected(QStringLiteral("INITIAL_STEP, STEP, TRANSITION or ACTION"));
+            ++m_pos;
+            while (!isEnd(ends) && !isWord("STEP") && !isWord("INITIAL_STEP") && !isWord("TRANSITION") && !isWord("ACTION"))
+                ++m_pos;
+            m_recovering = false;
+        }
+    }
+}
+
+void Parser::sfcStep(SfcChart &chart, bool initial)
+{
+    SfcStep step;
+    step.location = here();
+    step.initial = initial;
+    step.name = expectName(QStringLiteral("the name of the step"));
+    expectOp(u":", QStringLiteral("':' after the step name"));
+    while (!atEnd() && !isWord("END_STEP") && !isBlockWord() && !isWord("STEP") && !isWord("TRANSITION")) {
+        SfcActionAssociation assoc;
+        assoc.location = here();
+        assoc.action = expectName(QStringLiteral("an action name"));
+        if (acceptOp(u"(")) {
+            if (!isOp(u")") && !isOp(u",")) {
+                if (!atEnd() && (isWordToken(tok())))
+                    assoc.qualifier = takeName().toUpper();
+                else
+                    unexpected(QStringLiteral("an action qualifier such as N, S, R, L or D"));
+            }
+            while (acceptOp(u",")) {
+                if (!atEnd() && tok().kind == TokenKind::TimeLiteral)
+                    assoc.duration = expression();
+                else if (isName())
+                    assoc.indicator = takeName();
+                else
+                    unexpected(QStringLiteral("a duration or an indicator variable"));
+            }
+            expectOp(u")", QStringLiteral("')'"));
+        }
+        if (!acceptOp(u";"))
+            error(afterPrevious(), QStringLiteral("Missing ';' after the action association."));
+        if (m_recovering)
+            synchronize(false);
+        step.actions.push_back(std::move(assoc));
+    }
+    if (!acceptWord("END_STEP"))
+        error(step.location, QStringLiteral("Step %1 has no END_STEP.").arg(step.name));
+    m_recovering = false;
+    chart.steps.push_back(std::move(step));
+}
+
+QStringList Parser::stepList()
+{
+    QStringList steps;
+    if (acceptOp(u"(")) {
+        do
+            steps << expectName(QStringLiteral("a step name"));
+        while (acceptOp(u","));
+        expectOp(u")", QStringLiteral("')' after the step names"));
+    } else {
+        steps << expectName(QStringLiteral("a step name"));
+    }
+    return steps;
+}
+
+void Parser::sfcTransition(SfcChart &chart)
+{
+    SfcTransition t;
+    t.location = here();
+    ++m_pos;
+    if (isName() && !isWord("FROM"))
+        t.name = takeName();
+    if (acceptOp(u"(")) {
+        expectWord("PRIORITY");
+        expectOp(u":=", QStringLiteral("':='"));
+        t.priority = expression();
+        expectOp(u")", QStringLiteral("')'"));
+    }
+    expectWord("FROM");
+    t.from = stepList();
+    expectWord("TO");
+    t.to = stepList();
+    if (acceptOp(u":=")) {
+        t.condition = expression();
+        endStatement();
+    } else if (acceptOp(u":")) {
+        t.ilCondition = ilInstructions({"END_TRANSITION"});
+    } else {
+        unexpected(QStringLiteral("':=' and the transition condition"));
+    }
+    if (!acceptWord("END_TRANSITION")) {
+        error(t.location, QStringLiteral("This TRANSITION has no END_TRANSITION."));
+        while (!atEnd() && !isBlockWord() && !isWord("STEP") && !isWord("TRANSITION"))
+            ++m_pos;
+    }
+    m_recovering = false;
+    chart.transitions.push_back(std::move(t));
+}
+
+// ============================================================================ ST statements
+
+bool Parser::isStatementListEnd() const
+{
+    return atEnd() || isBlockWord() || isWord("ACTION") || isWord("STEP") || isWord("INITIAL_STEP")
+        || isWord("TRANSITION");
+}
+
+std::vector<Stmt> Parser::statements()
+{
+    std::vector<Stmt> list;
+    while (!isStatementListEnd()) {
+        const size_t before = m_pos;
+        list.push_back(statement());
+        if (m_recovering)
+            synchronize(true);
+        if (m_pos == before) // never loop without progress
+            ++m_pos;
+    }
+    return list;
+}
+
+void Parser::endStatement()
+{
+    if (acceptOp(u";"))
+        return;
+    error(afterPrevious(), QStringLiteral("Missing ';' at the end of the statement."),
+          QStringLiteral("every ST statement ends with ';'"));
+    // Carry on with the next statement when it clearly starts here, so one missing ';' gives
+    // one message and the rest of the body is still checked.
+    if (isStatementListEnd() || isStatementKeyword() || isName())
+        m_recovering = false;
+}
+
+Stmt Parser::statement()
+{
+    Stmt s;
+    s.location = here();
+    if (acceptOp(u";"))
+        return s;
+    if (isWord("IF"))
+        return ifStatement();
+    if (isWord("CASE"))
+        return caseStatement();
+    if (isWord("FOR"))
+        return forStatement();
+    if (isWord("WHILE"))
+        return whileStatement();
+    if (isWord("REPEAT"))
+        return repeatStatement();
+    if (acceptWord("EXIT"))
+        s.kind = StmtKind::Exit;
+    else if (acceptWord("CONTINUE"))
+        s.kind = StmtKind::Continue;
+    else if (acceptWord("RETURN"))
+        s.kind = StmtKind::Return;
+    if (s.kind != StmtKind::Empty) {
+        endStatement();
+        return s;
+    }
+    if (!isName() && !(!atEnd() && tok().kind == TokenKind::DirectAddress)) {
+        unexpected(QStringLiteral("a statement"));
+        return s;
+    }
+    Expr target = postfix(primary());
+    if (acceptOp(u":=")) {
+        s.kind = StmtKind::Assign;
+        s.target = std::move(target);
+        s.value = expression();
+    } else if (target.kind == ExprKind::Call) {
+        s.kind = StmtKind::Call;
+        s.target = std::move(target);
+    } else if (isOp(u"=")) {
+        ++m_pos;
+        error(s.location, QStringLiteral("'=' compares two values; to assign a value write ':='."),
+              QStringLiteral("write %1 := ...;").arg(target.text));
+        s.kind = StmtKind::Assign;
+        s.target = std::move(target);
+        s.value = expression();
+        m_recovering = false;
+        endStatement();
+        return s;
+    } else {
+        if (!m_recovering)
+            error(here(), QStringLiteral("Expected ':=' or a call after '%1'.").arg(target.text));
+        return s;
+    }
+    endStatement();
+    return s;
+}
+
+void Parser::closeBlock(std::string_view endWord, const char *blockName, SourceLocation opened)
+{
+    if (acceptWord(endWord)) {
+        acceptOp(u";");
+        return;
+    }
+    const QString end = QString::fromLatin1(endWord.data(), static_cast<qsizetype>(endWord.size()));
+    // Reported where the block starts: that is where the student has to look.
+    error(opened, QStringLiteral("This %1 has no matching %2.").arg(QLatin1String(blockName), end),
+          QStringLiteral("add %1; after the last statement that belongs to it").arg(end));
+    m_recovering = false;
+}
+
+Stmt Parser::ifStatement()
+{
+    Stmt s;
+    s.kind = StmtKind::If;
+    s.location = here();
+    const SourceLocation opened = s.location;
+    do {
+        ConditionalBlock branch;
+        branch.location = here();
+        ++m_pos; // IF / ELSIF
+        branch.condition = expression();
+        if (!acceptWord("THEN")) {
+            if (isOp(u":="))
+                error(here(), QStringLiteral("A condition compares with '=', not ':='."));
+            else
+                unexpected(QStringLiteral("THEN"));
+            synchronize(true);
+        }
+        branch.body = statements();
+        s.branches.push_back(std::move(branch));
+    } while (isWord("ELSIF"));
+    if (acceptWord("ELSE")) {
+        s.hasElse = true;
+        s.body = statements();
+    }
+    closeBlock("END_IF", "IF", opened);
+    return s;
+}
+
+bool Parser::isCaseLabelStart() const
+{
+    if (atEnd())
+        return false;
+    const TokenKind k = tok().kind;
+    size_t next = 1;
+    if (isOp(u"-"))
+        next = 2;
+    const TokenKind literal = tok(next - 1).kind;
+    if (literal == TokenKind::IntegerLiteral || (next == 2 && tok(1).kind == TokenKind::IntegerLiteral))
+        return isOp(u":", next) || isOp(u",", next) || isOp(u"..", next);
+    if (k == TokenKind::Identifier) {
+        // Red:, and CODESYS's qualified Color.Red:
+        size_t after = 1;
+        while (isOp(u".", after) && !atEnd(after + 1) && tok(after + 1).kind == TokenKind::Identifier)
+            after += 2;
+        return isOp(u":", after) || isOp(u",", after) || isOp(u"..", after);
+    }
+    return false;
+}
+
+Stmt Parser::caseStatement()
+{
+    Stmt s;
+    s.kind = StmtKind::Case;
+    s.location = here();
+    ++m_pos;
+    s.target = expression();
+    expectWord("OF");
+    while (!atEnd() && !isWord("END_CASE") && !isWord("ELSE") && !isBlockWord()) {
+        if (!isCaseLabelStart()) {
+            const size_t before = m_pos;
+            unexpected(QStringLiteral("a case label such as 1:, 2, 3: or 10..20:"));
+            synchronize(true);
+            skipIfStuck(before);
+            continue;
+        }
+        CaseBranch branch;
+        do {
+            CaseLabel label;
+            label.low = expression();
+            if (acceptOp(u".."))
+                label.high = expression();
+            branch.labels.push_back(std::move(label));
+        } while (acceptOp(u","));
+        expectOp(u":", QStringLiteral("':' after the case label"));
+        while (!atEnd() && !isCaseLabelStart() && !isStatementListEnd()) {
+            const size_t before = m_pos;
+            branch.body.push_back(statement());
+            if (m_recovering)
+                synchronize(true);
+            if (m_pos == before)
+                ++m_pos;
+        }
+        s.cases.push_back(std::move(branch));
+    }
+    if (acceptWord("ELSE")) {
+        s.hasElse = true;
+        s.body = statements();
+    }
+    closeBlock("END_CASE", "CASE", s.location);
+    return s;
+}
+
+Stmt Parser::forStatement()
+{
+    Stmt s;
+    s.kind = StmtKind::For;
+    s.location = here();
+    ++m_pos;
+    if (!isName()) {
+        unexpected(QStringLiteral("the control variable of the FOR loop"));
+    } else {
+        s.target = primary();
+    }
+    expectOp(u":=", QStringLiteral("':=' and the start value"));
+    s.value = expression();
+    expectWord("TO");
+    s.to = expression();
+    if (acceptWord("BY"))
+        s.by = expression();
+    if (!acceptWord("DO"))
+        unexpected(QStringLiteral("DO"));
+    if (m_recovering)
+        synchronize(true);
+    s.body = statements();
+    closeBlock("END_FOR", "FOR", s.location);
+    return s;
+}
+
+Stmt Parser::whileStatement()
+{
+    Stmt s;
+    s.kind = StmtKind::While;
+    s.location = here();
+    ++m_pos;
+    s.value = expression();
+    if (!acceptWord("DO"))
+        unexpected(QStringLiteral("DO"));
+    if (m_recovering)
+        synchronize(true);
+    s.body = statements();
+    closeBlock("END_WHILE", "WHILE", s.location);
+    return s;
+}
+
+Stmt Parser::repeatStatement()
+{
+    Stmt s;
+    s.kind = StmtKind::Repeat;
+    s.location = here();
+    ++m_pos;
+    s.body = statements();
+    if (acceptWord("UNTIL")) {
+        s.value = expression();
+        acceptOp(u";"); // CODESYS allows "UNTIL x;"? no: but be lenient
+    } else {
+        error(s.location, QStringLiteral("This REPEAT has no UNTIL condition."));
+    }
+    closeBlock("END_REPEAT", "REPEAT", s.location);
+    return s;
+}
+
+// ============================================================================ expressions
+
+const BinaryOperator *Parser::binaryOperator() const
+{
+    if (atEnd())
+        return nullptr;
+    const Token &t = tok();
+    if (t.kind != TokenKind::Operator && t.kind != TokenKind::Keyword)
+        return nullptr;
+    for (const BinaryOperator &op : kBinaryOperators) {
+        if (equalsUpper(text(t), op.spelling))
+            return &op;
+    }
+    return nullptr;
+}
+
+// Precedence climbing over the table above; every binary operator is left-associative.
+Expr Parser::expression(int minPrecedence)
+{
+    Expr left = unary();
+    for (;;) {
+        const BinaryOperator *op = binaryOperator();
+        if (!op || op->precedence < minPrecedence)
+            return left;
+        Expr e;
+        e.kind = ExprKind::Binary;
+        e.location = here();
+        e.text = QString::fromLatin1(op->canonical);
+        ++m_pos;
+        Expr right = expression(op->precedence + 1);
+        e.operands.push_back(std::move(left));
+        e.operands.push_back(std::move(right));
+        left = std::move(e);
+    }
+}
+
+Expr Parser::unary()
+{
+    if (isOp(u"-") || isOp(u"+") || isWord("NOT")) {
+        Expr e;
+        e.kind = ExprKind::Unary;
+        e.location = here();
+        e.text = isWord("NOT") ? QStringLiteral("NOT") : text().toString();
+        ++m_pos;
+        // A minus directly before a number is part of the literal: -128 is a valid SINT.
+        if (e.text == QLatin1String("-") && !atEnd()
+            && (tok().kind == TokenKind::IntegerLiteral || tok().kind == TokenKind::RealLiteral)
+            && !text().contains(QLatin1Char('#')) && tok().offset == m_tokens[m_pos - 1].offset + 1) {
+            Expr literal = primary();
+            literal.text.prepend(QLatin1Char('-'));
+            literal.location = e.location;
+            return literal;
+        }
+        e.operands.push_back(unary());
+        return e;
+    }
+    return postfix(primary());
+}
+
+Expr Parser::primary()
+{
+    Expr e;
+    e.location = here();
+    if (atEnd()) {
+        unexpected(QStringLiteral("a value"));
+        return e;
+    }
+    const Token &t = tok();
+    switch (t.kind) {
+    case TokenKind::IntegerLiteral:
+    case TokenKind::RealLiteral:
+    case TokenKind::TimeLiteral:
+    case TokenKind::DateTimeLiteral:
+    case TokenKind::StringLiteral:
+    case TokenKind::WStringLiteral:
+        e.kind = ExprKind::Literal;
+        e.literal = t.kind;
+        e.text = takeName();
+        return e;
+    case TokenKind::DirectAddress:
+        e.kind = ExprKind::DirectAddress;
+        e.text = takeName().toUpper();
+        return e;
+    default:
+        break;
+    }
+    if (isWord("TRUE") || isWord("FALSE")) {
+        e.kind = ExprKind::Literal;
+        e.literal = TokenKind::Keyword;
+        e.text = takeName().toUpper();
+        return e;
+    }
+    if (acceptOp(u"(")) {
+        e = expression();
+        expectOp(u")", QStringLiteral("')'"));
+        return e;
+    }
+    // Type names as conversion functions (INT(x)), AND(a, b) and MOD(a, b) as functions, and names.
+    const bool operatorFunction = (isWord("AND") || isWord("OR") || isWord("XOR") || isWord("MOD")) && isOp(u"(", 1);
+    if (isName() || operatorFunction || (t.kind == TokenKind::TypeName && isOp(u"(", 1))) {
+        e.kind = ExprKind::Name;
+        e.text = takeName();
+        return e;
+    }
+    if (t.kind == TokenKind::Error)
+        unexpected(QString());
+    else
+        unexpected(QStringLiteral("a value, a variable or a function call"));
+    return e;
+}
+
+Expr Parser::postfix(Expr base)
+{
+    for (;;) {
+        if (base.kind == ExprKind::Error)
+            return base;
+        if (isOp(u".")) {
+            ++m_pos;
+            Expr e;
+            e.location = base.location;
+            if (!atEnd() && tok().kind == TokenKind::IntegerLiteral) {
+                e.kind = ExprKind::BitAccess;
+                e.text = takeName();
+            } else if (!atEnd() && isWordToken(tok())) {
+                e.kind = ExprKind::Member;
+                e.text = takeName();
+            } else {
+                unexpected(QStringLiteral("a member name or a bit number after '.'"));
+                return base;
+            }
+            e.operands.push_back(std::move(base));
+            base = std::move(e);
+        } else if (isOp(u"[")) {
+            ++m_pos;
+            Expr e;
+            e.kind = ExprKind::Index;
+            e.location = base.location;
+            e.operands.push_back(std::move(base));
+            do
+                e.operands.push_back(expression());
+            while (acceptOp(u","));
+            expectOp(u"]", QStringLiteral("']'"));
+            base = std::move(e);
+        } else if (isOp(u"(") && (base.kind == ExprKind::Name || base.kind == ExprKind::Member || base.kind == ExprKind::Index)) {
+            ++m_pos;
+            Expr e;
+            e.kind = ExprKind::Call;
+            e.location = base.location;
+            e.text = base.text;
+            e.operands.push_back(std::move(base));
+            e.callArgs = callArguments();
+            base = std::move(e);
+        } else {
+            return base;
+        }
+    }
+}
+
+// After '(' up to and including ')'.
+std::vector<CallArg> Parser::callArguments()
+{
+    std::vector<CallArg> args;
+    if (acceptOp(u")"))
+        return args;
+    do {
+        CallArg arg;
+        if (isWord("NOT") && isName(1) && isOp(u"=>", 2)) {
+            ++m_pos;
+            arg.negatedOutput = true;
+        }
+        if ((isName() || (!atEnd() && isWordToken(tok()))) && (isOp(u":=", 1) || isOp(u"=>", 1))) {
+            arg.name = takeName();
+            arg.isOutput = isOp(u"=>");
+            ++m_pos;
+            if (arg.isOutput && isOp(u")")) { // Q => (left open)
+                args.push_back(std::move(arg));
+                break;
+            }
+        }
+        arg.value = expression();
+        args.push_back(std::move(arg));
+    } while (acceptOp(u","));
+    expectOp(u")", QStringLiteral("')' or ',' in the argument list"));
+    return args;
+}
+
+// ============================================================================ IL
+
+std::vector<IlInstruction> Parser::ilInstructions(std::initializer_list<std::string_view> ends)
+{
+    std::vector<IlInstruction> list;
+    const auto atBodyEnd = [&] {
+        return isEnd(ends) || (ends.size() == 0 && atEnd())
+            || (!atEnd() && tok().kind == TokenKind::Keyword && text().startsWith(QLatin1String("END_"), Qt::CaseInsensitive))
+            || isWord("ACTION") || isPouStart();
+    };
+    while (!atEnd() && !atBodyEnd()) {
+        IlInstruction ins;
+        ins.location = here();
+        const size_t before = m_pos;
+        if (isName() && isOp(u":", 1)) {
+            const Token labelToken = tok();
+            ins.label = takeName();
+            ++m_pos;
+            // A label may stand on its own line.
+            if (atEnd() || atBodyEnd() || lineOf(tok()) != lineOf(labelToken)) {
+                list.push_back(std::move(ins));
+                continue;
+            }
+        }
+        const Token opToken = tok();
+        if (isOp(u")")) {
+            ins.op = QStringLiteral(")");
+            ++m_pos;
+        } else if (isWordToken(opToken)) {
+            ins.op = takeName().toUpper();
+        } else {
+            unexpected(QStringLiteral("an IL operator such as LD, ST, ADD or JMP"));
+            while (!atEnd() && lineOf(tok()) == lineOf(opToken))
+                ++m_pos;
+            m_recovering = false;
+            if (m_pos == before)
+                ++m_pos;
+            continue;
+        }
+        if (ilOperandFollows(opToken) && acceptOp(u"(")) {
+            ins.openParen = true;
+        }
+        if (ilOperandFollows(opToken)) {
+            Expr operand;
+            if (isOp(u"-") && !atEnd(1) && (tok(1).kind == TokenKind::IntegerLiteral || tok(1).kind == TokenKind::RealLiteral)) {
+                ++m_pos;
+                operand = primary();
+                operand.text.prepend(QLatin1Char('-'));
+            } else {
+                operand = postfix(primary());
+            }
+            if (operand.kind == ExprKind::Call) {
+                ins.callArgs = std::move(operand.callArgs);
+                Expr callee = std::move(operand.operands.front());
+                operand = std::move(callee);
+            }
+            ins.operand = std::move(operand);
+            // Further operands of a function call: SEL G, IN0, IN1 -> positional arguments.
+            while (ilOperandFollows(opToken) && acceptOp(u",")) {
+                CallArg extra;
+                extra.value = postfix(primary());
+                ins.callArgs.push_back(std::move(extra));
+            }
+        }
+        if (ilOperandFollows(opToken) && !m_recovering) {
+            error(here(), QStringLiteral("An IL instruction takes one operand; %1 is left over.").arg(describeCurrent()),
+                  QStringLiteral("put each instruction on its own line"));
+        }
+        while (!atEnd() && lineOf(tok()) == lineOf(opToken))
+            ++m_pos;
+        m_recovering = false;
+        list.push_back(std::move(ins));
+    }
+    return list;
+}
+
+} // namespace
+
+CompilationUnit parseUnit(QStringView text, Diagnostics &diagnostics)
+{
+    return Parser(text, diagnostics, QString(), 1).unit();
+}
+
+std::vector<Stmt> parseStBody(QStringView text, const QString &pou, Diagnostics &diagnostics, int firstLine)
+{
+    return Parser(text, diagnostics, pou, firstLine).stBody();
+}
+
+std::vector<IlInstruction> parseIlBody(QStringView text, const QString &pou, Diagnostics &diagnostics, int firstLine)
+{
+    return Parser(text, diagnostics, pou, firstLine).ilBody();
+}
+
+std::vector<VarSection> parseDeclarations(QStringView text, const QString &pou, Diagnostics &diagnostics,
+                                          int firstLine)
+{
+    return Parser(text, diagnostics, pou, firstLine).declarations();
+}
+
+} // namespace iec::interp

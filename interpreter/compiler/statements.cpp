@@ -1,0 +1,254 @@
+// ST statements.
+#include "interpreter/compiler/codegen.h"
+
+namespace iec::interp::detail {
+
+using namespace ast;
+
+Value Codegen::condition(const Expr &expr)
+{
+    const Value v = compileExpr(expr);
+    if (!v.valid())
+        return {};
+    if (v.type->kind != TypeKind::Elementary || v.type->elem != Elem::Bool) {
+        error(expr.location, QStringLiteral("A condition must be BOOL, not %1.").arg(typeName(v.type)),
+              expr.kind == ExprKind::Binary ? QString() : QStringLiteral("compare it, e.g. x <> 0"));
+        return {};
+    }
+    return v;
+}
+
+void Codegen::compileStatements(const std::vector<Stmt> &list)
+{
+    for (const Stmt &s : list)
+        compileStatement(s);
+}
+
+void Codegen::compileStatement(const Stmt &s)
+{
+    markLine(s.location);
+    // Temporaries live for one statement; nested statements get their own above.
+    const std::uint32_t tempMark = m_tempTop;
+    switch (s.kind) {
+    case StmtKind::Empty:
+        break;
+    case StmtKind::Assign: {
+        if (s.target.kind == ExprKind::Index) {
+            // An element: the value first, so that the element's address and the store can
+            // become one instruction.
+            const Value value = compileExpr(s.value);
+            const Place target = resolvePlace(s.target);
+            if (target.kind != Place::Kind::Invalid)
+                store(target, value, s.location);
+            break;
+        }
+        const Place target = resolvePlace(s.target);
+        if (target.kind == Place::Kind::Invalid)
+            break;
+        // The last operation of the expression may write straight into the variable.
+        const Place *destination = target.kind == Place::Kind::Direct && !target.readOnly ? &target : nullptr;
+        const Value value = compileExpr(s.value, destination);
+        store(target, value, s.location);
+        break;
+    }
+    case StmtKind::Call:
+        compileCall(s.target, true);
+        break;
+    case StmtKind::If: {
+        std::vector<std::uint32_t> toEnd;
+        for (const ConditionalBlock &branch : s.branches) {
+            markLine(branch.location);
+            const Value c = condition(branch.condition);
+            std::optional<std::uint32_t> skip;
+            if (c.kind == Value::Kind::Operand)
+                skip = branchIf(c, false);
+            else if (c.kind == Value::Kind::Constant && c.constant.i == 0)
+                skip = instr(op::Jmp); // IF FALSE: still compiled, never run
+            m_tempTop = tempMark;
+            compileStatements(branch.body);
+            if (&branch != &s.branches.back() || s.hasElse)
+                toEnd.push_back(instr(op::Jmp));
+            if (skip)
+                patchJump(*skip, here());
+        }
+        if (s.hasElse)
+            compileStatements(s.body);
+        for (const std::uint32_t j : toEnd)
+            patchJump(j, here());
+        break;
+    }
+    case StmtKind::Case: {
+        Value selector = compileExpr(s.target);
+        if (!selector.valid())
+            break;
+        if (selector.type->kind != TypeKind::Enum && !(selector.type->kind == TypeKind::Elementary && (info(selector.type->elem).isInt || info(selector.type->elem).isBit))) {
+            error(s.target.location, QStringLiteral("CASE needs an integer or an enumeration, not %1.").arg(typeName(selector.type)));
+            break;
+        }
+        std::vector<std::uint32_t> toEnd;
+        for (const CaseBranch &branch : s.cases) {
+            std::vector<std::uint32_t> toBody;
+            for (const CaseLabel &label : branch.labels) {
+                const Value low = compileExpr(label.low);
+                if (!label.high) {
+                    const Value eq = binary(QStringLiteral("="), selector, low, label.low.location);
+                    if (eq.kind == Value::Kind::Operand)
+                        toBody.push_back(branchIf(eq, true));
+                    continue;
+                }
+                const Value high = compileExpr(*label.high);
+                const Value ge = binary(QStringLiteral(">="), selector, low, label.low.location);
+                const Value le = binary(QStringLiteral("<="), selector, high, label.high->location);
+                const Value both = binary(QStringLiteral("AND"), ge, le, label.low.location);
+                if (both.kind == Value::Kind::Operand)
+                    toBody.push_back(instr(op::Jnz, 0, both.operand));
+            }
+            const std::uint32_t skip = instr(op::Jmp);
+            for (const std::uint32_t j : toBody)
+                patchJump(j, here());
+            compileStatements(branch.body);
+            toEnd.push_back(instr(op::Jmp));
+            patchJump(skip, here());
+        }
+        if (s.hasElse)
+            compileStatements(s.body);
+        for (const std::uint32_t j : toEnd)
+            patchJump(j, here());
+        break;
+    }
+    case StmtKind::For: {
+        const Place counter = resolvePlace(s.target);
+        if (counter.kind == Place::Kind::Invalid)
+            break;
+        if (counter.kind != Place::Kind::Direct || counter.type->kind != TypeKind::Elementary || !info(counter.type->elem).isInt) {
+            error(s.target.location, QStringLiteral("The FOR loop needs an integer variable as its counter."));
+            break;
+        }
+        store(counter, compileExpr(s.value), s.value.location);
+        const Type *type = counter.type;
+        // The end and the step are evaluated once, before the loop.
+        Value end = coerce(compileExpr(*s.to), type, s.to->location, QStringLiteral("(the end value)"));
+        Value step = s.by ? coerce(compileExpr(*s.by), type, s.by->location, QStringLiteral("(the step)")) : Value{};
+        if (!end.valid() || (s.by && !step.valid()))
+            break;
+        if (end.kind == Value::Kind::Operand) {
+            const std::uint32_t copy = temp(type);
+            emitMove(copy, end.operand, type);
+            end = operandValue(copy, type);
+        }
+        if (!s.by) {
+            ConstValue one;
+            one.kind = ConstValue::Kind::Int;
+            one.i = 1;
+            step = constantValue(type, one);
+        } else if (step.kind == Value::Kind::Operand) {
+            const std::uint32_t copy = temp(type);
+            emitMove(copy, step.operand, type);
+            step = operandValue(copy, type);
+        }
+        if (step.kind == Value::Kind::Constant && step.constant.i == 0) {
+            error(s.by->location, QStringLiteral("A FOR loop with step 0 never ends."));
+            break;
+        }
+        if (step.kind == Value::Kind::Constant) {
+            // The direction is known. A guard skips the loop when it does not start; each round
+            // then ends in one instruction that steps the counter and jumps back while it holds.
+            const bool up = step.constant.i > 0 && !step.constant.bigUnsigned;
+            const std::uint32_t guard = branchIf(binary(up ? QStringLiteral(">") : QStringLiteral("<"), read(counter), end, s.location), true);
+            const std::uint32_t top = here();
+            markTarget(top);
+            m_loops.emplace_back();
+            compileStatements(s.body);
+            const std::uint32_t continueTarget = here();
+            markLine(s.location);
+            instr(typedOp(up ? op::IncBrLe : op::IncBrGe, vtOf(*type)), counter.operand, materialize(step), materialize(end), top);
+            patchJump(guard, here());
+            for (const std::uint32_t j : m_loops.back().exits)
+                patchJump(j, here());
+            for (const std::uint32_t j : m_loops.back().continues)
+                patchJump(j, continueTarget);
+            m_loops.pop_back();
+            break;
+        }
+        // A step known only at run time: rotated loop, the test after the body decides by its sign.
+        const std::uint32_t toTest = instr(op::Jmp);
+        const std::uint32_t top = here();
+        m_loops.emplace_back();
+        compileStatements(s.body);
+        const std::uint32_t continueTarget = here();
+        markLine(s.location);
+        binary(QStringLiteral("+"), read(counter), step, s.location, &counter);
+        patchJump(toTest, here());
+        const Value counterValue = read(counter);
+        ConstValue zero;
+        zero.kind = ConstValue::Kind::Int;
+        const Value up = binary(QStringLiteral(">="), step, constantValue(type, zero), s.location);
+        const Value above = binary(QStringLiteral(">"), counterValue, end, s.location);
+        const Value below = binary(QStringLiteral("<"), counterValue, end, s.location);
+        const Value doneUp = binary(QStringLiteral("AND"), up, above, s.location);
+        const Value doneDown = binary(QStringLiteral("AND"), unary(QStringLiteral("NOT"), up, s.location), below, s.location);
+        branchIf(binary(QStringLiteral("OR"), doneUp, doneDown, s.location), false, top);
+        for (const std::uint32_t j : m_loops.back().exits)
+            patchJump(j, here());
+        for (const std::uint32_t j : m_loops.back().continues)
+            patchJump(j, continueTarget);
+        m_loops.pop_back();
+        break;
+    }
+    case StmtKind::While: {
+        // Rotated: jump to the test, the body, then the test jumps back while it holds.
+        const std::uint32_t toTest = instr(op::Jmp);
+        const std::uint32_t top = here();
+        m_loops.emplace_back();
+        compileStatements(s.body);
+        const std::uint32_t test = here();
+        patchJump(toTest, test);
+        markLine(s.location); // an endless loop is reported at its WHILE
+        m_tempTop = tempMark;
+        const Value c = condition(s.value);
+        if (c.kind == Value::Kind::Operand)
+            branchIf(c, true, top);
+        else if (c.kind == Value::Kind::Constant && c.constant.i != 0)
+            instr(op::Jmp, top);
+        for (const std::uint32_t j : m_loops.back().exits)
+            patchJump(j, here());
+        for (const std::uint32_t j : m_loops.back().continues)
+            patchJump(j, test);
+        m_loops.pop_back();
+        break;
+    }
+    case StmtKind::Repeat: {
+        const std::uint32_t top = here();
+        m_loops.emplace_back();
+        compileStatements(s.body);
+        const std::uint32_t continueTarget = here();
+        markLine(s.value.location);
+        m_tempTop = tempMark;
+        const Value c = condition(s.value);
+        if (c.kind == Value::Kind::Operand)
+            branchIf(c, false, top);
+        else if (c.kind == Value::Kind::Constant && c.constant.i == 0)
+            instr(op::Jmp, top);
+        for (const std::uint32_t j : m_loops.back().exits)
+            patchJump(j, here());
+        for (const std::uint32_t j : m_loops.back().continues)
+            patchJump(j, continueTarget);
+        m_loops.pop_back();
+        break;
+    }
+    case StmtKind::Exit:
+    case StmtKind::Continue:
+        if (m_loops.empty()) {
+            error(s.location, QStringLiteral("%1 is only allowed inside a FOR, WHILE or REPEAT loop.").arg(s.kind == StmtKind::Exit ? QStringLiteral("EXIT") : QStringLiteral("CONTINUE")));
+            break;
+        }
+        (s.kind == StmtKind::Exit ? m_loops.back().exits : m_loops.back().continues).push_back(instr(op::Jmp));
+        break;
+    case StmtKind::Return:
+        instr(op::Ret);
+        break;
+    }
+    m_tempTop = tempMark;
+}
+
+} // namespace iec::interp::detail

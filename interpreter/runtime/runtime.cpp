@@ -1,0 +1,167 @@
+#include "interpreter/runtime/runtime.h"
+
+#include <cstring>
+
+namespace iec::interp {
+
+QString RuntimeFault::toString() const
+{
+    return QStringLiteral("%1:%2: %3 (cycle %4)").arg(pou).arg(line).arg(message).arg(cycle);
+}
+
+Runtime::Runtime(std::shared_ptr<const Module> module, std::int64_t cycleNs)
+    : m_module(std::move(module))
+    , m_vm(*m_module)
+    , m_cycleNs(cycleNs)
+{
+    for (int area = 0; area < 3; ++area)
+        m_images[area].assign(m_module->imageSizes[area] + 1, 0);
+    coldRestart();
+}
+
+void Runtime::coldRestart()
+{
+    m_vm.memory() = m_module->initialImage;
+    m_timeNs = 0;
+    m_cycle = 0;
+    m_fault.reset();
+    m_nextDue.assign(m_module->tasks.size(), 0);
+    m_singleBefore.assign(m_module->tasks.size(), false);
+}
+
+void Runtime::warmRestart()
+{
+    std::vector<std::uint8_t> kept = m_vm.memory();
+    coldRestart();
+    for (const RetainRange &r : m_module->retain)
+        std::memcpy(m_vm.memory().data() + r.offset, kept.data() + r.offset, r.size);
+}
+
+std::vector<std::uint8_t> &Runtime::image(char area)
+{
+    return m_images[area == 'I' ? 0 : area == 'Q' ? 1 : 2];
+}
+
+void Runtime::copyInputs()
+{
+    std::uint8_t *memory = m_vm.memory().data();
+    for (const LocatedVar &l : m_module->located) {
+        if (l.area != 'I')
+            continue;
+        const std::uint8_t *from = image('I').data() + l.byte;
+        if (l.bit >= 0)
+            memory[l.offset] = (*from >> l.bit) & 1u;
+        else
+            std::memcpy(memory + l.offset, from, l.size);
+    }
+}
+
+void Runtime::copyOutputs()
+{
+    const std::uint8_t *memory = m_vm.memory().data();
+    for (const LocatedVar &l : m_module->located) {
+        if (l.area == 'I')
+            continue;
+        std::uint8_t *to = image(l.area).data() + l.byte;
+        if (l.bit >= 0)
+            *to = static_cast<std::uint8_t>(memory[l.offset] ? (*to | (1u << l.bit)) : (*to & ~(1u << l.bit)));
+        else
+            std::memcpy(to, memory + l.offset, l.size);
+    }
+}
+
+void Runtime::applyForces()
+{
+    for (const Force &f : m_forces)
+        writeLiteral(f.ref, f.literal, m_vm.memory().data(), image(f.ref.imageArea ? f.ref.imageArea : 'M').data());
+}
+
+bool Runtime::runCycle()
+{
+    if (m_fault)
+        return false;
+    ++m_cycle;
+    applyForces();
+    copyInputs();
+    applyForces();
+    m_vm.clockNs = m_timeNs;
+    for (size_t t = 0; t < m_module->tasks.size(); ++t) {
+        const TaskInfo &task = m_module->tasks[t];
+        bool due = true;
+        if (task.singleOffset >= 0) {
+            const bool now = m_vm.memory()[size_t(task.singleOffset)] != 0;
+            due = now && !m_singleBefore[t];
+            m_singleBefore[t] = now;
+        } else if (task.intervalNs > 0) {
+            due = m_timeNs >= m_nextDue[t];
+            if (due)
+                m_nextDue[t] += task.intervalNs * std::max<std::int64_t>(1, (m_timeNs - m_nextDue[t]) / task.intervalNs + 1);
+        }
+        if (!due)
+            continue;
+        const FaultKind kind = m_vm.run(task.entry);
+        if (kind != FaultKind::None) {
+            const LineEntry line = m_module->lineAt(m_vm.faultPc());
+            RuntimeFault fault;
+            fault.kind = kind;
+            fault.pou = line.pou >= 0 ? m_module->pous[size_t(line.pou)].name : QString();
+            fault.line = line.line;
+            fault.cycle = m_cycle;
+            fault.message = faultMessage(kind);
+            m_fault = fault;
+            return false;
+        }
+    }
+    applyForces();
+    copyOutputs();
+    applyForces(); // a forced %Q address wins over the variable mapped to it
+    m_timeNs += m_cycleNs;
+    return true;
+}
+
+bool Runtime::runCycles(int count)
+{
+    for (int i = 0; i < count; ++i) {
+        if (!runCycle())
+            return false;
+    }
+    return true;
+}
+
+std::optional<QString> Runtime::read(const QString &name) const
+{
+    const auto ref = find(name);
+    if (!ref)
+        return std::nullopt;
+    return read(*ref);
+}
+
+QString Runtime::read(const VariableRef &ref) const
+{
+    const int area = ref.imageArea == 'I' ? 0 : ref.imageArea == 'Q' ? 1 : 2;
+    return formatValue(ref, m_vm.memory().data(), m_images[area].data());
+}
+
+std::optional<QString> Runtime::write(const QString &name, const QString &literal)
+{
+    const auto ref = find(name);
+    if (!ref)
+        return QStringLiteral("There is no variable called %1.").arg(name);
+    return writeLiteral(*ref, literal, m_vm.memory().data(), image(ref->imageArea ? ref->imageArea : 'M').data());
+}
+
+std::optional<QString> Runtime::force(const QString &name, const QString &literal)
+{
+    if (auto problem = write(name, literal))
+        return problem;
+    unforce(name);
+    m_forces.push_back({name, *find(name), literal});
+    return std::nullopt;
+}
+
+void Runtime::unforce(const QString &name)
+{
+    std::erase_if(m_forces, [&](const Force &f) { return f.name.compare(name, Qt::CaseInsensitive) == 0; });
+}
+
+} // namespace iec::interp

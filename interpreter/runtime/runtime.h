@@ -1,0 +1,82 @@
+#pragma once
+
+#include "interpreter/runtime/symbols.h"
+#include "interpreter/vm/bytecode.h"
+#include "interpreter/vm/vm.h"
+
+#include <QString>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace iec::interp {
+
+struct RuntimeFault {
+    FaultKind kind = FaultKind::None;
+    QString pou;
+    int line = 0;
+    int cycle = 0;
+    QString message;
+    QString toString() const; // "Main:12: Integer division by zero. (cycle 3)"
+};
+
+// Runs a compiled module scan by scan on a virtual clock:
+//   inputs image -> variables, tasks that are due (in priority order), variables -> outputs image.
+// Cycle n runs at time (n - 1) * cycle time. A fault stops the program; the host goes on.
+class Runtime
+{
+public:
+    explicit Runtime(std::shared_ptr<const Module> module, std::int64_t cycleNs = 10'000'000);
+
+    // Cold restart: every variable back to its initial value, the clock to zero.
+    void coldRestart();
+    // Warm restart: like cold, but RETAIN variables keep their values.
+    void warmRestart();
+
+    // Runs one cycle; false (and nothing happens) once a fault stopped the program.
+    bool runCycle();
+    bool runCycles(int count);
+
+    int cycle() const { return m_cycle; }              // cycles run so far
+    std::int64_t timeNs() const { return m_timeNs; }   // time of the next cycle
+    std::int64_t cycleNs() const { return m_cycleNs; }
+    const std::optional<RuntimeFault> &fault() const { return m_fault; }
+
+    // Variables by name: Main.Counter, Main.Timer1.ET, Main.A[2], GlobalVar, %QX0.1.
+    std::optional<VariableRef> find(const QString &name) const { return resolveSymbol(*m_module, name); }
+    std::optional<QString> read(const QString &name) const; // nullopt: no such variable
+    QString read(const VariableRef &ref) const;
+    // Writes a literal; returns an explanation on failure.
+    std::optional<QString> write(const QString &name, const QString &literal);
+    // A forced variable keeps its value: written before the inputs are read and after the tasks ran.
+    std::optional<QString> force(const QString &name, const QString &literal);
+    void unforce(const QString &name);
+
+    std::vector<std::uint8_t> &image(char area); // 'I', 'Q', 'M'
+    Vm &vm() { return m_vm; }
+    const Module &module() const { return *m_module; }
+
+private:
+    void copyInputs();
+    void copyOutputs();
+    void applyForces();
+
+    std::shared_ptr<const Module> m_module;
+    Vm m_vm;
+    std::int64_t m_cycleNs;
+    std::int64_t m_timeNs = 0;
+    int m_cycle = 0;
+    std::vector<std::int64_t> m_nextDue;
+    std::vector<bool> m_singleBefore;
+    std::vector<std::uint8_t> m_images[3];
+    struct Force {
+        QString name;
+        VariableRef ref;
+        QString literal;
+    };
+    std::vector<Force> m_forces;
+    std::optional<RuntimeFault> m_fault;
+};
+
+} // namespace iec::interp

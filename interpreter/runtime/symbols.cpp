@@ -1,0 +1,281 @@
+#include "interpreter/runtime/symbols.h"
+
+#include "interpreter/compiler/lexer.h"
+#include "interpreter/compiler/literals.h"
+#include "interpreter/runtime/valueformat.h"
+
+#include <QRegularExpression>
+
+#include <cmath>
+#include <cstring>
+
+namespace iec::interp {
+
+namespace {
+
+template<typename T>
+T load(const std::uint8_t *p)
+{
+    T v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+
+std::optional<VariableRef> resolveAddress(const Module &module, const QString &name)
+{
+    static const QRegularExpression pattern(QStringLiteral("^%([IQM])([XBWDL]?)(\\d+)(?:\\.(\\d+))?$"),
+                                            QRegularExpression::CaseInsensitiveOption);
+    const auto m = pattern.match(name);
+    if (!m.hasMatch())
+        return std::nullopt;
+    VariableRef ref;
+    ref.imageArea = m.captured(1).toUpper()[0].toLatin1();
+    const QChar size = m.captured(2).isEmpty() ? QLatin1Char('X') : m.captured(2).toUpper()[0];
+    const std::uint32_t index = m.captured(3).toUInt();
+    static const std::pair<char, Elem> sizes[] = {{'X', Elem::Bool}, {'B', Elem::Byte}, {'W', Elem::Word}, {'D', Elem::DWord}, {'L', Elem::LWord}};
+    for (const auto &[letter, e] : sizes) {
+        if (size == QLatin1Char(letter))
+            ref.type = module.types->elementary(e);
+    }
+    if (size == QLatin1Char('X')) {
+        ref.offset = index;
+        ref.bit = m.captured(4).isEmpty() ? 0 : m.captured(4).toInt();
+        if (ref.bit > 7)
+            return std::nullopt;
+    } else {
+        ref.offset = index * ref.type->size;
+    }
+    const int area = ref.imageArea == 'I' ? 0 : ref.imageArea == 'Q' ? 1 : 2;
+    if (ref.offset + (ref.bit >= 0 ? 1 : ref.type->size) > module.imageSizes[area])
+        return std::nullopt;
+    return ref;
+}
+
+QString formatElementary(const Type *type, const std::uint8_t *p)
+{
+    if (type->kind == TypeKind::Enum) {
+        std::int64_t v = 0;
+        std::memcpy(&v, p, type->size);
+        if (type->size == 2)
+            v = load<std::int16_t>(p);
+        for (size_t i = 0; i < type->enumValues.size(); ++i) {
+            if (type->enumValues[i] == v)
+                return type->name + QLatin1Char('#') + type->enumNames[qsizetype(i)];
+        }
+        return QString::number(v);
+    }
+    switch (type->elem) {
+    case Elem::Bool: return formatBool(*p != 0);
+    case Elem::SInt: return formatInteger(load<std::int8_t>(p));
+    case Elem::Int: return formatInteger(load<std::int16_t>(p));
+    case Elem::DInt: return formatInteger(load<std::int32_t>(p));
+    case Elem::LInt: return formatInteger(load<std::int64_t>(p));
+    case Elem::USInt: case Elem::Byte: case Elem::Char: return formatUnsigned(load<std::uint8_t>(p));
+    case Elem::UInt: case Elem::Word: case Elem::WChar: return formatUnsigned(load<std::uint16_t>(p));
+    case Elem::UDInt: case Elem::DWord: return formatUnsigned(load<std::uint32_t>(p));
+    case Elem::ULInt: case Elem::LWord: return formatUnsigned(load<std::uint64_t>(p));
+    case Elem::Real: return formatReal(load<float>(p));
+    case Elem::LReal: return formatReal(load<double>(p));
+    case Elem::Time: return formatDuration(load<std::int64_t>(p));
+    case Elem::LTime: return QStringLiteral("L") + formatDuration(load<std::int64_t>(p));
+    case Elem::Date: case Elem::LDate: return formatDate(load<std::int64_t>(p));
+    case Elem::Tod: case Elem::LTod: return formatTimeOfDay(load<std::int64_t>(p));
+    case Elem::Dt: case Elem::Ldt: return formatDateAndTime(load<std::int64_t>(p));
+    case Elem::Count: break;
+    }
+    return {};
+}
+
+QString formatAt(const Type *type, const std::uint8_t *p)
+{
+    switch (type->kind) {
+    case TypeKind::Elementary:
+    case TypeKind::Enum:
+        return formatElementary(type, p);
+    case TypeKind::String: {
+        const std::uint16_t length = load<std::uint16_t>(p + 2);
+        QString text;
+        for (int i = 0; i < length; ++i)
+            text += QChar(type->wide ? load<char16_t>(p + 4 + 2 * i) : char16_t(p[4 + i]));
+        return type->wide ? formatWString(text) : formatString(text);
+    }
+    case TypeKind::Array: {
+        QStringList items;
+        const std::uint32_t count = type->element->size ? type->size / type->element->size : 0;
+        for (std::uint32_t i = 0; i < count; ++i)
+            items << formatAt(type->element, p + i * type->element->size);
+        return QLatin1Char('[') + items.join(QStringLiteral(", ")) + QLatin1Char(']');
+    }
+    case TypeKind::Struct:
+    case TypeKind::FunctionBlock: {
+        QStringList items;
+        for (const Member &m : type->members) {
+            if (!m.byReference && m.kind != ast::VarKind::Temp)
+                items << m.name + QStringLiteral(" := ") + formatAt(m.type, p + m.offset);
+        }
+        return QLatin1Char('(') + items.join(QStringLiteral(", ")) + QLatin1Char(')');
+    }
+    }
+    return {};
+}
+
+template<typename T>
+void put(std::uint8_t *p, T v)
+{
+    std::memcpy(p, &v, sizeof v);
+}
+
+} // namespace
+
+std::optional<VariableRef> resolveSymbol(const Module &module, const QString &name)
+{
+    if (name.startsWith(QLatin1Char('%')))
+        return resolveAddress(module, name);
+    // Split Main.Values[3].x into parts: names, [indices] and bit numbers.
+    static const QRegularExpression part(QStringLiteral("([A-Za-z_][A-Za-z0-9_]*)|\\[([^\\]]*)\\]|\\.(\\d+)|\\."));
+    VariableRef ref;
+    bool first = true;
+    qsizetype pos = 0;
+    auto it = part.globalMatch(name);
+    while (it.hasNext()) {
+        const auto m = it.next();
+        if (m.capturedStart() != pos)
+            return std::nullopt;
+        pos = m.capturedEnd();
+        if (!m.captured(1).isEmpty()) {
+            const QString n = m.captured(1);
+            if (first) {
+                first = false;
+                bool found = false;
+                for (const Symbol &s : module.symbols) {
+                    if (s.name.compare(n, Qt::CaseInsensitive) == 0) {
+                        ref.type = s.type;
+                        ref.offset = s.offset;
+                        found = true;
+                    }
+                }
+                if (!found)
+                    return std::nullopt;
+                continue;
+            }
+            if (!ref.type || ref.bit >= 0 || (ref.type->kind != TypeKind::Struct && ref.type->kind != TypeKind::FunctionBlock))
+                return std::nullopt;
+            const Member *member = ref.type->member(n);
+            if (!member || member->byReference)
+                return std::nullopt;
+            ref.offset += member->offset;
+            ref.type = member->type;
+        } else if (m.capturedLength(2) > 0 || m.captured(0).startsWith(QLatin1Char('['))) {
+            if (!ref.type || ref.type->kind != TypeKind::Array)
+                return std::nullopt;
+            const QStringList indices = m.captured(2).split(QLatin1Char(','));
+            if (indices.size() != qsizetype(ref.type->dims.size()))
+                return std::nullopt;
+            std::uint32_t stride = ref.type->element->size, offset = 0;
+            for (qsizetype d = indices.size(); d-- > 0;) {
+                bool ok = false;
+                const std::int64_t i = indices[d].trimmed().toLongLong(&ok);
+                const Dimension &dim = ref.type->dims[size_t(d)];
+                if (!ok || i < dim.low || i > dim.high)
+                    return std::nullopt;
+                offset += static_cast<std::uint32_t>(i - dim.low) * stride;
+                stride *= static_cast<std::uint32_t>(dim.count());
+            }
+            ref.offset += offset;
+            ref.type = ref.type->element;
+        } else if (!m.captured(3).isEmpty()) {
+            const int bit = m.captured(3).toInt();
+            if (!ref.type || ref.type->kind != TypeKind::Elementary || ref.type->elem == Elem::Bool || bit >= int(ref.type->size * 8))
+                return std::nullopt;
+            ref.offset += static_cast<std::uint32_t>(bit / 8);
+            ref.bit = bit % 8;
+            ref.type = module.types->elementary(Elem::Bool);
+        }
+    }
+    if (first || pos != name.size())
+        return std::nullopt;
+    return ref;
+}
+
+QString formatValue(const VariableRef &ref, const std::uint8_t *memory, const std::uint8_t *image)
+{
+    const std::uint8_t *p = (ref.imageArea ? image : memory) + ref.offset;
+    if (ref.bit >= 0)
+        return formatBool(((*p >> ref.bit) & 1) != 0);
+    return formatAt(ref.type, p);
+}
+
+std::optional<QString> writeLiteral(const VariableRef &ref, const QString &input, std::uint8_t *memory, std::uint8_t *image)
+{
+    std::uint8_t *p = (ref.imageArea ? image : memory) + ref.offset;
+    const Type *type = ref.type;
+    const QString text = input.trimmed();
+    const auto bad = [&] { return QStringLiteral("'%1' is not a valid %2.").arg(text, typeName(type)); };
+    if (type->kind == TypeKind::String) {
+        QString value = text;
+        if (text.startsWith(QLatin1Char('\'')) || text.startsWith(QLatin1Char('"'))) {
+            const auto decoded = decodeString(text);
+            if (!decoded)
+                return bad();
+            value = *decoded;
+        }
+        if (value.size() > qsizetype(type->capacity))
+            return QStringLiteral("The text is longer than the %1 characters of the string.").arg(type->capacity);
+        put<std::uint16_t>(p + 2, static_cast<std::uint16_t>(value.size()));
+        for (qsizetype i = 0; i < value.size(); ++i) {
+            if (type->wide)
+                put<char16_t>(p + 4 + 2 * i, value[i].unicode());
+            else
+                p[4 + i] = static_cast<std::uint8_t>(value[i].unicode());
+        }
+        return std::nullopt;
+    }
+    if (!type->isElementary())
+        return QStringLiteral("Only elementary variables and strings can be written.");
+    const LiteralParts parts = splitTypedLiteral(text);
+    const Elem e = type->elem;
+    if (e == Elem::Bool) {
+        const QString upper = parts.body.toString().toUpper();
+        bool value = false;
+        if (upper == QLatin1String("TRUE") || upper == QLatin1String("1"))
+            value = true;
+        else if (upper != QLatin1String("FALSE") && upper != QLatin1String("0"))
+            return bad();
+        if (ref.bit >= 0)
+            *p = static_cast<std::uint8_t>(value ? (*p | (1u << ref.bit)) : (*p & ~(1u << ref.bit)));
+        else
+            *p = value ? 1 : 0;
+        return std::nullopt;
+    }
+    if (info(e).isTimeLike) {
+        std::optional<std::int64_t> ns;
+        switch (e) {
+        case Elem::Date: case Elem::LDate: ns = decodeDate(parts.body); break;
+        case Elem::Tod: case Elem::LTod: ns = decodeTimeOfDay(parts.body); break;
+        case Elem::Dt: case Elem::Ldt: ns = decodeDateAndTime(parts.body); break;
+        default: ns = decodeDuration(parts.body); break;
+        }
+        if (!ns)
+            return bad();
+        put<std::int64_t>(p, *ns);
+        return std::nullopt;
+    }
+    if (info(e).isReal) {
+        const auto value = decodeReal(parts.body);
+        if (!value)
+            return bad();
+        if (e == Elem::Real)
+            put<float>(p, static_cast<float>(*value));
+        else
+            put<double>(p, *value);
+        return std::nullopt;
+    }
+    const auto value = decodeInteger(parts.body);
+    if (!value)
+        return bad();
+    const std::uint64_t bits = value->negative ? 0 - value->magnitude : value->magnitude;
+    std::memcpy(p, &bits, type->size); // little endian: the low bytes
+    return std::nullopt;
+}
+
+} // namespace iec::interp

@@ -1,0 +1,858 @@
+#include "interpreter/vm/vm.h"
+
+#include "interpreter/vm/nativeblocks.h"
+
+#include "interpreter/compiler/literals.h"
+#include "interpreter/runtime/valueformat.h"
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <limits>
+#include <type_traits>
+
+namespace iec::interp {
+
+QString faultMessage(FaultKind kind)
+{
+    switch (kind) {
+    case FaultKind::None: return {};
+    case FaultKind::DivisionByZero: return QStringLiteral("Integer division by zero.");
+    case FaultKind::IndexOutOfRange: return QStringLiteral("Array index out of range.");
+    case FaultKind::StringOverflow: return QStringLiteral("The text does not fit into the string variable.");
+    case FaultKind::BudgetExceeded:
+        return QStringLiteral("The program ran too long in one cycle; is there an endless loop?");
+    case FaultKind::CallDepthExceeded: return QStringLiteral("Calls are nested too deeply.");
+    case FaultKind::InvalidProgram: return QStringLiteral("The program cannot run (it did not compile).");
+    }
+    return {};
+}
+
+LineEntry Module::lineAt(std::uint32_t pc) const
+{
+    LineEntry found;
+    // Entries are in pc order; the last one at or before pc is the line of pc.
+    size_t lo = 0, hi = lines.size();
+    while (lo < hi) {
+        const size_t mid = (lo + hi) / 2;
+        if (lines[mid].pc <= pc)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    if (lo > 0)
+        found = lines[lo - 1];
+    return found;
+}
+
+namespace {
+
+std::optional<std::int64_t> parseLiteralValue(const QString &text, TextFormat format);
+
+template<typename T>
+T load(const std::uint8_t *p)
+{
+    T v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+
+template<typename T>
+void store(std::uint8_t *p, T v)
+{
+    std::memcpy(p, &v, sizeof v);
+}
+
+// Integer arithmetic wraps around like the IEC type: computed in 64-bit unsigned and cut to T.
+template<typename T>
+T wrapAdd(T a, T b)
+{
+    if constexpr (std::is_integral_v<T>)
+        return static_cast<T>(static_cast<std::uint64_t>(a) + static_cast<std::uint64_t>(b));
+    else
+        return a + b;
+}
+template<typename T>
+T wrapSub(T a, T b)
+{
+    if constexpr (std::is_integral_v<T>)
+        return static_cast<T>(static_cast<std::uint64_t>(a) - static_cast<std::uint64_t>(b));
+    else
+        return a - b;
+}
+template<typename T>
+T wrapMul(T a, T b)
+{
+    if constexpr (std::is_integral_v<T>)
+        return static_cast<T>(static_cast<std::uint64_t>(a) * static_cast<std::uint64_t>(b));
+    else
+        return a * b;
+}
+template<typename T>
+T negate(T a)
+{
+    if constexpr (std::is_integral_v<T>)
+        return static_cast<T>(0 - static_cast<std::uint64_t>(a));
+    else
+        return -a;
+}
+
+
+// Division and MOD: false when dividing an integer by zero. INT_MIN / -1 wraps.
+template<typename T>
+bool divide(T a, T b, T &out)
+{
+    if constexpr (std::is_integral_v<T>) {
+        if (b == 0)
+            return false;
+        if constexpr (std::is_signed_v<T>) {
+            if (b == T(-1)) {
+                out = negate<T>(a);
+                return true;
+            }
+        }
+    }
+    out = static_cast<T>(a / b);
+    return true;
+}
+template<typename T>
+bool modulo(T a, T b, T &out)
+{
+    if constexpr (std::is_integral_v<T>) {
+        if (b == 0)
+            return false;
+        if constexpr (std::is_signed_v<T>) {
+            if (b == T(-1)) {
+                out = 0;
+                return true;
+            }
+        }
+        out = static_cast<T>(a % b);
+    } else {
+        out = std::fmod(a, b);
+    }
+    return true;
+}
+template<typename T>
+T absValue(T a)
+{
+    if constexpr (std::is_unsigned_v<T>)
+        return a;
+    else
+        return a < 0 ? negate<T>(a) : a;
+}
+template<typename T>
+T bitAnd(T a, T b)
+{
+    if constexpr (std::is_integral_v<T>)
+        return static_cast<T>(a & b);
+    else
+        return a;
+}
+template<typename T>
+T bitOr(T a, T b)
+{
+    if constexpr (std::is_integral_v<T>)
+        return static_cast<T>(a | b);
+    else
+        return a;
+}
+template<typename T>
+T bitXor(T a, T b)
+{
+    if constexpr (std::is_integral_v<T>)
+        return static_cast<T>(a ^ b);
+    else
+        return a;
+}
+template<typename T>
+T bitNot(T a)
+{
+    if constexpr (std::is_integral_v<T>)
+        return static_cast<T>(~a);
+    else
+        return a;
+}
+template<typename T>
+bool getBit(T v, unsigned bit)
+{
+    if constexpr (std::is_integral_v<T>)
+        return ((static_cast<std::uint64_t>(v) >> bit) & 1u) != 0;
+    else
+        return false;
+}
+template<typename T>
+T setBit(T old, unsigned bit, bool value)
+{
+    if constexpr (std::is_integral_v<T>) {
+        const std::uint64_t mask = std::uint64_t{1} << bit;
+        const std::uint64_t v = static_cast<std::uint64_t>(old);
+        return static_cast<T>(value ? (v | mask) : (v & ~mask));
+    } else {
+        return old;
+    }
+}
+template<typename T>
+QString toText(T v, TextFormat format)
+{
+    if constexpr (std::is_integral_v<T>) {
+        switch (format) {
+        case TextFormat::Bool: return formatBool(v != 0);
+        case TextFormat::Duration: return formatDuration(static_cast<std::int64_t>(v));
+        case TextFormat::Date: return formatDate(static_cast<std::int64_t>(v));
+        case TextFormat::TimeOfDay: return formatTimeOfDay(static_cast<std::int64_t>(v));
+        case TextFormat::DateAndTime: return formatDateAndTime(static_cast<std::int64_t>(v));
+        case TextFormat::Hex: return QStringLiteral("16#") + QString::number(static_cast<std::uint64_t>(v), 16);
+        case TextFormat::Number: break;
+        }
+    }
+    if constexpr (std::is_floating_point_v<T>) {
+        QString text = formatReal(static_cast<double>(v));
+        if (text.endsWith(QLatin1String(".0")))
+            text.chop(2);
+        return text;
+    }
+    else if constexpr (std::is_signed_v<T>)
+        return formatInteger(static_cast<std::int64_t>(v));
+    else
+        return formatUnsigned(static_cast<std::uint64_t>(v));
+}
+template<typename T>
+T fromText(const QString &text, TextFormat format)
+{
+    if constexpr (std::is_integral_v<T>) {
+        if (format != TextFormat::Number && format != TextFormat::Hex) {
+            const auto value = parseLiteralValue(text, format);
+            return value ? static_cast<T>(*value) : T(0);
+        }
+    }
+    if constexpr (std::is_floating_point_v<T>) {
+        bool ok = false;
+        const double v = text.toDouble(&ok);
+        return ok ? static_cast<T>(v) : T(0);
+    } else {
+        // 42, -42, 16#2A, INT#5: the integer literals of the language.
+        const auto value = decodeInteger(splitTypedLiteral(text).body);
+        if (!value)
+            return T(0);
+        return static_cast<T>(value->negative ? 0 - value->magnitude : value->magnitude);
+    }
+}
+
+// STRING_TO_BOOL/TIME/DATE/TOD/DT: the text of a literal, with or without its T#/D#/... prefix.
+std::optional<std::int64_t> parseLiteralValue(const QString &text, TextFormat format)
+{
+    const LiteralParts parts = splitTypedLiteral(text);
+    switch (format) {
+    case TextFormat::Bool:
+        if (text.compare(QLatin1String("TRUE"), Qt::CaseInsensitive) == 0 || text == QLatin1String("1"))
+            return 1;
+        return 0;
+    case TextFormat::Duration: return decodeDuration(parts.body);
+    case TextFormat::Date: return decodeDate(parts.body);
+    case TextFormat::TimeOfDay: return decodeTimeOfDay(parts.body);
+    case TextFormat::DateAndTime: return decodeDateAndTime(parts.body);
+    case TextFormat::Number:
+    case TextFormat::Hex: break;
+    }
+    return std::nullopt;
+}
+
+template<typename T>
+constexpr unsigned kBits = sizeof(T) * 8;
+
+template<typename T>
+T shiftLeft(T a, std::uint64_t n)
+{
+    if constexpr (std::is_integral_v<T>)
+        return n >= kBits<T> ? T(0) : static_cast<T>(static_cast<std::uint64_t>(a) << n);
+    else
+        return a;
+}
+template<typename T>
+T shiftRight(T a, std::uint64_t n)
+{
+    if constexpr (std::is_integral_v<T>) {
+        using U = std::make_unsigned_t<T>;
+        return n >= kBits<T> ? T(0) : static_cast<T>(static_cast<U>(a) >> n);
+    } else {
+        return a;
+    }
+}
+template<typename T>
+T rotateLeft(T a, std::uint64_t n)
+{
+    if constexpr (std::is_integral_v<T>) {
+        n %= kBits<T>;
+        return n == 0 ? a : static_cast<T>(shiftLeft(a, n) | shiftRight(a, kBits<T> - n));
+    } else {
+        return a;
+    }
+}
+template<typename T>
+T rotateRight(T a, std::uint64_t n)
+{
+    if constexpr (std::is_integral_v<T>) {
+        n %= kBits<T>;
+        return n == 0 ? a : static_cast<T>(shiftRight(a, n) | shiftLeft(a, kBits<T> - n));
+    } else {
+        return a;
+    }
+}
+
+// REAL to integer rounds to the nearest integer, halves away from zero; values beyond the
+// integer type's range give its limit, NaN gives 0 (never undefined behaviour).
+template<typename To, typename From>
+To convert(From v)
+{
+    if constexpr (std::is_floating_point_v<From> && std::is_integral_v<To>) {
+        const double r = std::round(static_cast<double>(v));
+        if (!(r == r))
+            return To(0);
+        if (r >= static_cast<double>(std::numeric_limits<To>::max()))
+            return std::numeric_limits<To>::max();
+        if (r <= static_cast<double>(std::numeric_limits<To>::min()))
+            return std::numeric_limits<To>::min();
+        return static_cast<To>(r);
+    } else {
+        return static_cast<To>(v);
+    }
+}
+
+double applyMath(MathFn fn, double x)
+{
+    switch (fn) {
+    case MathFn::Sqrt: return std::sqrt(x);
+    case MathFn::Ln: return std::log(x);
+    case MathFn::Log: return std::log10(x);
+    case MathFn::Exp: return std::exp(x);
+    case MathFn::Sin: return std::sin(x);
+    case MathFn::Cos: return std::cos(x);
+    case MathFn::Tan: return std::tan(x);
+    case MathFn::Asin: return std::asin(x);
+    case MathFn::Acos: return std::acos(x);
+    case MathFn::Atan: return std::atan(x);
+    case MathFn::Trunc: return std::trunc(x);
+    case MathFn::Round: return std::round(x);
+    case MathFn::Count: break;
+    }
+    return x;
+}
+
+template<typename T>
+std::uint64_t toBcd(T value)
+{
+    std::uint64_t v = static_cast<std::uint64_t>(value), out = 0;
+    for (unsigned shift = 0; v != 0 && shift < 64; shift += 4, v /= 10)
+        out |= (v % 10) << shift;
+    return out;
+}
+
+std::uint64_t fromBcd(std::uint64_t bcd)
+{
+    std::uint64_t out = 0, scale = 1;
+    for (; bcd != 0; bcd >>= 4, scale *= 10)
+        out += (bcd & 0xf) * scale;
+    return out;
+}
+
+template<typename T>
+T bcd(T v, bool toBinary)
+{
+    if constexpr (std::is_integral_v<T>)
+        return static_cast<T>(toBinary ? fromBcd(static_cast<std::uint64_t>(v)) : toBcd(v));
+    else
+        return v;
+}
+
+std::int64_t readIndex(const IndexDescriptor &dsc, const std::uint8_t *p)
+{
+    // DINT and INT indices first, as plain (well predicted) branches; the rest through a table.
+    if (dsc.indexType == VT::I32)
+        return load<std::int32_t>(p);
+    if (dsc.indexType == VT::I16)
+        return load<std::int16_t>(p);
+    switch (dsc.indexType) {
+    case VT::I8: return load<std::int8_t>(p);
+    case VT::I16: return load<std::int16_t>(p);
+    case VT::I32: return load<std::int32_t>(p);
+    case VT::U8: return load<std::uint8_t>(p);
+    case VT::U16: return load<std::uint16_t>(p);
+    case VT::U32: return load<std::uint32_t>(p);
+    default: return load<std::int64_t>(p); // I64; a U64 beyond 2^63 is out of range anyway
+    }
+}
+
+// Strings in the image: capacity (uint16), length (uint16), then 1- or 2-byte characters.
+struct StringRef {
+    std::uint8_t *p;
+    bool wide;
+    std::uint16_t capacity() const { return load<std::uint16_t>(p); }
+    std::uint16_t length() const { return load<std::uint16_t>(p + 2); }
+    char16_t at(int i) const { return wide ? load<char16_t>(p + 4 + 2 * i) : char16_t(p[4 + i]); }
+};
+
+} // namespace
+
+Vm::Vm(const Module &module)
+    : m_module(module)
+    , m_memory(module.initialImage)
+{
+    m_scratch.resize(2 * 65536);
+}
+
+FaultKind Vm::run(std::uint32_t entry)
+{
+    struct Frame {
+        std::uint32_t pc;
+        std::uint8_t *base;
+    };
+    std::array<Frame, 256> frames;
+    size_t depth = 0;
+    // The hot state lives in plain locals whose addresses are never taken, so the compiler keeps
+    // them in registers although every store goes through a byte pointer that may alias anything.
+    std::uint8_t *const mem = m_memory.data();
+    std::uint8_t *inst = mem;
+    const Instr *const code = m_module.code.data();
+    const IndexDescriptor *const descriptors = m_module.indexDescriptors.data();
+    std::uint32_t pc = entry;
+    std::uint64_t budget = budgetPerRun;
+
+#define P(operand) (((operand) & kInstanceRelative ? inst : mem) + ((operand) & kOffsetMask))
+#define FAULT(kind)                                                                                                \
+    do {                                                                                                           \
+        m_faultPc = pc;                                                                                            \
+        return (kind);                                                                                             \
+    } while (false)
+    // Macros, not lambdas: a lambda would capture `inst` as it was, or take its address.
+#define absolute(operand) static_cast<std::uint32_t>(P(operand) - mem)
+#define readInt(operand) static_cast<std::int64_t>(load<std::int32_t>(P(operand)))
+#define str(operand, wide) StringRef{P(operand), (wide)}
+    // Writes m_scratch[0, n) into a string; false when it does not fit.
+    const auto writeString = [this](StringRef dst, int n) {
+        if (n > dst.capacity())
+            return false;
+        store<std::uint16_t>(dst.p + 2, static_cast<std::uint16_t>(n));
+        for (int i = 0; i < n; ++i) {
+            if (dst.wide)
+                store<char16_t>(dst.p + 4 + 2 * i, m_scratch[size_t(i)]);
+            else
+                dst.p[4 + i] = static_cast<std::uint8_t>(m_scratch[size_t(i)]);
+        }
+        return true;
+    };
+    const auto copyInto = [this](StringRef s, int from, int count, int at) {
+        for (int i = 0; i < count; ++i)
+            m_scratch[size_t(at + i)] = s.at(from + i);
+        return at + count;
+    };
+    const auto clampInt = [](std::int64_t v, std::int64_t lo, std::int64_t hi) { return v < lo ? lo : v > hi ? hi : v; };
+
+    // Threaded dispatch: each handler ends with its own indirect jump to the next one, which the
+    // branch predictor learns per handler (GCC/Clang labels as values).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpedantic"
+    static const void *const dispatch[op::Count] = {
+#define IEC_LABELS_OF_FAMILY(name) &&L_##name##_I8, &&L_##name##_I16, &&L_##name##_I32, &&L_##name##_I64, &&L_##name##_U8, \
+                                   &&L_##name##_U16, &&L_##name##_U32, &&L_##name##_U64, &&L_##name##_F32, &&L_##name##_F64,
+        IEC_TYPED_FAMILIES(IEC_LABELS_OF_FAMILY)
+#undef IEC_LABELS_OF_FAMILY
+#define IEC_CONVERT_LABELS(from) &&L_Convert_##from##_I8, &&L_Convert_##from##_I16, &&L_Convert_##from##_I32, \
+                                 &&L_Convert_##from##_I64, &&L_Convert_##from##_U8, &&L_Convert_##from##_U16, \
+                                 &&L_Convert_##from##_U32, &&L_Convert_##from##_U64, &&L_Convert_##from##_F32, &&L_Convert_##from##_F64,
+        IEC_CONVERT_LABELS(I8) IEC_CONVERT_LABELS(I16) IEC_CONVERT_LABELS(I32) IEC_CONVERT_LABELS(I64)
+        IEC_CONVERT_LABELS(U8) IEC_CONVERT_LABELS(U16) IEC_CONVERT_LABELS(U32) IEC_CONVERT_LABELS(U64)
+        IEC_CONVERT_LABELS(F32) IEC_CONVERT_LABELS(F64)
+#undef IEC_CONVERT_LABELS
+#define IEC_PLAIN_LABEL(name) &&L_##name,
+        IEC_PLAIN_OPS(IEC_PLAIN_LABEL)
+#undef IEC_PLAIN_LABEL
+    };
+    const Instr *ip = code + pc;
+#define DISPATCH()                                                                                                 \
+    do {                                                                                                           \
+        ip = code + pc;                                                                                            \
+        goto *dispatch[ip->op];                                                                                    \
+    } while (false)
+#define NEXT()                                                                                                     \
+    do {                                                                                                           \
+        ++pc;                                                                                                      \
+        DISPATCH();                                                                                                \
+    } while (false)
+    if (ip->op >= op::Count)
+        FAULT(FaultKind::InvalidProgram);
+    DISPATCH();
+    {
+#define IEC_CASE(family, vtName, T, ...)                                                                           \
+    L_##family##_##vtName : {                                                                                      \
+        using Ty = T;                                                                                              \
+        __VA_ARGS__                                                                                                \
+        NEXT();                                                                                                    \
+    }
+#define IEC_ALL_VT(family, ...)                                                                                    \
+    IEC_CASE(family, I8, std::int8_t, __VA_ARGS__)                                                                 \
+    IEC_CASE(family, I16, std::int16_t, __VA_ARGS__)                                                               \
+    IEC_CASE(family, I32, std::int32_t, __VA_ARGS__)                                                               \
+    IEC_CASE(family, I64, std::int64_t, __VA_ARGS__)                                                               \
+    IEC_CASE(family, U8, std::uint8_t, __VA_ARGS__)                                                                \
+    IEC_CASE(family, U16, std::uint16_t, __VA_ARGS__)                                                              \
+    IEC_CASE(family, U32, std::uint32_t, __VA_ARGS__)                                                              \
+    IEC_CASE(family, U64, std::uint64_t, __VA_ARGS__)                                                              \
+    IEC_CASE(family, F32, float, __VA_ARGS__)                                                                      \
+    IEC_CASE(family, F64, double, __VA_ARGS__)
+#define B load<Ty>(P(ip->b))
+#define C load<Ty>(P(ip->c))
+#define SET(value) store<Ty>(P(ip->a), static_cast<Ty>(value))
+#define SETBOOL(value) store<std::uint8_t>(P(ip->a), (value) ? 1 : 0)
+
+            IEC_ALL_VT(Add, SET(wrapAdd<Ty>(B, C));)
+            IEC_ALL_VT(Sub, SET(wrapSub<Ty>(B, C));)
+            IEC_ALL_VT(Mul, SET(wrapMul<Ty>(B, C));)
+            IEC_ALL_VT(Div, {
+                Ty out{};
+                if (!divide<Ty>(B, C, out))
+                    FAULT(FaultKind::DivisionByZero);
+                SET(out);
+            })
+            IEC_ALL_VT(Mod, {
+                Ty out{};
+                if (!modulo<Ty>(B, C, out))
+                    FAULT(FaultKind::DivisionByZero);
+                SET(out);
+            })
+            IEC_ALL_VT(Neg, SET(negate<Ty>(B));)
+            IEC_ALL_VT(Abs, SET(absValue<Ty>(B));)
+            IEC_ALL_VT(Min, { const Ty b = B, c = C; SET(c < b ? c : b); })
+            IEC_ALL_VT(Max, { const Ty b = B, c = C; SET(c > b ? c : b); })
+#define IEC_BRANCH(family, cmp)                                                                                    \
+    IEC_ALL_VT(family, {                                                                                           \
+        if (B cmp C) {                                                                                             \
+            if (ip->a <= pc && --budget == 0)                                                                        \
+                FAULT(FaultKind::BudgetExceeded);                                                                  \
+            pc = ip->a;                                                                                              \
+            DISPATCH();                                                                                              \
+        }                                                                                                          \
+    })
+            IEC_BRANCH(BrEq, ==)
+            IEC_BRANCH(BrNe, !=)
+            IEC_BRANCH(BrLt, <)
+            IEC_BRANCH(BrLe, <=)
+            IEC_BRANCH(BrGt, >)
+            IEC_BRANCH(BrGe, >=)
+#undef IEC_BRANCH
+#define IEC_STEP(family, cmp)                                                                                      \
+    IEC_ALL_VT(family, {                                                                                           \
+        const Ty next = wrapAdd<Ty>(load<Ty>(P(ip->a)), B);                                                        \
+        store<Ty>(P(ip->a), next);                                                                                 \
+        if (next cmp C) {                                                                                          \
+            if (--budget == 0)                                                                                     \
+                FAULT(FaultKind::BudgetExceeded);                                                                  \
+            pc = ip->d;                                                                                            \
+            DISPATCH();                                                                                            \
+        }                                                                                                          \
+    })
+            IEC_STEP(IncBrLe, <=)
+            IEC_STEP(IncBrGe, >=)
+#undef IEC_STEP
+            IEC_ALL_VT(Eq, SETBOOL(B == C);)
+            IEC_ALL_VT(Ne, SETBOOL(B != C);)
+            IEC_ALL_VT(Lt, SETBOOL(B < C);)
+            IEC_ALL_VT(Le, SETBOOL(B <= C);)
+            IEC_ALL_VT(Gt, SETBOOL(B > C);)
+            IEC_ALL_VT(Ge, SETBOOL(B >= C);)
+            IEC_ALL_VT(And, SET(bitAnd<Ty>(B, C));)
+            IEC_ALL_VT(Or, SET(bitOr<Ty>(B, C));)
+            IEC_ALL_VT(Xor, SET(bitXor<Ty>(B, C));)
+            IEC_ALL_VT(Not, SET(bitNot<Ty>(B));)
+            IEC_ALL_VT(Shl, SET(shiftLeft<Ty>(B, load<std::uint64_t>(P(ip->c))));)
+            IEC_ALL_VT(Shr, SET(shiftRight<Ty>(B, load<std::uint64_t>(P(ip->c))));)
+            IEC_ALL_VT(Rol, SET(rotateLeft<Ty>(B, load<std::uint64_t>(P(ip->c))));)
+            IEC_ALL_VT(Ror, SET(rotateRight<Ty>(B, load<std::uint64_t>(P(ip->c))));)
+            IEC_ALL_VT(GetBit, SETBOOL(getBit<Ty>(B, ip->d));)
+            IEC_ALL_VT(SetBit, SET(setBit<Ty>(load<Ty>(P(ip->a)), ip->d, load<std::uint8_t>(P(ip->b)) != 0));)
+            IEC_ALL_VT(Expt, SET(std::pow(static_cast<double>(B), load<double>(P(ip->c))));)
+            IEC_ALL_VT(Math, SET(applyMath(static_cast<MathFn>(ip->aux), static_cast<double>(B)));)
+            IEC_ALL_VT(ToStr, {
+                // A number's text is short; *_TO_STRING is the one operation that allocates.
+                const QString text = toText<Ty>(B, static_cast<TextFormat>(ip->aux >> 1));
+                const int n = static_cast<int>(text.size());
+                for (int k = 0; k < n; ++k)
+                    m_scratch[size_t(k)] = text[k].unicode();
+                if (!writeString(str(ip->a, (ip->aux & 1) != 0), n))
+                    FAULT(FaultKind::StringOverflow);
+            })
+            IEC_ALL_VT(FromStr, {
+                const StringRef s = str(ip->b, (ip->aux & 1) != 0);
+                QString text(s.length(), Qt::Uninitialized);
+                for (int k = 0; k < s.length(); ++k)
+                    text[k] = QChar(s.at(k));
+                SET(fromText<Ty>(text.trimmed(), static_cast<TextFormat>(ip->aux >> 1)));
+            })
+            IEC_ALL_VT(Bcd, SET(bcd<Ty>(B, ip->aux != 0));)
+#undef B
+#undef C
+#undef SET
+#undef SETBOOL
+
+#define IEC_CONVERT_TO(fromVt, From, toVt, To)                                                                     \
+    L_Convert_##fromVt##_##toVt:                                                                                   \
+        store<To>(P(ip->a), convert<To, From>(load<From>(P(ip->b))));                                                  \
+        NEXT();
+#define IEC_CONVERT_FROM(fromVt, From)                                                                             \
+    IEC_CONVERT_TO(fromVt, From, I8, std::int8_t)                                                                  \
+    IEC_CONVERT_TO(fromVt, From, I16, std::int16_t)                                                                \
+    IEC_CONVERT_TO(fromVt, From, I32, std::int32_t)                                                                \
+    IEC_CONVERT_TO(fromVt, From, I64, std::int64_t)                                                                \
+    IEC_CONVERT_TO(fromVt, From, U8, std::uint8_t)                                                                 \
+    IEC_CONVERT_TO(fromVt, From, U16, std::uint16_t)                                                               \
+    IEC_CONVERT_TO(fromVt, From, U32, std::uint32_t)                                                               \
+    IEC_CONVERT_TO(fromVt, From, U64, std::uint64_t)                                                               \
+    IEC_CONVERT_TO(fromVt, From, F32, float)                                                                       \
+    IEC_CONVERT_TO(fromVt, From, F64, double)
+            IEC_CONVERT_FROM(I8, std::int8_t)
+            IEC_CONVERT_FROM(I16, std::int16_t)
+            IEC_CONVERT_FROM(I32, std::int32_t)
+            IEC_CONVERT_FROM(I64, std::int64_t)
+            IEC_CONVERT_FROM(U8, std::uint8_t)
+            IEC_CONVERT_FROM(U16, std::uint16_t)
+            IEC_CONVERT_FROM(U32, std::uint32_t)
+            IEC_CONVERT_FROM(U64, std::uint64_t)
+            IEC_CONVERT_FROM(F32, float)
+            IEC_CONVERT_FROM(F64, double)
+#undef IEC_CONVERT_FROM
+#undef IEC_CONVERT_TO
+#undef IEC_ALL_VT
+#undef IEC_CASE
+
+        L_Nop:
+            NEXT();
+        L_Mov1: *P(ip->a) = *P(ip->b); NEXT();
+        L_Mov2: std::memcpy(P(ip->a), P(ip->b), 2); NEXT();
+        L_Mov4: std::memcpy(P(ip->a), P(ip->b), 4); NEXT();
+        L_Mov8: std::memcpy(P(ip->a), P(ip->b), 8); NEXT();
+        L_MovN: std::memmove(P(ip->a), P(ip->b), ip->d); NEXT();
+        L_BoolNot: *P(ip->a) = *P(ip->b) ^ 1u; NEXT();
+        L_Jmp:
+            if (ip->a <= pc && --budget == 0)
+                FAULT(FaultKind::BudgetExceeded);
+            pc = ip->a;
+            DISPATCH();
+        L_Jz:
+        L_Jnz:
+            if ((*P(ip->b) != 0) == (ip->op == op::Jnz)) {
+                if (ip->a <= pc && --budget == 0)
+                    FAULT(FaultKind::BudgetExceeded);
+                pc = ip->a;
+                DISPATCH();
+            }
+            NEXT();
+        L_CallFb:
+        L_CallFbPtr:
+        L_CallFn: {
+            if (depth == frames.size())
+                FAULT(FaultKind::CallDepthExceeded);
+            if (--budget == 0)
+                FAULT(FaultKind::BudgetExceeded);
+            frames[depth++] = {pc + 1, inst};
+            if (ip->op == op::CallFb)
+                inst = P(ip->a);
+            else if (ip->op == op::CallFbPtr)
+                inst = mem + load<std::uint32_t>(P(ip->a));
+            pc = m_module.pous[ip->aux].entry;
+            DISPATCH();
+        }
+        L_Ret:
+            if (depth == 0)
+                return FaultKind::None;
+            --depth;
+            pc = frames[depth].pc;
+            inst = frames[depth].base;
+            DISPATCH();
+        L_Halt:
+            return FaultKind::None;
+        L_Lea:
+            store<std::uint32_t>(P(ip->a), absolute(ip->b));
+            NEXT();
+        L_Index:
+        L_IndexPtr: {
+            const IndexDescriptor &dsc = descriptors[ip->aux];
+            const std::int64_t index = readIndex(dsc, P(ip->c)) - dsc.low;
+            if (index < 0 || index >= dsc.count)
+                FAULT(FaultKind::IndexOutOfRange);
+            const std::uint32_t base = ip->op == op::Index ? absolute(ip->b) : load<std::uint32_t>(P(ip->b));
+            store<std::uint32_t>(P(ip->a), base + static_cast<std::uint32_t>(index) * dsc.stride);
+            NEXT();
+        }
+        L_PtrAdd:
+            store<std::uint32_t>(P(ip->a), load<std::uint32_t>(P(ip->b)) + ip->d);
+            NEXT();
+#define IEC_INDEXED(size)                                                                                         \
+    L_LoadIdx##size: {                                                                                      \
+        const IndexDescriptor &dsc = descriptors[ip->aux];                                                          \
+        const std::int64_t index = readIndex(dsc, P(ip->c)) - dsc.low;                                               \
+        if (index < 0 || index >= dsc.count)                                                                       \
+            FAULT(FaultKind::IndexOutOfRange);                                                                     \
+        std::memcpy(P(ip->a), P(ip->b) + static_cast<std::uint32_t>(index) * dsc.stride, size);                        \
+        NEXT();                                                                                                     \
+    }                                                                                                              \
+    L_StoreIdx##size: {                                                                                     \
+        const IndexDescriptor &dsc = descriptors[ip->aux];                                                          \
+        const std::int64_t index = readIndex(dsc, P(ip->c)) - dsc.low;                                               \
+        if (index < 0 || index >= dsc.count)                                                                       \
+            FAULT(FaultKind::IndexOutOfRange);                                                                     \
+        std::memcpy(P(ip->a) + static_cast<std::uint32_t>(index) * dsc.stride, P(ip->d), size);                        \
+        NEXT();                                                                                                     \
+    }
+            IEC_INDEXED(1)
+            IEC_INDEXED(2)
+            IEC_INDEXED(4)
+            IEC_INDEXED(8)
+#undef IEC_INDEXED
+        L_BoolAndNot:
+            *P(ip->a) = static_cast<std::uint8_t>(*P(ip->b) & (*P(ip->c) ^ 1u));
+            NEXT();
+        L_BoolAndOr:
+            *P(ip->a) = static_cast<std::uint8_t>((*P(ip->b) & *P(ip->c)) | *P(ip->d));
+            NEXT();
+        L_BoolOrAnd:
+            *P(ip->a) = static_cast<std::uint8_t>((*P(ip->b) | *P(ip->c)) & *P(ip->d));
+            NEXT();
+        L_NativeFb:
+            runNativeBlock(static_cast<NativeBlock>(ip->aux), P(ip->a), clockNs);
+            NEXT();
+        L_NativeFbArgs: {
+            std::uint8_t *instance = P(ip->a);
+            instance[0] = *P(ip->b);
+            std::memcpy(instance + 8, P(ip->c), 8);
+            runNativeBlock(static_cast<NativeBlock>(ip->aux), instance, clockNs);
+            NEXT();
+        }
+        L_NativeFbPtr:
+            runNativeBlock(static_cast<NativeBlock>(ip->aux), mem + load<std::uint32_t>(P(ip->a)), clockNs);
+            NEXT();
+        L_Load1: *P(ip->a) = mem[load<std::uint32_t>(P(ip->b))]; NEXT();
+        L_Load2: std::memcpy(P(ip->a), mem + load<std::uint32_t>(P(ip->b)), 2); NEXT();
+        L_Load4: std::memcpy(P(ip->a), mem + load<std::uint32_t>(P(ip->b)), 4); NEXT();
+        L_Load8: std::memcpy(P(ip->a), mem + load<std::uint32_t>(P(ip->b)), 8); NEXT();
+        L_LoadN: std::memmove(P(ip->a), mem + load<std::uint32_t>(P(ip->b)), ip->d); NEXT();
+        L_Store1: mem[load<std::uint32_t>(P(ip->a))] = *P(ip->b); NEXT();
+        L_Store2: std::memcpy(mem + load<std::uint32_t>(P(ip->a)), P(ip->b), 2); NEXT();
+        L_Store4: std::memcpy(mem + load<std::uint32_t>(P(ip->a)), P(ip->b), 4); NEXT();
+        L_Store8: std::memcpy(mem + load<std::uint32_t>(P(ip->a)), P(ip->b), 8); NEXT();
+        L_StoreN: std::memmove(mem + load<std::uint32_t>(P(ip->a)), P(ip->b), ip->d); NEXT();
+        L_StrMov: {
+            const StringRef src = str(ip->b, (ip->aux & 2) != 0);
+            const int n = copyInto(src, 0, src.length(), 0);
+            if (!writeString(str(ip->a, (ip->aux & 1) != 0), n))
+                FAULT(FaultKind::StringOverflow);
+            NEXT();
+        }
+        L_StrConcat: {
+            const bool wide = ip->aux != 0;
+            const StringRef b = str(ip->b, wide), c = str(ip->c, wide);
+            int n = copyInto(b, 0, b.length(), 0);
+            n = copyInto(c, 0, c.length(), n);
+            if (!writeString(str(ip->a, wide), n))
+                FAULT(FaultKind::StringOverflow);
+            NEXT();
+        }
+        L_StrCmp: {
+            const bool wide = ip->aux != 0;
+            const StringRef b = str(ip->b, wide), c = str(ip->c, wide);
+            const int n = std::min(b.length(), c.length());
+            int result = 0;
+            for (int k = 0; k < n && result == 0; ++k)
+                result = b.at(k) < c.at(k) ? -1 : b.at(k) > c.at(k) ? 1 : 0;
+            if (result == 0)
+                result = b.length() < c.length() ? -1 : b.length() > c.length() ? 1 : 0;
+            store<std::int32_t>(P(ip->a), result);
+            NEXT();
+        }
+        L_StrLen:
+            store<std::int32_t>(P(ip->a), str(ip->b, ip->aux != 0).length());
+            NEXT();
+        L_StrLeft:
+        L_StrRight: {
+            const bool wide = ip->aux != 0;
+            const StringRef s = str(ip->b, wide);
+            const int len = static_cast<int>(clampInt(readInt(ip->c), 0, s.length()));
+            const int n = copyInto(s, ip->op == op::StrLeft ? 0 : s.length() - len, len, 0);
+            if (!writeString(str(ip->a, wide), n))
+                FAULT(FaultKind::StringOverflow);
+            NEXT();
+        }
+        L_StrMid: {
+            const bool wide = ip->aux != 0;
+            const StringRef s = str(ip->b, wide);
+            const int from = static_cast<int>(clampInt(readInt(ip->d) - 1, 0, s.length()));
+            const int len = static_cast<int>(clampInt(readInt(ip->c), 0, s.length() - from));
+            if (!writeString(str(ip->a, wide), copyInto(s, from, len, 0)))
+                FAULT(FaultKind::StringOverflow);
+            NEXT();
+        }
+        L_StrInsert: {
+            const bool wide = ip->aux != 0;
+            const StringRef s = str(ip->b, wide), ins = str(ip->c, wide);
+            const int at = static_cast<int>(clampInt(readInt(ip->d), 0, s.length()));
+            int n = copyInto(s, 0, at, 0);
+            n = copyInto(ins, 0, ins.length(), n);
+            n = copyInto(s, at, s.length() - at, n);
+            if (!writeString(str(ip->a, wide), n))
+                FAULT(FaultKind::StringOverflow);
+            NEXT();
+        }
+        L_StrDelete: {
+            const bool wide = ip->aux != 0;
+            const StringRef s = str(ip->b, wide);
+            const int from = static_cast<int>(clampInt(readInt(ip->d) - 1, 0, s.length()));
+            const int len = static_cast<int>(clampInt(readInt(ip->c), 0, s.length() - from));
+            int n = copyInto(s, 0, from, 0);
+            n = copyInto(s, from + len, s.length() - from - len, n);
+            if (!writeString(str(ip->a, wide), n))
+                FAULT(FaultKind::StringOverflow);
+            NEXT();
+        }
+        L_StrReplace: {
+            const bool wide = ip->aux != 0;
+            const StringRef s = str(ip->b, wide), with = str(ip->c, wide);
+            const int from = static_cast<int>(clampInt(readInt(ip->d + 4) - 1, 0, s.length()));
+            const int len = static_cast<int>(clampInt(readInt(ip->d), 0, s.length() - from));
+            int n = copyInto(s, 0, from, 0);
+            n = copyInto(with, 0, with.length(), n);
+            n = copyInto(s, from + len, s.length() - from - len, n);
+            if (!writeString(str(ip->a, wide), n))
+                FAULT(FaultKind::StringOverflow);
+            NEXT();
+        }
+        L_StrFind: {
+            const bool wide = ip->aux != 0;
+            const StringRef s = str(ip->b, wide), what = str(ip->c, wide);
+            int found = 0;
+            for (int k = 0; what.length() > 0 && k + what.length() <= s.length() && found == 0; ++k) {
+                int m = 0;
+                while (m < what.length() && s.at(k + m) == what.at(m))
+                    ++m;
+                if (m == what.length())
+                    found = k + 1;
+            }
+            store<std::int32_t>(P(ip->a), found);
+            NEXT();
+        }
+        L_Now:
+            store<std::int64_t>(P(ip->a), clockNs);
+            NEXT();
+        L_Fault:
+            FAULT(static_cast<FaultKind>(ip->aux));
+    }
+#undef DISPATCH
+#undef NEXT
+#pragma GCC diagnostic pop
+#undef P
+#undef FAULT
+#undef absolute
+#undef readInt
+#undef str
+}
+
+} // namespace iec::interp

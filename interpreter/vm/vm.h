@@ -1,0 +1,38 @@
+#pragma once
+
+#include "interpreter/vm/bytecode.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace iec::interp {
+
+// Runs bytecode over one memory image. It allocates nothing while running: the image, the call
+// stack and the string scratch buffer are sized when it is created.
+class Vm
+{
+public:
+    explicit Vm(const Module &module);
+
+    std::vector<std::uint8_t> &memory() { return m_memory; }
+    const std::vector<std::uint8_t> &memory() const { return m_memory; }
+
+    // The virtual clock, read by op::Now (timers).
+    std::int64_t clockNs = 0;
+    // How many backward jumps and calls one run() may make before it stops with BudgetExceeded:
+    // an endless loop stops the program instead of the host.
+    std::uint64_t budgetPerRun = 50'000'000;
+
+    // Runs from `entry` until Halt (or the outermost Ret). Returns FaultKind::None, or the fault
+    // with faultPc() telling where.
+    FaultKind run(std::uint32_t entry);
+    std::uint32_t faultPc() const { return m_faultPc; }
+
+private:
+    const Module &m_module;
+    std::vector<std::uint8_t> m_memory;
+    std::vector<char16_t> m_scratch;
+    std::uint32_t m_faultPc = 0;
+};
+
+} // namespace iec::interp

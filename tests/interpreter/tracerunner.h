@@ -1,0 +1,69 @@
+#pragma once
+
+// Runs a program cycle by cycle from a compact description, for table-driven tests:
+//   each step is "name=value; name=value => name=value; name=value": the values left of "=>"
+//   are written before the cycle, those right of it are compared after the cycle. Names are
+//   looked up in Main first.
+
+#include "interpreter/compiler/compiler.h"
+#include "interpreter/runtime/runtime.h"
+
+#include <QStringList>
+
+namespace iec::interp::testing {
+
+// Main.name when Main has such a variable, else the name as given (globals, %QX0.1, Main.x).
+inline QString qualified(const Runtime &runtime, const QString &name)
+{
+    const QString local = QStringLiteral("Main.") + name;
+    return runtime.find(local) ? local : name;
+}
+
+// Returns an empty string when every expectation held, otherwise what went wrong.
+inline QString runTrace(const QString &source, const QStringList &steps, const CompileOptions &options = {})
+{
+    Diagnostics diagnostics;
+    const QString program = source.contains(QLatin1String("PROGRAM")) ? source
+                                                                     : QStringLiteral("PROGRAM Main\n") + source + QStringLiteral("\nEND_PROGRAM\n");
+    const auto module = compileText(program, diagnostics, options);
+    QStringList problems;
+    for (const Diagnostic &d : diagnostics.all()) {
+        if (d.severity == Diagnostic::Severity::Error)
+            problems << d.toString();
+    }
+    if (!module)
+        return QStringLiteral("does not compile: ") + problems.join(QStringLiteral(" | "));
+    Runtime runtime(module, options.cycleNs);
+    int cycle = 0;
+    for (const QString &step : steps) {
+        ++cycle;
+        const QStringList sides = step.split(QStringLiteral("=>"));
+        const auto pairs = [](const QString &text) {
+            QList<QPair<QString, QString>> out;
+            for (const QString &item : text.split(QStringLiteral("; "), Qt::SkipEmptyParts)) {
+                const qsizetype eq = item.indexOf(QLatin1Char('='));
+                if (eq > 0)
+                    out.append({item.left(eq).trimmed(), item.mid(eq + 1).trimmed()});
+            }
+            return out;
+        };
+        for (const auto &[name, value] : pairs(sides[0])) {
+            if (const auto problem = runtime.write(qualified(runtime, name), value))
+                return QStringLiteral("cycle %1: cannot set %2: %3").arg(cycle).arg(name, *problem);
+        }
+        if (!runtime.runCycle())
+            return QStringLiteral("cycle %1: fault: %2").arg(cycle).arg(runtime.fault()->toString());
+        if (sides.size() < 2)
+            continue;
+        for (const auto &[name, expected] : pairs(sides[1])) {
+            const auto actual = runtime.read(qualified(runtime, name));
+            if (!actual)
+                return QStringLiteral("cycle %1: no variable %2").arg(cycle).arg(name);
+            if (*actual != expected)
+                problems << QStringLiteral("cycle %1: %2 = %3, expected %4").arg(cycle).arg(name, *actual, expected);
+        }
+    }
+    return problems.join(QStringLiteral(" | "));
+}
+
+} // namespace iec::interp::testing
