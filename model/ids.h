@@ -1,5 +1,7 @@
 #pragma once
 
+#include <QMetaType>
+#include <QString>
 #include <QtGlobal>
 
 #include <compare>
@@ -16,9 +18,22 @@ struct PouId {
     constexpr auto operator<=>(const PouId &) const = default;
 };
 
+// Names one body: the POU's own body, or the body of one of its actions or transitions.
+struct BodyRef {
+    enum class Part { Pou, Action, Transition };
+
+    PouId pou;
+    Part part = Part::Pou;
+    QString name; // the action or transition; empty for Part::Pou
+
+    bool operator==(const BodyRef &) const = default;
+};
+
 } // namespace iec::model
 
-template <>
-struct std::hash<iec::model::PouId> {
-    std::size_t operator()(iec::model::PouId id) const noexcept { return std::hash<quint32>{}(id.value); }
+Q_DECLARE_METATYPE(iec::model::PouId)
+Q_DECLARE_METATYPE(iec::model::BodyRef)
+
+template<> struct std::hash<iec::model::PouId> {
+    std::size_t operator()(iec::model::PouId id) const noexcept { return std::hash<quint32> {}(id.value); }
 };

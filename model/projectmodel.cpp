@@ -4,18 +4,67 @@
 
 namespace iec::model {
 
+namespace {
+
+// IEC identifiers are case-insensitive, but a rename that only changes case is a change.
+bool sameName(const QString &a, const QString &b)
+{
+    return a.compare(b, Qt::CaseInsensitive) == 0;
+}
+
+template<class T> void insertAt(std::vector<T> &values, T value, int index)
+{
+    const auto position = index < 0 || std::size_t(index) > values.size() ? values.end() : values.begin() + index;
+    values.insert(position, std::move(value));
+}
+
+template<class T> int indexByName(const std::vector<T> &values, const QString &name)
+{
+    const auto it = std::ranges::find_if(values, [&](const T &value) { return sameName(value.name, name); });
+    return it == values.end() ? -1 : int(it - values.begin());
+}
+
+template<class T> T *findByName(std::vector<T> &values, const QString &name)
+{
+    const int index = indexByName(values, name);
+    return index < 0 ? nullptr : &values[std::size_t(index)];
+}
+
+// A POU's actions and transitions have the same shape; these give uniform access.
+template<class F> auto withParts(Pou &pou, BodyRef::Part part, F &&f)
+{
+    return part == BodyRef::Part::Action ? f(pou.actions) : f(pou.transitions);
+}
+
+template<class F> auto withParts(const Pou &pou, BodyRef::Part part, F &&f)
+{
+    return part == BodyRef::Part::Action ? f(pou.actions) : f(pou.transitions);
+}
+
+int elementIndexIn(const std::vector<Element> &elements, quint64 localId)
+{
+    const auto it = std::ranges::find_if(elements, [&](const Element &e) { return header(e).localId == localId; });
+    return it == elements.end() ? -1 : int(it - elements.begin());
+}
+
+bool isValidPart(BodyRef::Part part)
+{
+    return part == BodyRef::Part::Action || part == BodyRef::Part::Transition;
+}
+
+} // namespace
+
 ProjectModel::ProjectModel(QObject *parent)
     : QObject(parent)
-{
-}
+{ }
 
 void ProjectModel::reset(Project project)
 {
     m_project = std::move(project);
     m_nextPouId = 1;
-    for (const Pou &pou : m_project.pous)
+    for (const Pou &pou : m_project.types.pous)
         m_nextPouId = std::max(m_nextPouId, pou.id.value + 1);
-    for (Pou &pou : m_project.pous) {
+    for (Pou &pou : m_project.types.pous) {
         if (!pou.id.isValid())
             pou.id = allocatePouId();
     }
@@ -23,14 +72,16 @@ void ProjectModel::reset(Project project)
     Q_EMIT projectReset();
 }
 
-PouId ProjectModel::addPou(Pou pou)
+// ---- POUs ---------------------------------------------------------------------------------
+
+PouId ProjectModel::addPou(Pou pou, int index)
 {
     if (!pou.id.isValid() || m_project.findPou(pou.id))
         pou.id = allocatePouId();
     else
         m_nextPouId = std::max(m_nextPouId, pou.id.value + 1);
     const PouId id = pou.id;
-    m_project.pous.push_back(std::move(pou));
+    insertAt(m_project.types.pous, std::move(pou), index);
     touch();
     Q_EMIT pouAdded(id);
     return id;
@@ -38,7 +89,7 @@ PouId ProjectModel::addPou(Pou pou)
 
 bool ProjectModel::removePou(PouId id)
 {
-    const auto removed = std::erase_if(m_project.pous, [id](const Pou &pou) { return pou.id == id; });
+    const auto removed = std::erase_if(m_project.types.pous, [id](const Pou &pou) { return pou.id == id; });
     if (removed == 0)
         return false;
     touch();
@@ -57,14 +108,372 @@ bool ProjectModel::renamePou(PouId id, const QString &newName)
     return true;
 }
 
+PouId ProjectModel::duplicatePou(PouId id, const QString &newName)
+{
+    const Pou *original = m_project.findPou(id);
+    if (!original)
+        return {};
+    Pou copy = *original;
+    copy.id = {};
+    copy.name = newName;
+    copy.globalId.reset(); // xsd:ID values must stay unique in the file
+    copy.addDataSlot = 0;
+    return addPou(std::move(copy), pouIndex(id) + 1);
+}
+
+int ProjectModel::pouIndex(PouId id) const
+{
+    const auto it = std::ranges::find(m_project.types.pous, id, &Pou::id);
+    return it == m_project.types.pous.end() ? -1 : int(it - m_project.types.pous.begin());
+}
+
+// ---- actions and transitions --------------------------------------------------------------
+
+bool ProjectModel::addPouPart(PouId id, BodyRef::Part part, PouPart value, int index)
+{
+    Pou *pou = findMutablePou(id);
+    if (!pou || !isValidPart(part) || pouPartIndex(id, part, value.name) >= 0)
+        return false;
+    withParts(*pou, part, [&](auto &parts) { insertAt(parts, std::move(value), index); });
+    touch();
+    Q_EMIT pouPartsChanged(id);
+    return true;
+}
+
+bool ProjectModel::removePouPart(PouId id, BodyRef::Part part, const QString &name)
+{
+    Pou *pou = findMutablePou(id);
+    const int index = pouPartIndex(id, part, name);
+    if (!pou || index < 0)
+        return false;
+    withParts(*pou, part, [&](auto &parts) { parts.erase(parts.begin() + index); });
+    touch();
+    Q_EMIT pouPartsChanged(id);
+    return true;
+}
+
+bool ProjectModel::renamePouPart(PouId id, BodyRef::Part part, const QString &name, const QString &newName)
+{
+    Pou *pou = findMutablePou(id);
+    const int index = pouPartIndex(id, part, name);
+    if (!pou || index < 0 || name == newName)
+        return false;
+    withParts(*pou, part, [&](auto &parts) { parts[std::size_t(index)].name = newName; });
+    touch();
+    Q_EMIT pouPartsChanged(id);
+    return true;
+}
+
+const PouPart *ProjectModel::findPouPart(PouId id, BodyRef::Part part, const QString &name) const
+{
+    const Pou *pou = m_project.findPou(id);
+    const int index = pouPartIndex(id, part, name);
+    if (!pou || index < 0)
+        return nullptr;
+    return withParts(*pou, part, [&](const auto &parts) { return &parts[std::size_t(index)]; });
+}
+
+int ProjectModel::pouPartIndex(PouId id, BodyRef::Part part, const QString &name) const
+{
+    const Pou *pou = m_project.findPou(id);
+    if (!pou || !isValidPart(part))
+        return -1;
+    return withParts(*pou, part, [&](const auto &parts) { return indexByName(parts, name); });
+}
+
+// ---- data types ---------------------------------------------------------------------------
+
+bool ProjectModel::addDataType(DataTypeDecl type, int index)
+{
+    if (dataTypeIndex(type.name) >= 0)
+        return false;
+    insertAt(m_project.types.dataTypes, std::move(type), index);
+    touch();
+    Q_EMIT dataTypesChanged();
+    return true;
+}
+
+bool ProjectModel::removeDataType(const QString &name)
+{
+    const int index = dataTypeIndex(name);
+    if (index < 0)
+        return false;
+    m_project.types.dataTypes.erase(m_project.types.dataTypes.begin() + index);
+    touch();
+    Q_EMIT dataTypesChanged();
+    return true;
+}
+
+bool ProjectModel::renameDataType(const QString &name, const QString &newName)
+{
+    const int index = dataTypeIndex(name);
+    if (index < 0)
+        return false;
+    DataTypeDecl type = m_project.types.dataTypes[std::size_t(index)];
+    type.name = newName;
+    return changeDataType(name, type);
+}
+
+bool ProjectModel::changeDataType(const QString &name, const DataTypeDecl &type)
+{
+    DataTypeDecl *existing = findByName(m_project.types.dataTypes, name);
+    if (!existing || *existing == type)
+        return false;
+    *existing = type;
+    touch();
+    Q_EMIT dataTypesChanged();
+    return true;
+}
+
+int ProjectModel::dataTypeIndex(const QString &name) const
+{
+    return indexByName(m_project.types.dataTypes, name);
+}
+
+// ---- declarations -------------------------------------------------------------------------
+
+bool ProjectModel::addVariable(PouId id, VarListKind kind, Variable variable, int index)
+{
+    Pou *pou = findMutablePou(id);
+    if (!pou || findVariable(id, variable.name))
+        return false;
+    if (!pou->pouInterface)
+        pou->pouInterface.emplace();
+    std::vector<VarList> &lists = pou->pouInterface->varLists;
+    auto list = std::ranges::find(lists, kind, &VarList::kind);
+    if (list == lists.end())
+        list = lists.insert(lists.end(), VarList {.kind = kind});
+    insertAt(list->variables, std::move(variable), index);
+    touch();
+    Q_EMIT variablesChanged(id);
+    return true;
+}
+
+bool ProjectModel::removeVariable(PouId id, const QString &name)
+{
+    Interface *declarations = findMutableInterface(id);
+    if (!declarations)
+        return false;
+    for (VarList &list : declarations->varLists) {
+        const int index = indexByName(list.variables, name);
+        if (index >= 0) {
+            list.variables.erase(list.variables.begin() + index);
+            touch();
+            Q_EMIT variablesChanged(id);
+            return true;
+        }
+    }
+    return false;
+}
+
+bool ProjectModel::changeVariable(PouId id, const QString &name, const Variable &variable)
+{
+    Variable *existing = const_cast<Variable *>(findVariable(id, name));
+    if (!existing || *existing == variable)
+        return false;
+    *existing = variable;
+    touch();
+    Q_EMIT variablesChanged(id);
+    return true;
+}
+
+bool ProjectModel::setInterface(PouId id, const std::optional<Interface> &declarations)
+{
+    Pou *pou = findMutablePou(id);
+    if (!pou || pou->pouInterface == declarations)
+        return false;
+    pou->pouInterface = declarations;
+    touch();
+    Q_EMIT variablesChanged(id);
+    return true;
+}
+
+const Variable *ProjectModel::findVariable(PouId id, const QString &name) const
+{
+    const Pou *pou = m_project.findPou(id);
+    if (!pou || !pou->pouInterface)
+        return nullptr;
+    for (const VarList &list : pou->pouInterface->varLists) {
+        const int index = indexByName(list.variables, name);
+        if (index >= 0)
+            return &list.variables[std::size_t(index)];
+    }
+    return nullptr;
+}
+
+// ---- bodies -------------------------------------------------------------------------------
+
+const Body *ProjectModel::body(const BodyRef &ref) const
+{
+    return const_cast<ProjectModel *>(this)->findMutableBody(ref);
+}
+
+bool ProjectModel::setBodyText(const BodyRef &ref, const QString &text)
+{
+    Body *body = findMutableBody(ref);
+    if (!body || body->isGraphical() || body->text() == text)
+        return false;
+    body->setText(text);
+    touch();
+    Q_EMIT bodyTextChanged(ref);
+    return true;
+}
+
+quint64 ProjectModel::insertElement(const BodyRef &ref, Element element, int index)
+{
+    Body *body = findMutableBody(ref);
+    if (!body || !body->isGraphical())
+        return 0;
+    std::vector<Element> &elements = *body->elements();
+    ElementHeader &head = header(element);
+    if (head.localId == 0 || elementIndexIn(elements, head.localId) >= 0)
+        head.localId = nextLocalId(ref);
+    const quint64 localId = head.localId;
+    insertAt(elements, std::move(element), index);
+    touch();
+    Q_EMIT elementsInserted(ref, {localId});
+    return localId;
+}
+
+bool ProjectModel::removeElement(const BodyRef &ref, quint64 localId)
+{
+    Body *body = findMutableBody(ref);
+    const int index = body && body->isGraphical() ? elementIndexIn(*body->elements(), localId) : -1;
+    if (index < 0)
+        return false;
+    std::vector<Element> &elements = *body->elements();
+    elements.erase(elements.begin() + index);
+    // No wire may start at an element that is gone.
+    QList<quint64> rewired;
+    for (Element &element : elements) {
+        bool changed = false;
+        for (ConnectionPointIn *point : inputPoints(element))
+            changed
+                |= std::erase_if(point->connections, [&](const Connection &c) { return c.refLocalId == localId; }) > 0;
+        if (changed)
+            rewired.push_back(header(element).localId);
+    }
+    touch();
+    Q_EMIT elementsRemoved(ref, {localId});
+    for (quint64 target : rewired)
+        Q_EMIT connectionsChanged(ref, target);
+    return true;
+}
+
+bool ProjectModel::moveElement(const BodyRef &ref, quint64 localId, Position position)
+{
+    Element *element = findMutableElement(ref, localId);
+    if (!element || header(*element).position == position)
+        return false;
+    header(*element).position = position;
+    touch();
+    Q_EMIT elementsChanged(ref, {localId});
+    return true;
+}
+
+bool ProjectModel::changeElement(const BodyRef &ref, const Element &element)
+{
+    Element *existing = findMutableElement(ref, header(element).localId);
+    if (!existing || *existing == element)
+        return false;
+    *existing = element;
+    touch();
+    Q_EMIT elementsChanged(ref, {header(element).localId});
+    return true;
+}
+
+bool ProjectModel::connect(const BodyRef &ref, quint64 target, int pin, const Connection &connection)
+{
+    Element *element = findMutableElement(ref, target);
+    if (!element || !findMutableElement(ref, connection.refLocalId))
+        return false;
+    const std::vector<ConnectionPointIn *> pins = inputPoints(*element);
+    if (pin < 0 || std::size_t(pin) >= pins.size())
+        return false;
+    pins[std::size_t(pin)]->connections.push_back(connection);
+    touch();
+    Q_EMIT connectionsChanged(ref, target);
+    return true;
+}
+
+bool ProjectModel::disconnect(
+    const BodyRef &ref, quint64 target, int pin, quint64 source, const std::optional<QString> &formalParameter)
+{
+    Element *element = findMutableElement(ref, target);
+    if (!element)
+        return false;
+    const std::vector<ConnectionPointIn *> pins = inputPoints(*element);
+    if (pin < 0 || std::size_t(pin) >= pins.size())
+        return false;
+    std::vector<Connection> &connections = pins[std::size_t(pin)]->connections;
+    const auto it = std::ranges::find_if(connections,
+        [&](const Connection &c) { return c.refLocalId == source && c.formalParameter == formalParameter; });
+    if (it == connections.end())
+        return false;
+    connections.erase(it);
+    touch();
+    Q_EMIT connectionsChanged(ref, target);
+    return true;
+}
+
+const Element *ProjectModel::element(const BodyRef &ref, quint64 localId) const
+{
+    return const_cast<ProjectModel *>(this)->findMutableElement(ref, localId);
+}
+
+int ProjectModel::elementIndex(const BodyRef &ref, quint64 localId) const
+{
+    const Body *b = body(ref);
+    return b && b->isGraphical() ? elementIndexIn(*b->elements(), localId) : -1;
+}
+
+quint64 ProjectModel::nextLocalId(const BodyRef &ref) const
+{
+    const Body *b = body(ref);
+    quint64 highest = 0;
+    if (b && b->isGraphical()) {
+        for (const Element &element : *b->elements())
+            highest = std::max(highest, header(element).localId);
+    }
+    return highest + 1;
+}
+
+// ---- lookups ------------------------------------------------------------------------------
+
 Pou *ProjectModel::findMutablePou(PouId id)
 {
     return const_cast<Pou *>(m_project.findPou(id));
 }
 
+Body *ProjectModel::findMutableBody(const BodyRef &ref)
+{
+    Pou *pou = findMutablePou(ref.pou);
+    if (!pou)
+        return nullptr;
+    if (ref.part == BodyRef::Part::Pou)
+        return pou->bodies.empty() ? nullptr : &pou->bodies.front();
+    return withParts(*pou, ref.part, [&](auto &parts) -> Body * {
+        auto *part = findByName(parts, ref.name);
+        return part ? &part->body : nullptr;
+    });
+}
+
+Element *ProjectModel::findMutableElement(const BodyRef &ref, quint64 localId)
+{
+    Body *body = findMutableBody(ref);
+    const int index = body && body->isGraphical() ? elementIndexIn(*body->elements(), localId) : -1;
+    return index < 0 ? nullptr : &(*body->elements())[std::size_t(index)];
+}
+
+Interface *ProjectModel::findMutableInterface(PouId id)
+{
+    Pou *pou = findMutablePou(id);
+    return pou && pou->pouInterface ? &*pou->pouInterface : nullptr;
+}
+
 PouId ProjectModel::allocatePouId()
 {
-    return PouId{m_nextPouId++};
+    return PouId {m_nextPouId++};
 }
 
 } // namespace iec::model

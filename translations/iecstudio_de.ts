@@ -2,11 +2,14 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
-    <name>iec::app::MainWindow</name>
+    <name>iec::app::DocumentArea</name>
     <message>
-        <source>IEC Studio</source>
-        <translation>IEC Studio</translation>
+        <source>This body is written in %1. Its editor is not available in this version; the body is kept unchanged when the project is saved.</source>
+        <translation>Dieser Rumpf ist in %1 geschrieben. Sein Editor ist in dieser Version noch nicht verfügbar; der Rumpf bleibt beim Speichern unverändert erhalten.</translation>
     </message>
+</context>
+<context>
+    <name>iec::app::MainWindow</name>
     <message>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
@@ -76,10 +79,6 @@
         <translation>Meldungen</translation>
     </message>
     <message>
-        <source>Open a POU from the project tree to edit it.</source>
-        <translation>Öffnen Sie einen Baustein im Projektbaum, um ihn zu bearbeiten.</translation>
-    </message>
-    <message>
         <source>About IEC Studio</source>
         <translation>Über IEC Studio</translation>
     </message>
@@ -90,6 +89,70 @@
     <message>
         <source>&amp;Settings...</source>
         <translation>&amp;Einstellungen...</translation>
+    </message>
+    <message>
+        <source>&amp;New Project</source>
+        <translation>&amp;Neues Projekt</translation>
+    </message>
+    <message>
+        <source>&amp;Open...</source>
+        <translation>Ö&amp;ffnen...</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <source>Save &amp;As...</source>
+        <translation>Speichern &amp;unter...</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <source>%1[*] - IEC Studio</source>
+        <translation>%1[*] - IEC Studio</translation>
+    </message>
+    <message>
+        <source>%1 is not a PLCopen XML project.</source>
+        <translation>%1 ist kein PLCopen-XML-Projekt.</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>The project has unsaved changes. Save them first?</source>
+        <translation>Das Projekt hat ungespeicherte Änderungen. Zuerst speichern?</translation>
+    </message>
+    <message>
+        <source>Open Project</source>
+        <translation>Projekt öffnen</translation>
+    </message>
+    <message>
+        <source>PLCopen XML projects (*.xml);;All files (*)</source>
+        <translation>PLCopen-XML-Projekte (*.xml);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>The project could not be opened: %1</source>
+        <translation>Das Projekt konnte nicht geöffnet werden: %1</translation>
+    </message>
+    <message>
+        <source>Save Project</source>
+        <translation>Projekt speichern</translation>
+    </message>
+    <message>
+        <source>The project could not be saved: %1</source>
+        <translation>Das Projekt konnte nicht gespeichert werden: %1</translation>
+    </message>
+    <message>
+        <source>Save Project As</source>
+        <translation>Projekt speichern unter</translation>
+    </message>
+    <message>
+        <source>PLCopen XML projects (*.xml)</source>
+        <translation>PLCopen-XML-Projekte (*.xml)</translation>
     </message>
 </context>
 <context>
@@ -133,6 +196,69 @@
     <message>
         <source>Errors: %1, warnings: %2</source>
         <translation>Fehler: %1, Warnungen: %2</translation>
+    </message>
+</context>
+<context>
+    <name>iec::app::ProjectTreeModel</name>
+    <message>
+        <source>Programs</source>
+        <translation>Programme</translation>
+    </message>
+    <message>
+        <source>Function Blocks</source>
+        <translation>Funktionsbausteine</translation>
+    </message>
+    <message>
+        <source>Functions</source>
+        <translation>Funktionen</translation>
+    </message>
+    <message>
+        <source>Data Types</source>
+        <translation>Datentypen</translation>
+    </message>
+    <message>
+        <source>Global Variables</source>
+        <translation>Globale Variablen</translation>
+    </message>
+    <message>
+        <source>Configurations</source>
+        <translation>Konfigurationen</translation>
+    </message>
+    <message>
+        <source>%1 (PRG)</source>
+        <translation>%1 (PRG)</translation>
+    </message>
+    <message>
+        <source>%1 (FB)</source>
+        <translation>%1 (FB)</translation>
+    </message>
+    <message>
+        <source>%1 (FUN)</source>
+        <translation>%1 (FUN)</translation>
+    </message>
+    <message>
+        <source>%1, written in %2</source>
+        <translation>%1, geschrieben in %2</translation>
+    </message>
+    <message>
+        <source>Structured Text (ST)</source>
+        <translation>Strukturierter Text (ST)</translation>
+    </message>
+    <message>
+        <source>Instruction List (IL)</source>
+        <translation>Anweisungsliste (AWL)</translation>
+    </message>
+    <message>
+        <source>Ladder Diagram (LD)</source>
+        <translation>Kontaktplan (KOP)</translation>
+    </message>
+    <message>
+        <source>Function Block Diagram (FBD)</source>
+        <translation>Funktionsbausteinsprache (FUP)</translation>
+    </message>
+    <message>
+        <source>Sequential Function Chart (SFC)</source>
+        <translation>Ablaufsprache (AS)</translation>
     </message>
 </context>
 <context>
@@ -183,6 +309,324 @@
     </message>
 </context>
 <context>
+    <name>iec::editors::CodeEditor</name>
+    <message>
+        <source>Go to Definition</source>
+        <translation>Gehe zur Definition</translation>
+    </message>
+    <message>
+        <source>Complete</source>
+        <translation>Vervollständigen</translation>
+    </message>
+    <message>
+        <source>Input Assistant...</source>
+        <translation>Eingabehilfe...</translation>
+    </message>
+    <message>
+        <source>Toggle Comment</source>
+        <translation>Kommentar ein/aus</translation>
+    </message>
+    <message>
+        <source>Fold All</source>
+        <translation>Alles einklappen</translation>
+    </message>
+    <message>
+        <source>Unfold All</source>
+        <translation>Alles ausklappen</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::FindReplaceBar</name>
+    <message>
+        <source>Find</source>
+        <translation>Suchen</translation>
+    </message>
+    <message>
+        <source>Replace with</source>
+        <translation>Ersetzen durch</translation>
+    </message>
+    <message>
+        <source>Match case</source>
+        <translation>Groß-/Kleinschreibung</translation>
+    </message>
+    <message>
+        <source>Whole words</source>
+        <translation>Ganze Wörter</translation>
+    </message>
+    <message>
+        <source>Previous</source>
+        <translation>Vorheriges</translation>
+    </message>
+    <message>
+        <source>Next</source>
+        <translation>Nächstes</translation>
+    </message>
+    <message>
+        <source>Replace</source>
+        <translation>Ersetzen</translation>
+    </message>
+    <message>
+        <source>Replace All</source>
+        <translation>Alle ersetzen</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <source>Find:</source>
+        <translation>Suchen:</translation>
+    </message>
+    <message>
+        <source>Replace:</source>
+        <translation>Ersetzen:</translation>
+    </message>
+    <message>
+        <source>Not found</source>
+        <translation>Nicht gefunden</translation>
+    </message>
+    <message>
+        <source>Search wrapped</source>
+        <translation>Suche am Anfang fortgesetzt</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n replaced</source>
+        <translation>
+            <numerusform>%n ersetzt</numerusform>
+            <numerusform>%n ersetzt</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::InputAssistantDialog</name>
+    <message>
+        <source>Input Assistant</source>
+        <translation>Eingabehilfe</translation>
+    </message>
+    <message>
+        <source>Operators</source>
+        <translation>Operatoren</translation>
+    </message>
+    <message>
+        <source>Operands</source>
+        <translation>Operanden</translation>
+    </message>
+    <message>
+        <source>Functions</source>
+        <translation>Funktionen</translation>
+    </message>
+    <message>
+        <source>Function blocks</source>
+        <translation>Funktionsbausteine</translation>
+    </message>
+    <message>
+        <source>Filter</source>
+        <translation>Filter</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Beschreibung</translation>
+    </message>
+    <message>
+        <source>IL operators</source>
+        <translation>AWL-Operatoren</translation>
+    </message>
+    <message>
+        <source>ST operators</source>
+        <translation>ST-Operatoren</translation>
+    </message>
+    <message>
+        <source>Variables</source>
+        <translation>Variablen</translation>
+    </message>
+    <message>
+        <source>Boolean constants</source>
+        <translation>Boolesche Konstanten</translation>
+    </message>
+    <message>
+        <source>User-defined functions</source>
+        <translation>Eigene Funktionen</translation>
+    </message>
+    <message>
+        <source>User-defined function blocks</source>
+        <translation>Eigene Funktionsbausteine</translation>
+    </message>
+    <message>
+        <source>Programs</source>
+        <translation>Programme</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::StandardLibrary</name>
+    <message>
+        <source>Arithmetic</source>
+        <translation>Arithmetik</translation>
+    </message>
+    <message>
+        <source>Numeric</source>
+        <translation>Numerisch</translation>
+    </message>
+    <message>
+        <source>Bit shift</source>
+        <translation>Bitschieben</translation>
+    </message>
+    <message>
+        <source>Selection</source>
+        <translation>Auswahl</translation>
+    </message>
+    <message>
+        <source>Comparison</source>
+        <translation>Vergleich</translation>
+    </message>
+    <message>
+        <source>String</source>
+        <translation>Zeichenkette</translation>
+    </message>
+    <message>
+        <source>Type conversion</source>
+        <translation>Typumwandlung</translation>
+    </message>
+    <message>
+        <source>Bistable</source>
+        <translation>Bistabil</translation>
+    </message>
+    <message>
+        <source>Edge detection</source>
+        <translation>Flankenerkennung</translation>
+    </message>
+    <message>
+        <source>Counters</source>
+        <translation>Zähler</translation>
+    </message>
+    <message>
+        <source>Timers</source>
+        <translation>Zeitgeber</translation>
+    </message>
+    <message>
+        <source>Load the operand into the current result</source>
+        <translation>Operand in das aktuelle Ergebnis laden</translation>
+    </message>
+    <message>
+        <source>Store the current result in the operand</source>
+        <translation>Aktuelles Ergebnis im Operanden speichern</translation>
+    </message>
+    <message>
+        <source>Set the Boolean operand to TRUE if the current result is TRUE</source>
+        <translation>Booleschen Operanden auf TRUE setzen, wenn das aktuelle Ergebnis TRUE ist</translation>
+    </message>
+    <message>
+        <source>Reset the Boolean operand to FALSE if the current result is TRUE</source>
+        <translation>Booleschen Operanden auf FALSE rücksetzen, wenn das aktuelle Ergebnis TRUE ist</translation>
+    </message>
+    <message>
+        <source>Bitwise AND</source>
+        <translation>Bitweises UND</translation>
+    </message>
+    <message>
+        <source>Bitwise OR</source>
+        <translation>Bitweises ODER</translation>
+    </message>
+    <message>
+        <source>Bitwise exclusive OR</source>
+        <translation>Bitweises exklusives ODER</translation>
+    </message>
+    <message>
+        <source>Addition</source>
+        <translation>Addition</translation>
+    </message>
+    <message>
+        <source>Subtraction</source>
+        <translation>Subtraktion</translation>
+    </message>
+    <message>
+        <source>Multiplication</source>
+        <translation>Multiplikation</translation>
+    </message>
+    <message>
+        <source>Division</source>
+        <translation>Division</translation>
+    </message>
+    <message>
+        <source>Greater than (&gt;)</source>
+        <translation>Größer als (&gt;)</translation>
+    </message>
+    <message>
+        <source>Greater than or equal (&gt;=)</source>
+        <translation>Größer oder gleich (&gt;=)</translation>
+    </message>
+    <message>
+        <source>Equal (=)</source>
+        <translation>Gleich (=)</translation>
+    </message>
+    <message>
+        <source>Not equal (&lt;&gt;)</source>
+        <translation>Ungleich (&lt;&gt;)</translation>
+    </message>
+    <message>
+        <source>Less than or equal (&lt;=)</source>
+        <translation>Kleiner oder gleich (&lt;=)</translation>
+    </message>
+    <message>
+        <source>Less than (&lt;)</source>
+        <translation>Kleiner als (&lt;)</translation>
+    </message>
+    <message>
+        <source>Jump to the label</source>
+        <translation>Sprung zur Marke</translation>
+    </message>
+    <message>
+        <source>Call a function block instance</source>
+        <translation>Funktionsbaustein-Instanz aufrufen</translation>
+    </message>
+    <message>
+        <source>Return to the calling POU</source>
+        <translation>Rückkehr zum aufrufenden Baustein</translation>
+    </message>
+    <message>
+        <source>Evaluate the deferred operation</source>
+        <translation>Zurückgestellte Operation auswerten</translation>
+    </message>
+    <message>
+        <source>negated operand</source>
+        <translation>negierter Operand</translation>
+    </message>
+    <message>
+        <source>deferred until )</source>
+        <translation>zurückgestellt bis )</translation>
+    </message>
+    <message>
+        <source>only if the current result is TRUE</source>
+        <translation>nur wenn das aktuelle Ergebnis TRUE ist</translation>
+    </message>
+    <message>
+        <source>only if the current result is FALSE</source>
+        <translation>nur wenn das aktuelle Ergebnis FALSE ist</translation>
+    </message>
+    <message>
+        <source>Assignment</source>
+        <translation>Zuweisung</translation>
+    </message>
+    <message>
+        <source>Modulo</source>
+        <translation>Modulo</translation>
+    </message>
+    <message>
+        <source>Negation</source>
+        <translation>Negation</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::AddDataTypeCommand</name>
+    <message>
+        <source>Add data type %1</source>
+        <translation>Datentyp %1 hinzufügen</translation>
+    </message>
+</context>
+<context>
     <name>iec::model::AddPouCommand</name>
     <message>
         <source>Add POU %1</source>
@@ -190,10 +634,228 @@
     </message>
 </context>
 <context>
+    <name>iec::model::AddPouPartCommand</name>
+    <message>
+        <source>Add action %1</source>
+        <translation>Aktion %1 hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add transition %1</source>
+        <translation>Transition %1 hinzufügen</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::AddVariableCommand</name>
+    <message>
+        <source>Add variable %1</source>
+        <translation>Variable %1 hinzufügen</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::ChangeDataTypeCommand</name>
+    <message>
+        <source>Change data type %1</source>
+        <translation>Datentyp %1 ändern</translation>
+    </message>
+    <message>
+        <source>Rename %1 to %2</source>
+        <translation>%1 in %2 umbenennen</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::ChangeElementCommand</name>
+    <message>
+        <source>Change %1</source>
+        <translation>%1 ändern</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::ChangeVariableCommand</name>
+    <message>
+        <source>Change variable %1</source>
+        <translation>Variable %1 ändern</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::ConnectCommand</name>
+    <message>
+        <source>Connect</source>
+        <translation>Verbinden</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::DisconnectCommand</name>
+    <message>
+        <source>Disconnect</source>
+        <translation>Verbindung lösen</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::DuplicatePouCommand</name>
+    <message>
+        <source>Duplicate POU as %1</source>
+        <translation>Baustein als %1 duplizieren</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::InsertElementCommand</name>
+    <message>
+        <source>Insert %1</source>
+        <translation>%1 einfügen</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::MoveElementsCommand</name>
+    <message numerus="yes">
+        <source>Move %n element(s)</source>
+        <translation>
+            <numerusform>%n Element verschieben</numerusform>
+            <numerusform>%n Elemente verschieben</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::RemoveDataTypeCommand</name>
+    <message>
+        <source>Delete data type %1</source>
+        <translation>Datentyp %1 löschen</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::RemoveElementCommand</name>
+    <message>
+        <source>Delete %1</source>
+        <translation>%1 löschen</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::RemovePouCommand</name>
+    <message>
+        <source>Delete POU %1</source>
+        <translation>Baustein %1 löschen</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::RemovePouPartCommand</name>
+    <message>
+        <source>Delete action %1</source>
+        <translation>Aktion %1 löschen</translation>
+    </message>
+    <message>
+        <source>Delete transition %1</source>
+        <translation>Transition %1 löschen</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::RemoveVariableCommand</name>
+    <message>
+        <source>Delete variable %1</source>
+        <translation>Variable %1 löschen</translation>
+    </message>
+</context>
+<context>
     <name>iec::model::RenamePouCommand</name>
     <message>
         <source>Rename %1 to %2</source>
         <translation>%1 in %2 umbenennen</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::RenamePouPartCommand</name>
+    <message>
+        <source>Rename %1 to %2</source>
+        <translation>%1 in %2 umbenennen</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::SetBodyTextCommand</name>
+    <message>
+        <source>Edit text</source>
+        <translation>Text bearbeiten</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::SetInterfaceCommand</name>
+    <message>
+        <source>Edit declarations</source>
+        <translation>Deklarationen bearbeiten</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::plcopen::Reader</name>
+    <message>
+        <source>The elements are nested too deeply; the content below is skipped.</source>
+        <translation>Die Elemente sind zu tief verschachtelt; der Inhalt darunter wird übersprungen.</translation>
+    </message>
+    <message>
+        <source>The attribute %1=&quot;%2&quot; of &lt;%3&gt; has an invalid value; it is kept as written.</source>
+        <translation>Das Attribut %1=&quot;%2&quot; von &lt;%3&gt; hat einen ungültigen Wert; es bleibt wie geschrieben erhalten.</translation>
+    </message>
+    <message>
+        <source>&lt;%1&gt; lacks the required attribute &apos;%2&apos;.</source>
+        <translation>&lt;%1&gt; fehlt das erforderliche Attribut &apos;%2&apos;.</translation>
+    </message>
+    <message>
+        <source>&lt;%1&gt; lacks the required element &lt;%2&gt;.</source>
+        <translation>&lt;%1&gt; fehlt das erforderliche Element &lt;%2&gt;.</translation>
+    </message>
+    <message>
+        <source>Unknown attribute &apos;%1&apos; on &lt;%2&gt; is kept as it is.</source>
+        <translation>Das unbekannte Attribut &apos;%1&apos; an &lt;%2&gt; bleibt unverändert erhalten.</translation>
+    </message>
+    <message>
+        <source>Unknown attribute &apos;%1&apos; on &lt;%2&gt; is ignored.</source>
+        <translation>Das unbekannte Attribut &apos;%1&apos; an &lt;%2&gt; wird ignoriert.</translation>
+    </message>
+    <message>
+        <source>Unknown element &lt;%1&gt; in &lt;%2&gt; is kept as it is.</source>
+        <translation>Das unbekannte Element &lt;%1&gt; in &lt;%2&gt; bleibt unverändert erhalten.</translation>
+    </message>
+    <message>
+        <source>Unknown element &lt;%1&gt; in &lt;%2&gt; is ignored.</source>
+        <translation>Das unbekannte Element &lt;%1&gt; in &lt;%2&gt; wird ignoriert.</translation>
+    </message>
+    <message>
+        <source>A declaration in addData is nested too deeply to read; it is kept as it is.</source>
+        <translation>Eine Deklaration in addData ist zu tief verschachtelt; sie bleibt unverändert erhalten.</translation>
+    </message>
+    <message>
+        <source>&lt;%1&gt; names no data type.</source>
+        <translation>&lt;%1&gt; nennt keinen Datentyp.</translation>
+    </message>
+    <message>
+        <source>The data type &lt;%1&gt; is not in the PLCopen schema; it is kept by name.</source>
+        <translation>Der Datentyp &lt;%1&gt; gehört nicht zum PLCopen-Schema; er bleibt mit seinem Namen erhalten.</translation>
+    </message>
+    <message>
+        <source>The namespace &apos;%1&apos; is not PLCopen TC6 XML 2.01; the file is read anyway.</source>
+        <translation>Der Namensraum &apos;%1&apos; ist nicht PLCopen TC6 XML 2.01; die Datei wird trotzdem gelesen.</translation>
+    </message>
+    <message>
+        <source>The file is not well-formed XML: %1.</source>
+        <translation>Die Datei ist kein wohlgeformtes XML: %1.</translation>
+    </message>
+    <message>
+        <source>The root element is &lt;%1&gt;, not &lt;project&gt;: this is not a PLCopen XML file.</source>
+        <translation>Das Wurzelelement ist &lt;%1&gt;, nicht &lt;project&gt;: dies ist keine PLCopen-XML-Datei.</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2.</source>
+        <translation>%1 kann nicht geöffnet werden: %2.</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::plcopen::Writer</name>
+    <message>
+        <source>Cannot save %1: %2.</source>
+        <translation>%1 kann nicht gespeichert werden: %2.</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Open Project</source>
+        <translation>Projekt öffnen</translation>
     </message>
 </context>
 </TS>

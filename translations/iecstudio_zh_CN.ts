@@ -2,11 +2,14 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
-    <name>iec::app::MainWindow</name>
+    <name>iec::app::DocumentArea</name>
     <message>
-        <source>IEC Studio</source>
-        <translation>IEC Studio</translation>
+        <source>This body is written in %1. Its editor is not available in this version; the body is kept unchanged when the project is saved.</source>
+        <translation>此程序体使用 %1 编写。本版本尚未提供该语言的编辑器；保存项目时程序体保持不变。</translation>
     </message>
+</context>
+<context>
+    <name>iec::app::MainWindow</name>
     <message>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
@@ -76,10 +79,6 @@
         <translation>消息</translation>
     </message>
     <message>
-        <source>Open a POU from the project tree to edit it.</source>
-        <translation>在项目树中打开一个程序组织单元(POU)进行编辑。</translation>
-    </message>
-    <message>
         <source>About IEC Studio</source>
         <translation>关于 IEC Studio</translation>
     </message>
@@ -90,6 +89,70 @@
     <message>
         <source>&amp;Settings...</source>
         <translation>设置(&amp;S)...</translation>
+    </message>
+    <message>
+        <source>&amp;New Project</source>
+        <translation>新建项目(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;Open...</source>
+        <translation>打开(&amp;O)...</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>保存(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Save &amp;As...</source>
+        <translation>另存为(&amp;A)...</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>未命名</translation>
+    </message>
+    <message>
+        <source>%1[*] - IEC Studio</source>
+        <translation>%1[*] - IEC Studio</translation>
+    </message>
+    <message>
+        <source>%1 is not a PLCopen XML project.</source>
+        <translation>%1 不是 PLCopen XML 项目。</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>未保存的更改</translation>
+    </message>
+    <message>
+        <source>The project has unsaved changes. Save them first?</source>
+        <translation>项目有未保存的更改。是否先保存？</translation>
+    </message>
+    <message>
+        <source>Open Project</source>
+        <translation>打开项目</translation>
+    </message>
+    <message>
+        <source>PLCopen XML projects (*.xml);;All files (*)</source>
+        <translation>PLCopen XML 项目 (*.xml);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>The project could not be opened: %1</source>
+        <translation>无法打开项目：%1</translation>
+    </message>
+    <message>
+        <source>Save Project</source>
+        <translation>保存项目</translation>
+    </message>
+    <message>
+        <source>The project could not be saved: %1</source>
+        <translation>无法保存项目：%1</translation>
+    </message>
+    <message>
+        <source>Save Project As</source>
+        <translation>项目另存为</translation>
+    </message>
+    <message>
+        <source>PLCopen XML projects (*.xml)</source>
+        <translation>PLCopen XML 项目 (*.xml)</translation>
     </message>
 </context>
 <context>
@@ -133,6 +196,69 @@
     <message>
         <source>Errors: %1, warnings: %2</source>
         <translation>错误：%1，警告：%2</translation>
+    </message>
+</context>
+<context>
+    <name>iec::app::ProjectTreeModel</name>
+    <message>
+        <source>Programs</source>
+        <translation>程序</translation>
+    </message>
+    <message>
+        <source>Function Blocks</source>
+        <translation>功能块</translation>
+    </message>
+    <message>
+        <source>Functions</source>
+        <translation>函数</translation>
+    </message>
+    <message>
+        <source>Data Types</source>
+        <translation>数据类型</translation>
+    </message>
+    <message>
+        <source>Global Variables</source>
+        <translation>全局变量</translation>
+    </message>
+    <message>
+        <source>Configurations</source>
+        <translation>配置</translation>
+    </message>
+    <message>
+        <source>%1 (PRG)</source>
+        <translation>%1 (PRG)</translation>
+    </message>
+    <message>
+        <source>%1 (FB)</source>
+        <translation>%1 (FB)</translation>
+    </message>
+    <message>
+        <source>%1 (FUN)</source>
+        <translation>%1 (FUN)</translation>
+    </message>
+    <message>
+        <source>%1, written in %2</source>
+        <translation>%1，使用 %2 编写</translation>
+    </message>
+    <message>
+        <source>Structured Text (ST)</source>
+        <translation>结构化文本 (ST)</translation>
+    </message>
+    <message>
+        <source>Instruction List (IL)</source>
+        <translation>指令表 (IL)</translation>
+    </message>
+    <message>
+        <source>Ladder Diagram (LD)</source>
+        <translation>梯形图 (LD)</translation>
+    </message>
+    <message>
+        <source>Function Block Diagram (FBD)</source>
+        <translation>功能块图 (FBD)</translation>
+    </message>
+    <message>
+        <source>Sequential Function Chart (SFC)</source>
+        <translation>顺序功能图 (SFC)</translation>
     </message>
 </context>
 <context>
@@ -183,6 +309,323 @@
     </message>
 </context>
 <context>
+    <name>iec::editors::CodeEditor</name>
+    <message>
+        <source>Go to Definition</source>
+        <translation>转到定义</translation>
+    </message>
+    <message>
+        <source>Complete</source>
+        <translation>自动完成</translation>
+    </message>
+    <message>
+        <source>Input Assistant...</source>
+        <translation>输入助手...</translation>
+    </message>
+    <message>
+        <source>Toggle Comment</source>
+        <translation>切换注释</translation>
+    </message>
+    <message>
+        <source>Fold All</source>
+        <translation>全部折叠</translation>
+    </message>
+    <message>
+        <source>Unfold All</source>
+        <translation>全部展开</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::FindReplaceBar</name>
+    <message>
+        <source>Find</source>
+        <translation>查找</translation>
+    </message>
+    <message>
+        <source>Replace with</source>
+        <translation>替换为</translation>
+    </message>
+    <message>
+        <source>Match case</source>
+        <translation>区分大小写</translation>
+    </message>
+    <message>
+        <source>Whole words</source>
+        <translation>全字匹配</translation>
+    </message>
+    <message>
+        <source>Previous</source>
+        <translation>上一个</translation>
+    </message>
+    <message>
+        <source>Next</source>
+        <translation>下一个</translation>
+    </message>
+    <message>
+        <source>Replace</source>
+        <translation>替换</translation>
+    </message>
+    <message>
+        <source>Replace All</source>
+        <translation>全部替换</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <source>Find:</source>
+        <translation>查找：</translation>
+    </message>
+    <message>
+        <source>Replace:</source>
+        <translation>替换：</translation>
+    </message>
+    <message>
+        <source>Not found</source>
+        <translation>未找到</translation>
+    </message>
+    <message>
+        <source>Search wrapped</source>
+        <translation>已从头继续查找</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n replaced</source>
+        <translation>
+            <numerusform>已替换 %n 处</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::InputAssistantDialog</name>
+    <message>
+        <source>Input Assistant</source>
+        <translation>输入助手</translation>
+    </message>
+    <message>
+        <source>Operators</source>
+        <translation>运算符</translation>
+    </message>
+    <message>
+        <source>Operands</source>
+        <translation>操作数</translation>
+    </message>
+    <message>
+        <source>Functions</source>
+        <translation>函数</translation>
+    </message>
+    <message>
+        <source>Function blocks</source>
+        <translation>功能块</translation>
+    </message>
+    <message>
+        <source>Filter</source>
+        <translation>筛选</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>描述</translation>
+    </message>
+    <message>
+        <source>IL operators</source>
+        <translation>IL 运算符</translation>
+    </message>
+    <message>
+        <source>ST operators</source>
+        <translation>ST 运算符</translation>
+    </message>
+    <message>
+        <source>Variables</source>
+        <translation>变量</translation>
+    </message>
+    <message>
+        <source>Boolean constants</source>
+        <translation>布尔常量</translation>
+    </message>
+    <message>
+        <source>User-defined functions</source>
+        <translation>用户定义的函数</translation>
+    </message>
+    <message>
+        <source>User-defined function blocks</source>
+        <translation>用户定义的功能块</translation>
+    </message>
+    <message>
+        <source>Programs</source>
+        <translation>程序</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::StandardLibrary</name>
+    <message>
+        <source>Arithmetic</source>
+        <translation>算术</translation>
+    </message>
+    <message>
+        <source>Numeric</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <source>Bit shift</source>
+        <translation>移位</translation>
+    </message>
+    <message>
+        <source>Selection</source>
+        <translation>选择</translation>
+    </message>
+    <message>
+        <source>Comparison</source>
+        <translation>比较</translation>
+    </message>
+    <message>
+        <source>String</source>
+        <translation>字符串</translation>
+    </message>
+    <message>
+        <source>Type conversion</source>
+        <translation>类型转换</translation>
+    </message>
+    <message>
+        <source>Bistable</source>
+        <translation>双稳态</translation>
+    </message>
+    <message>
+        <source>Edge detection</source>
+        <translation>边沿检测</translation>
+    </message>
+    <message>
+        <source>Counters</source>
+        <translation>计数器</translation>
+    </message>
+    <message>
+        <source>Timers</source>
+        <translation>定时器</translation>
+    </message>
+    <message>
+        <source>Load the operand into the current result</source>
+        <translation>将操作数装入当前结果</translation>
+    </message>
+    <message>
+        <source>Store the current result in the operand</source>
+        <translation>将当前结果存入操作数</translation>
+    </message>
+    <message>
+        <source>Set the Boolean operand to TRUE if the current result is TRUE</source>
+        <translation>当前结果为 TRUE 时将布尔操作数置位为 TRUE</translation>
+    </message>
+    <message>
+        <source>Reset the Boolean operand to FALSE if the current result is TRUE</source>
+        <translation>当前结果为 TRUE 时将布尔操作数复位为 FALSE</translation>
+    </message>
+    <message>
+        <source>Bitwise AND</source>
+        <translation>按位与</translation>
+    </message>
+    <message>
+        <source>Bitwise OR</source>
+        <translation>按位或</translation>
+    </message>
+    <message>
+        <source>Bitwise exclusive OR</source>
+        <translation>按位异或</translation>
+    </message>
+    <message>
+        <source>Addition</source>
+        <translation>加法</translation>
+    </message>
+    <message>
+        <source>Subtraction</source>
+        <translation>减法</translation>
+    </message>
+    <message>
+        <source>Multiplication</source>
+        <translation>乘法</translation>
+    </message>
+    <message>
+        <source>Division</source>
+        <translation>除法</translation>
+    </message>
+    <message>
+        <source>Greater than (&gt;)</source>
+        <translation>大于 (&gt;)</translation>
+    </message>
+    <message>
+        <source>Greater than or equal (&gt;=)</source>
+        <translation>大于等于 (&gt;=)</translation>
+    </message>
+    <message>
+        <source>Equal (=)</source>
+        <translation>等于 (=)</translation>
+    </message>
+    <message>
+        <source>Not equal (&lt;&gt;)</source>
+        <translation>不等于 (&lt;&gt;)</translation>
+    </message>
+    <message>
+        <source>Less than or equal (&lt;=)</source>
+        <translation>小于等于 (&lt;=)</translation>
+    </message>
+    <message>
+        <source>Less than (&lt;)</source>
+        <translation>小于 (&lt;)</translation>
+    </message>
+    <message>
+        <source>Jump to the label</source>
+        <translation>跳转到标号</translation>
+    </message>
+    <message>
+        <source>Call a function block instance</source>
+        <translation>调用功能块实例</translation>
+    </message>
+    <message>
+        <source>Return to the calling POU</source>
+        <translation>返回调用它的 POU</translation>
+    </message>
+    <message>
+        <source>Evaluate the deferred operation</source>
+        <translation>计算被推迟的运算</translation>
+    </message>
+    <message>
+        <source>negated operand</source>
+        <translation>取反的操作数</translation>
+    </message>
+    <message>
+        <source>deferred until )</source>
+        <translation>推迟到 ) 执行</translation>
+    </message>
+    <message>
+        <source>only if the current result is TRUE</source>
+        <translation>仅当当前结果为 TRUE 时</translation>
+    </message>
+    <message>
+        <source>only if the current result is FALSE</source>
+        <translation>仅当当前结果为 FALSE 时</translation>
+    </message>
+    <message>
+        <source>Assignment</source>
+        <translation>赋值</translation>
+    </message>
+    <message>
+        <source>Modulo</source>
+        <translation>取模</translation>
+    </message>
+    <message>
+        <source>Negation</source>
+        <translation>取反</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::AddDataTypeCommand</name>
+    <message>
+        <source>Add data type %1</source>
+        <translation>添加数据类型 %1</translation>
+    </message>
+</context>
+<context>
     <name>iec::model::AddPouCommand</name>
     <message>
         <source>Add POU %1</source>
@@ -190,10 +633,227 @@
     </message>
 </context>
 <context>
+    <name>iec::model::AddPouPartCommand</name>
+    <message>
+        <source>Add action %1</source>
+        <translation>添加动作 %1</translation>
+    </message>
+    <message>
+        <source>Add transition %1</source>
+        <translation>添加转换 %1</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::AddVariableCommand</name>
+    <message>
+        <source>Add variable %1</source>
+        <translation>添加变量 %1</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::ChangeDataTypeCommand</name>
+    <message>
+        <source>Change data type %1</source>
+        <translation>修改数据类型 %1</translation>
+    </message>
+    <message>
+        <source>Rename %1 to %2</source>
+        <translation>将 %1 重命名为 %2</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::ChangeElementCommand</name>
+    <message>
+        <source>Change %1</source>
+        <translation>修改 %1</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::ChangeVariableCommand</name>
+    <message>
+        <source>Change variable %1</source>
+        <translation>修改变量 %1</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::ConnectCommand</name>
+    <message>
+        <source>Connect</source>
+        <translation>连接</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::DisconnectCommand</name>
+    <message>
+        <source>Disconnect</source>
+        <translation>断开连接</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::DuplicatePouCommand</name>
+    <message>
+        <source>Duplicate POU as %1</source>
+        <translation>复制 POU 为 %1</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::InsertElementCommand</name>
+    <message>
+        <source>Insert %1</source>
+        <translation>插入 %1</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::MoveElementsCommand</name>
+    <message numerus="yes">
+        <source>Move %n element(s)</source>
+        <translation>
+            <numerusform>移动 %n 个元素</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::RemoveDataTypeCommand</name>
+    <message>
+        <source>Delete data type %1</source>
+        <translation>删除数据类型 %1</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::RemoveElementCommand</name>
+    <message>
+        <source>Delete %1</source>
+        <translation>删除 %1</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::RemovePouCommand</name>
+    <message>
+        <source>Delete POU %1</source>
+        <translation>删除 POU %1</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::RemovePouPartCommand</name>
+    <message>
+        <source>Delete action %1</source>
+        <translation>删除动作 %1</translation>
+    </message>
+    <message>
+        <source>Delete transition %1</source>
+        <translation>删除转换 %1</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::RemoveVariableCommand</name>
+    <message>
+        <source>Delete variable %1</source>
+        <translation>删除变量 %1</translation>
+    </message>
+</context>
+<context>
     <name>iec::model::RenamePouCommand</name>
     <message>
         <source>Rename %1 to %2</source>
         <translation>将 %1 重命名为 %2</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::RenamePouPartCommand</name>
+    <message>
+        <source>Rename %1 to %2</source>
+        <translation>将 %1 重命名为 %2</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::SetBodyTextCommand</name>
+    <message>
+        <source>Edit text</source>
+        <translation>编辑文本</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::SetInterfaceCommand</name>
+    <message>
+        <source>Edit declarations</source>
+        <translation>编辑声明</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::plcopen::Reader</name>
+    <message>
+        <source>The elements are nested too deeply; the content below is skipped.</source>
+        <translation>元素嵌套过深；其下的内容被跳过。</translation>
+    </message>
+    <message>
+        <source>The attribute %1=&quot;%2&quot; of &lt;%3&gt; has an invalid value; it is kept as written.</source>
+        <translation>&lt;%3&gt; 的属性 %1=&quot;%2&quot; 的值无效；按原样保留。</translation>
+    </message>
+    <message>
+        <source>&lt;%1&gt; lacks the required attribute &apos;%2&apos;.</source>
+        <translation>&lt;%1&gt; 缺少必需的属性 &apos;%2&apos;。</translation>
+    </message>
+    <message>
+        <source>&lt;%1&gt; lacks the required element &lt;%2&gt;.</source>
+        <translation>&lt;%1&gt; 缺少必需的元素 &lt;%2&gt;。</translation>
+    </message>
+    <message>
+        <source>Unknown attribute &apos;%1&apos; on &lt;%2&gt; is kept as it is.</source>
+        <translation>&lt;%2&gt; 上的未知属性 &apos;%1&apos; 按原样保留。</translation>
+    </message>
+    <message>
+        <source>Unknown attribute &apos;%1&apos; on &lt;%2&gt; is ignored.</source>
+        <translation>&lt;%2&gt; 上的未知属性 &apos;%1&apos; 被忽略。</translation>
+    </message>
+    <message>
+        <source>Unknown element &lt;%1&gt; in &lt;%2&gt; is kept as it is.</source>
+        <translation>&lt;%2&gt; 中的未知元素 &lt;%1&gt; 按原样保留。</translation>
+    </message>
+    <message>
+        <source>Unknown element &lt;%1&gt; in &lt;%2&gt; is ignored.</source>
+        <translation>&lt;%2&gt; 中的未知元素 &lt;%1&gt; 被忽略。</translation>
+    </message>
+    <message>
+        <source>A declaration in addData is nested too deeply to read; it is kept as it is.</source>
+        <translation>addData 中的声明嵌套过深，无法读取；按原样保留。</translation>
+    </message>
+    <message>
+        <source>&lt;%1&gt; names no data type.</source>
+        <translation>&lt;%1&gt; 没有指定数据类型。</translation>
+    </message>
+    <message>
+        <source>The data type &lt;%1&gt; is not in the PLCopen schema; it is kept by name.</source>
+        <translation>数据类型 &lt;%1&gt; 不属于 PLCopen 模式；按名称保留。</translation>
+    </message>
+    <message>
+        <source>The namespace &apos;%1&apos; is not PLCopen TC6 XML 2.01; the file is read anyway.</source>
+        <translation>命名空间 &apos;%1&apos; 不是 PLCopen TC6 XML 2.01；仍然读取该文件。</translation>
+    </message>
+    <message>
+        <source>The file is not well-formed XML: %1.</source>
+        <translation>该文件不是格式正确的 XML：%1。</translation>
+    </message>
+    <message>
+        <source>The root element is &lt;%1&gt;, not &lt;project&gt;: this is not a PLCopen XML file.</source>
+        <translation>根元素是 &lt;%1&gt; 而不是 &lt;project&gt;：这不是 PLCopen XML 文件。</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2.</source>
+        <translation>无法打开 %1：%2。</translation>
+    </message>
+</context>
+<context>
+    <name>iec::model::plcopen::Writer</name>
+    <message>
+        <source>Cannot save %1: %2.</source>
+        <translation>无法保存 %1：%2。</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Open Project</source>
+        <translation>打开项目</translation>
     </message>
 </context>
 </TS>

@@ -15,8 +15,8 @@ int notAvailableYet(const QStringList &, Io io)
 
 constexpr std::array<Command, 5> kCommands{{
     {"check", "check FILE", "Compile every POU and list the diagnostics; exit 1 on an error.", notAvailableYet},
-    {"info", "info FILE [--json]", "Count POUs, data types, variables and graphical elements.", notAvailableYet},
-    {"convert", "convert IN OUT", "Read a project (.xml or .st) and write it in the format of OUT.", notAvailableYet},
+    {"info", "info FILE [--json]", "Count POUs, data types, variables and graphical elements.", runInfo},
+    {"convert", "convert IN OUT", "Read a PLCopen XML project and write it to OUT.xml (IEC text .st comes with the compiler).", runConvert},
     {"run", "run FILE [--program P] [--cycles N] [--cycle-time 10ms] [--set NAME=VALUE[@CYCLE]]... "
             "[--watch NAME]... [--trace OUT.csv|OUT.vcd]",
      "Run scan cycles on a virtual clock and print the watched values.", notAvailableYet},

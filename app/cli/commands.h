@@ -32,4 +32,8 @@ std::span<const Command> commands();
 
 int printUsage(QTextStream &stream);
 
+// The subcommands, one file each (cmd_*.cpp).
+int runInfo(const QStringList &arguments, Io io);
+int runConvert(const QStringList &arguments, Io io);
+
 } // namespace iec::cli

@@ -1,11 +1,13 @@
 #include "model/projectmodel.h"
 #include "model/undo/poucommands.h"
+#include "modelfixture.h"
 
 #include <QSignalSpy>
 #include <QTest>
 #include <QUndoStack>
 
 using namespace iec::model;
+using namespace iec::test;
 
 class TestProjectModel : public QObject
 {
@@ -17,6 +19,16 @@ private Q_SLOTS:
     void renameChangesNameAndKeepsId();
     void removeUnknownPouChangesNothing();
     void resetKeepsGivenIdsAndNumbersTheRest();
+    void duplicateMakesAnOrdinaryCopyAfterTheOriginal();
+    void actionsAndTransitions();
+    void dataTypes();
+    void variables();
+    void insertElementFindsAFreeLocalId_data();
+    void insertElementFindsAFreeLocalId();
+    void removeElementDropsItsWires();
+    void moveToTheSamePlaceChangesNothing();
+    void connectAndDisconnect();
+    void bodyText();
     void addPouCommandRedoUndoRedo();
     void renameCommandsMergeIntoOneStep();
 };
@@ -71,10 +83,10 @@ void TestProjectModel::removeUnknownPouChangesNothing()
     QSignalSpy removed(&model, &ProjectModel::pouRemoved);
     const quint64 revision = model.revision();
 
-    QVERIFY(!model.removePou(PouId{999}));
+    QVERIFY(!model.removePou(PouId {999}));
     QCOMPARE(removed.count(), 0);
     QCOMPARE(model.revision(), revision);
-    QCOMPARE(model.project().pous.size(), std::size_t{1});
+    QCOMPARE(model.project().types.pous.size(), std::size_t {1});
 }
 
 void TestProjectModel::resetKeepsGivenIdsAndNumbersTheRest()
@@ -82,15 +94,194 @@ void TestProjectModel::resetKeepsGivenIdsAndNumbersTheRest()
     ProjectModel model;
     QSignalSpy reset(&model, &ProjectModel::projectReset);
     Project project;
-    project.pous.push_back({.id = PouId{7}, .name = QStringLiteral("A")});
-    project.pous.push_back({.name = QStringLiteral("B")});
+    project.types.pous.push_back({.id = PouId {7}, .name = QStringLiteral("A")});
+    project.types.pous.push_back({.name = QStringLiteral("B")});
 
     model.reset(project);
 
     QCOMPARE(reset.count(), 1);
-    QCOMPARE(model.project().pous.at(0).id, PouId{7});
-    QCOMPARE(model.project().pous.at(1).id, PouId{8});
-    QCOMPARE(model.addPou({.name = QStringLiteral("C")}), PouId{9});
+    QCOMPARE(model.project().types.pous.at(0).id, PouId {7});
+    QCOMPARE(model.project().types.pous.at(1).id, PouId {8});
+    QCOMPARE(model.addPou({.name = QStringLiteral("C")}), PouId {9});
+}
+
+void TestProjectModel::duplicateMakesAnOrdinaryCopyAfterTheOriginal()
+{
+    ProjectModel model;
+    model.reset(everyElementProject());
+    const PouId motor = pouId(model, "Motor");
+    QSignalSpy added(&model, &ProjectModel::pouAdded);
+
+    const PouId copy = model.duplicatePou(motor, QStringLiteral("Motor2"));
+
+    QVERIFY(copy.isValid() && copy != motor);
+    QCOMPARE(added.count(), 1);
+    QCOMPARE(model.pouIndex(copy), model.pouIndex(motor) + 1);
+    const Pou &duplicate = *model.project().findPou(copy);
+    QCOMPARE(duplicate.name, QStringLiteral("Motor2"));
+    QCOMPARE(duplicate.addDataSlot, quint32(0));
+    QCOMPARE(duplicate.actions, model.project().findPou(motor)->actions);
+    QVERIFY(!model.duplicatePou(PouId {999}, QStringLiteral("X")).isValid());
+}
+
+void TestProjectModel::actionsAndTransitions()
+{
+    ProjectModel model;
+    model.reset(everyElementProject());
+    const PouId motor = pouId(model, "Motor");
+    QSignalSpy changed(&model, &ProjectModel::pouPartsChanged);
+    const auto action = BodyRef::Part::Action;
+    const auto transition = BodyRef::Part::Transition;
+
+    QVERIFY(model.addPouPart(
+        motor, action, {.name = QStringLiteral("Start"), .body = Body::withLanguage(BodyLanguage::LD)}, 0));
+    QVERIFY(!model.addPouPart(motor, action, {.name = QStringLiteral("reset")})); // names are case-insensitive
+    QCOMPARE(model.pouPartIndex(motor, action, QStringLiteral("Reset")), 1);
+    QVERIFY(model.renamePouPart(motor, transition, QStringLiteral("Done"), QStringLiteral("Finished")));
+    QCOMPARE(model.body({motor, transition, QStringLiteral("Finished")})->language(), BodyLanguage::IL);
+    QVERIFY(model.removePouPart(motor, action, QStringLiteral("Start")));
+    QVERIFY(!model.removePouPart(motor, action, QStringLiteral("Start")));
+    QCOMPARE(changed.count(), 3);
+    QCOMPARE(changed.at(0).at(0).value<PouId>(), motor);
+}
+
+void TestProjectModel::dataTypes()
+{
+    ProjectModel model;
+    model.reset(everyElementProject());
+    QSignalSpy changed(&model, &ProjectModel::dataTypesChanged);
+
+    QVERIFY(model.addDataType({.name = QStringLiteral("Level")}, 0));
+    QVERIFY(!model.addDataType({.name = QStringLiteral("LEVEL")}));
+    QCOMPARE(model.dataTypeIndex(QStringLiteral("Level")), 0);
+    QVERIFY(model.renameDataType(QStringLiteral("Level"), QStringLiteral("Height")));
+    DataTypeDecl height = *model.project().findDataType(QStringLiteral("Height"));
+    height.baseType.kind = StringType {.wide = true, .length = QStringLiteral("8")};
+    QVERIFY(model.changeDataType(QStringLiteral("Height"), height));
+    QVERIFY(!model.changeDataType(QStringLiteral("Height"), height));
+    QVERIFY(model.removeDataType(QStringLiteral("Height")));
+    QCOMPARE(changed.count(), 4);
+}
+
+void TestProjectModel::variables()
+{
+    ProjectModel model;
+    model.reset(everyElementProject());
+    const PouId chart = pouId(model, "Chart"); // no interface at all
+    QSignalSpy changed(&model, &ProjectModel::variablesChanged);
+
+    QVERIFY(model.addVariable(chart, VarListKind::Input, {.name = QStringLiteral("Go")}));
+    QVERIFY(model.addVariable(chart, VarListKind::Input, {.name = QStringLiteral("Stop")}, 0));
+    QVERIFY(!model.addVariable(chart, VarListKind::Local, {.name = QStringLiteral("go")}));
+    const Interface &declarations = *model.project().findPou(chart)->pouInterface;
+    QCOMPARE(declarations.varLists.size(), std::size_t {1});
+    QCOMPARE(declarations.varLists.front().variables.front().name, QStringLiteral("Stop"));
+    Variable go = *model.findVariable(chart, QStringLiteral("Go"));
+    go.address = QStringLiteral("%IX0.1");
+    QVERIFY(model.changeVariable(chart, QStringLiteral("Go"), go));
+    QVERIFY(model.removeVariable(chart, QStringLiteral("Stop")));
+    QVERIFY(!model.removeVariable(chart, QStringLiteral("Stop")));
+    QVERIFY(model.setInterface(chart, std::nullopt));
+    QCOMPARE(changed.count(), 5);
+    QCOMPARE(changed.at(4).at(0).value<PouId>(), chart);
+}
+
+void TestProjectModel::insertElementFindsAFreeLocalId_data()
+{
+    QTest::addColumn<quint64>("requested");
+    QTest::addColumn<quint64>("given");
+    QTest::newRow("free") << quint64(500) << quint64(500);
+    QTest::newRow("zero") << quint64(0) << quint64(12);
+    QTest::newRow("taken") << quint64(3) << quint64(12);
+}
+
+void TestProjectModel::insertElementFindsAFreeLocalId()
+{
+    QFETCH(quint64, requested);
+    QFETCH(quint64, given);
+    ProjectModel model;
+    model.reset(everyElementProject());
+    const BodyRef ladder = bodyOf(model, "Ladder"); // localIds 1..11
+    QSignalSpy inserted(&model, &ProjectModel::elementsInserted);
+    Contact contact;
+    contact.localId = requested;
+    contact.variable = QStringLiteral("E");
+
+    QCOMPARE(model.insertElement(ladder, contact, 1), given);
+
+    QCOMPARE(inserted.count(), 1);
+    QCOMPARE(inserted.at(0).at(0).value<BodyRef>(), ladder);
+    QCOMPARE(inserted.at(0).at(1).value<QList<quint64>>(), QList<quint64> {given});
+    QCOMPARE(model.elementIndex(ladder, given), 1);
+    QCOMPARE(model.insertElement(bodyOf(model, "Scale"), contact), quint64(0)); // an ST body
+}
+
+void TestProjectModel::removeElementDropsItsWires()
+{
+    ProjectModel model;
+    model.reset(everyElementProject());
+    const BodyRef blocks = bodyOf(model, "Blocks");
+    QSignalSpy removed(&model, &ProjectModel::elementsRemoved);
+    QSignalSpy rewired(&model, &ProjectModel::connectionsChanged);
+
+    QVERIFY(model.removeElement(blocks, 2)); // the TON block feeds outVariable 3 and inOutVariable 4
+
+    QCOMPARE(removed.count(), 1);
+    QCOMPARE(rewired.count(), 2);
+    QCOMPARE(rewired.at(0).at(1).toULongLong(), quint64(3));
+    QCOMPARE(rewired.at(1).at(1).toULongLong(), quint64(4));
+    QVERIFY(std::get<OutVariable>(*model.element(blocks, 3)).connectionPointIn->connections.empty());
+    QVERIFY(!model.element(blocks, 2));
+    QVERIFY(!model.removeElement(blocks, 2));
+}
+
+void TestProjectModel::moveToTheSamePlaceChangesNothing()
+{
+    ProjectModel model;
+    model.reset(everyElementProject());
+    const BodyRef ladder = bodyOf(model, "Ladder");
+    QSignalSpy changed(&model, &ProjectModel::elementsChanged);
+    const quint64 revision = model.revision();
+
+    QVERIFY(!model.moveElement(ladder, 2, {50, 22.5}));
+    QCOMPARE(model.revision(), revision);
+    QVERIFY(model.moveElement(ladder, 2, {60, 22.5}));
+    QCOMPARE(model.revision(), revision + 1);
+    QCOMPARE(changed.count(), 1);
+    QCOMPARE(header(*model.element(ladder, 2)).position, (Position {60, 22.5}));
+}
+
+void TestProjectModel::connectAndDisconnect()
+{
+    ProjectModel model;
+    model.reset(everyElementProject());
+    const BodyRef ladder = bodyOf(model, "Ladder");
+    QSignalSpy changed(&model, &ProjectModel::connectionsChanged);
+
+    QVERIFY(!model.connect(ladder, 6, 1, {.refLocalId = 5})); // a coil has one input pin
+    QVERIFY(!model.connect(ladder, 6, 0, {.refLocalId = 99})); // no such source
+    QVERIFY(model.connect(ladder, 6, 0, {.refLocalId = 5}));
+    QCOMPARE(std::get<Coil>(*model.element(ladder, 6)).connectionPointIn->connections.size(), std::size_t {2});
+    QVERIFY(model.disconnect(ladder, 6, 0, 4));
+    QVERIFY(!model.disconnect(ladder, 6, 0, 4));
+    QCOMPARE(std::get<Coil>(*model.element(ladder, 6)).connectionPointIn->connections.front().refLocalId, quint64(5));
+    QCOMPARE(changed.count(), 2);
+    QCOMPARE(changed.at(0).at(1).toULongLong(), quint64(6));
+}
+
+void TestProjectModel::bodyText()
+{
+    ProjectModel model;
+    model.reset(everyElementProject());
+    QSignalSpy changed(&model, &ProjectModel::bodyTextChanged);
+    const BodyRef reset {pouId(model, "Motor"), BodyRef::Part::Action, QStringLiteral("Reset")};
+
+    QVERIFY(model.setBodyText(reset, QStringLiteral("Count := 1;")));
+    QVERIFY(!model.setBodyText(reset, QStringLiteral("Count := 1;")));
+    QVERIFY(!model.setBodyText(bodyOf(model, "Ladder"), QStringLiteral("x")));
+    QCOMPARE(model.body(reset)->text(), QStringLiteral("Count := 1;"));
+    QCOMPARE(changed.count(), 1);
+    QCOMPARE(changed.at(0).at(0).value<BodyRef>(), reset);
 }
 
 void TestProjectModel::addPouCommandRedoUndoRedo()
@@ -99,10 +290,12 @@ void TestProjectModel::addPouCommandRedoUndoRedo()
     QUndoStack stack;
     const Project before = model.project();
 
-    stack.push(new AddPouCommand(model, {.name = QStringLiteral("Main"), .language = BodyLanguage::SFC}));
+    Pou pou {.name = QStringLiteral("Main")};
+    pou.bodies.push_back(Body::withLanguage(BodyLanguage::SFC));
+    stack.push(new AddPouCommand(model, pou));
     const Project after = model.project();
-    QCOMPARE(after.pous.size(), std::size_t{1});
-    QCOMPARE(after.pous.front().language, BodyLanguage::SFC);
+    QCOMPARE(after.types.pous.size(), std::size_t {1});
+    QCOMPARE(after.types.pous.front().language(), BodyLanguage::SFC);
 
     stack.undo();
     QVERIFY(model.project() == before);

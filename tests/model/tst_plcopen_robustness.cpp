@@ -1,0 +1,287 @@
+// Truncated, mutated, random and hostile input: the reader never crashes or hangs, and every
+// broken input gives at least one diagnostic (with a line for well-formedness errors).
+
+#include "model/plcopen/reader.h"
+#include "model/plcopen/writer.h"
+#include "roundtrip.h"
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QRandomGenerator>
+#include <QTest>
+
+using namespace iec::model;
+using namespace iec::test;
+
+namespace {
+
+constexpr quint32 kSeed = 20260301;
+
+QByteArray readFile(const QString &path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+QByteArray sample(const char *name)
+{
+    if (QByteArray(name).startsWith("fixture:"))
+        return readFile(QStringLiteral(IEC_SOURCE_DIR "/tests/model/fixtures/") + QLatin1String(name + 8));
+    return readFile(corpusPath(QLatin1String(name)));
+}
+
+bool hasError(const plcopen::ReadResult &result)
+{
+    return std::ranges::any_of(
+        result.diagnostics, [](const Diagnostic &d) { return d.severity == Diagnostic::Severity::Error; });
+}
+
+// Whatever was read can be written and read again without a crash.
+void writeAndReadAgain(const plcopen::ReadResult &result)
+{
+    const QByteArray written = plcopen::writeProject(result.project);
+    const plcopen::ReadResult again = plcopen::readProject(written);
+    QVERIFY(!again.diagnostics.empty() || again.ok);
+}
+
+void addSamples()
+{
+    QTest::addColumn<QByteArray>("bytes");
+    for (const char *name : {"beremiz_first_steps.xml", "codesys35sp18_sfc_test.xml", "codesys35sp14_FBDExample.xml",
+             "fixture:every_element.xml"})
+        QTest::newRow(name) << sample(name);
+}
+
+} // namespace
+
+class TestPlcopenRobustness : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void truncatedInputIsAnErrorWithALine_data() { addSamples(); }
+    void truncatedInputIsAnErrorWithALine();
+    void corruptedAttributeValuesAreErrors_data() { addSamples(); }
+    void corruptedAttributeValuesAreErrors();
+    void renamedStartTagsAreErrors_data() { addSamples(); }
+    void renamedStartTagsAreErrors();
+    void flippedBytesNeverCrash_data() { addSamples(); }
+    void flippedBytesNeverCrash();
+    void randomBytesAreErrors();
+    void randomElementTreesGiveDiagnostics();
+    void hostileInput_data();
+    void hostileInput();
+    void missingFileIsAFileError();
+};
+
+void TestPlcopenRobustness::truncatedInputIsAnErrorWithALine()
+{
+    QFETCH(QByteArray, bytes);
+    QVERIFY(!bytes.isEmpty());
+    const qsizetype end = bytes.lastIndexOf("</project>");
+    QRandomGenerator random(kSeed);
+    for (int i = 0; i < 60; ++i) {
+        const qsizetype cut = i == 0 ? 0 : random.bounded(end);
+        const QByteArray truncated = bytes.left(cut);
+        const plcopen::ReadResult result = plcopen::readProject(truncated);
+        QVERIFY2(!result.ok && hasError(result), qPrintable(QStringLiteral("cut at %1").arg(cut)));
+        const int lines = int(truncated.count('\n')) + 1;
+        QVERIFY(result.diagnostics.front().line >= 1);
+        QVERIFY(result.diagnostics.front().line <= lines);
+        QVERIFY(!result.diagnostics.front().message.isEmpty());
+    }
+}
+
+void TestPlcopenRobustness::corruptedAttributeValuesAreErrors()
+{
+    QFETCH(QByteArray, bytes);
+    // Numeric and boolean attributes of the schema: a letter in front makes each one invalid.
+    const QByteArrayList patterns {
+        " localId=\"", " x=\"", " y=\"", " width=\"", " height=\"", " refLocalId=\"", " initialStep=\"", " negated=\""};
+    std::vector<qsizetype> positions;
+    for (const QByteArray &pattern : patterns) {
+        for (qsizetype at = bytes.indexOf(pattern); at >= 0; at = bytes.indexOf(pattern, at + 1))
+            positions.push_back(at + pattern.size());
+    }
+    QVERIFY(positions.size() > 10);
+    QRandomGenerator random(kSeed);
+    for (int i = 0; i < 40; ++i) {
+        QByteArray mutated = bytes;
+        const qsizetype at = positions[random.bounded(qsizetype(positions.size()))];
+        mutated.insert(at, "Z");
+        const plcopen::ReadResult result = plcopen::readProject(mutated);
+        QVERIFY2(hasError(result), qPrintable(QString::fromUtf8(mutated.mid(at - 20, 40))));
+        QCOMPARE(result.diagnostics.front().line, int(mutated.left(at).count('\n')) + 1);
+        writeAndReadAgain(result);
+    }
+}
+
+void TestPlcopenRobustness::renamedStartTagsAreErrors()
+{
+    QFETCH(QByteArray, bytes);
+    // Start tags with content (not "<x/>"): renaming one leaves its end tag unmatched.
+    std::vector<qsizetype> starts;
+    for (qsizetype at = bytes.indexOf('<'); at >= 0; at = bytes.indexOf('<', at + 1)) {
+        const char next = at + 1 < bytes.size() ? bytes[at + 1] : 0;
+        const qsizetype close = bytes.indexOf('>', at);
+        if (std::isalpha(static_cast<unsigned char>(next)) && close > 0 && bytes[close - 1] != '/')
+            starts.push_back(at + 1);
+    }
+    QRandomGenerator random(kSeed);
+    for (int i = 0; i < 40; ++i) {
+        QByteArray mutated = bytes;
+        mutated.insert(starts[random.bounded(qsizetype(starts.size()))], "zz");
+        const plcopen::ReadResult result = plcopen::readProject(mutated);
+        QVERIFY(!result.ok);
+        QVERIFY(hasError(result));
+        QVERIFY(result.diagnostics.front().line >= 1);
+    }
+}
+
+void TestPlcopenRobustness::flippedBytesNeverCrash()
+{
+    QFETCH(QByteArray, bytes);
+    QRandomGenerator random(kSeed);
+    for (int i = 0; i < 40; ++i) {
+        QByteArray mutated = bytes;
+        for (int flips = 0; flips < 8; ++flips)
+            mutated[random.bounded(mutated.size())] = char(random.bounded(256));
+        const plcopen::ReadResult result = plcopen::readProject(mutated);
+        writeAndReadAgain(result);
+    }
+}
+
+void TestPlcopenRobustness::randomBytesAreErrors()
+{
+    QRandomGenerator random(kSeed);
+    for (int i = 0; i < 200; ++i) {
+        QByteArray bytes(random.bounded(4096), Qt::Uninitialized);
+        for (char &byte : bytes)
+            byte = char(random.bounded(256));
+        const plcopen::ReadResult result = plcopen::readProject(bytes);
+        QVERIFY(!result.ok);
+        QVERIFY(hasError(result));
+    }
+}
+
+void TestPlcopenRobustness::randomElementTreesGiveDiagnostics()
+{
+    // Well-formed trees of PLCopen element and attribute names in random places.
+    const char *tags[] = {"fileHeader", "contentHeader", "types", "pous", "pou", "body", "FBD", "SFC", "LD", "ST",
+        "block", "step", "transition", "connectionPointIn", "connection", "position", "addData", "data", "variable",
+        "interface", "localVars", "type", "INT", "derived", "value"};
+    const char *attributes[] = {"name", "localId", "x", "y", "refLocalId", "pouType", "negated", "handleUnknown"};
+    QRandomGenerator random(kSeed);
+    for (int i = 0; i < 200; ++i) {
+        QByteArray xml = "<project>";
+        QByteArrayList open {"project"};
+        for (int n = random.bounded(1, 60); n > 0; --n) {
+            if (open.size() > 1 && random.bounded(3) == 0) {
+                xml += "</" + open.takeLast() + ">";
+                continue;
+            }
+            const QByteArray tag = tags[random.bounded(int(std::size(tags)))];
+            xml += "<" + tag;
+            for (int a = random.bounded(3); a > 0; --a)
+                xml += QByteArray(" ") + attributes[random.bounded(int(std::size(attributes)))] + "=\""
+                    + QByteArray::number(random.bounded(-5, 5)) + "\"";
+            xml += ">";
+            open.push_back(tag);
+        }
+        while (!open.isEmpty())
+            xml += "</" + open.takeLast() + ">";
+        const plcopen::ReadResult result = plcopen::readProject(xml);
+        QVERIFY2(!result.diagnostics.empty(), xml.constData());
+        writeAndReadAgain(result);
+    }
+}
+
+void TestPlcopenRobustness::hostileInput_data()
+{
+    QTest::addColumn<QByteArray>("bytes");
+    QTest::addColumn<QString>("firstMessage");
+    const QByteArray head = "<project><fileHeader companyName=\"c\" productName=\"p\" productVersion=\"1\" "
+                            "creationDateTime=\"2020-01-01T00:00:00\"/><contentHeader name=\"n\"><coordinateInfo>"
+                            "<fbd><scaling x=\"1\" y=\"1\"/></fbd><ld><scaling x=\"1\" y=\"1\"/></ld><sfc><scaling "
+                            "x=\"1\" y=\"1\"/></sfc></coordinateInfo></contentHeader>";
+    const QByteArray tail = "<instances><configurations/></instances></project>";
+    QByteArray deepBodies = head + "<types><dataTypes/><pous><pou name=\"P\" pouType=\"program\"><body><SFC>";
+    for (int i = 0; i < 20000; ++i)
+        deepBodies
+            += "<actionBlock localId=\"1\"><position x=\"0\" y=\"0\"/><action localId=\"0\"><relPosition x=\"0\" "
+               "y=\"0\"/><inline><SFC>";
+    for (int i = 0; i < 20000; ++i)
+        deepBodies += "</SFC></inline></action></actionBlock>";
+    deepBodies += "</SFC></body></pou></pous></types>" + tail;
+    QTest::newRow("deeply nested bodies")
+        << deepBodies << QStringLiteral("The elements are nested too deeply; the content below is skipped.");
+
+    QByteArray deepAddData = head + "<types><dataTypes/><pous/></types>" + tail.left(tail.size() - 10)
+        + "<addData><data name=\"x\" handleUnknown=\"preserve\">";
+    deepAddData += QByteArray("<a>").repeated(200000) + "<pou name=\"P\" pouType=\"program\"/>"
+        + QByteArray("</a>").repeated(200000);
+    deepAddData += "</data></addData></project>";
+    QTest::newRow("deeply nested addData") << deepAddData << QString();
+
+    QByteArray deepPou = head + "<types><dataTypes/><pous/></types>" + tail.left(tail.size() - 10)
+        + "<addData><data name=\"x\" handleUnknown=\"preserve\"><pou name=\"P\" pouType=\"program\">";
+    deepPou += QByteArray("<a>").repeated(200000) + QByteArray("</a>").repeated(200000);
+    deepPou += "</pou></data></addData></project>";
+    QTest::newRow("deep vendor POU")
+        << deepPou << QStringLiteral("A declaration in addData is nested too deeply to read; it is kept as it is.");
+
+    QByteArray entities = "<!DOCTYPE project [<!ENTITY a \"aaaaaaaaaa\"><!ENTITY b \"&a;&a;&a;&a;&a;&a;&a;&a;\">]>"
+        + head + "<types><dataTypes/><pous/></types>" + tail;
+    entities.replace("name=\"n\"", "name=\"&b;&b;&b;&b;&b;&b;&b;&b;&b;&b;\"");
+    QTest::newRow("entity expansion") << entities << QString();
+
+    QByteArray wide = head + "<types><dataTypes/><pous><pou name=\"P\" pouType=\"program\"><body><FBD>";
+    for (int i = 0; i < 50000; ++i)
+        wide += "<unknown" + QByteArray::number(i) + "/>";
+    wide += "</FBD></body></pou></pous></types>" + tail;
+    QTest::newRow("many unknown elements")
+        << wide << QStringLiteral("Unknown element <unknown0> in <FBD> is kept as it is.");
+
+    QByteArray numbers = head
+        + "<types><dataTypes/><pous><pou name=\"P\" pouType=\"program\"><body><FBD>"
+          "<label localId=\"1\" label=\"a\" width=\"1e308\" height=\"1e-300\"><position x=\"nan\" "
+          "y=\"inf\"/></label></FBD></body></pou></pous></types>"
+        + tail;
+    QTest::newRow("extreme numbers") << numbers
+                                     << QStringLiteral(
+                                            "The attribute x=\"nan\" of <position> has an invalid value; it is "
+                                            "kept as written.");
+
+    QTest::newRow("not PLCopen") << QByteArray("<html><body/></html>")
+                                 << QStringLiteral(
+                                        "The root element is <html>, not <project>: this is not a PLCopen XML file.");
+    QTest::newRow("empty") << QByteArray()
+                           << QStringLiteral("The file is not well-formed XML: No document element found.");
+}
+
+void TestPlcopenRobustness::hostileInput()
+{
+    QFETCH(QByteArray, bytes);
+    QFETCH(QString, firstMessage);
+    QElapsedTimer timer;
+    timer.start();
+    const plcopen::ReadResult result = plcopen::readProject(bytes);
+    if (!firstMessage.isEmpty()) {
+        QVERIFY(!result.diagnostics.empty());
+        QCOMPARE(result.diagnostics.front().message, firstMessage);
+    }
+    writeAndReadAgain(result);
+    QVERIFY2(timer.elapsed() < 20000, qPrintable(QString::number(timer.elapsed())));
+}
+
+void TestPlcopenRobustness::missingFileIsAFileError()
+{
+    const plcopen::ReadResult result = plcopen::readProjectFile(QStringLiteral("/nonexistent/project.xml"));
+    QVERIFY(result.fileError);
+    QVERIFY(!result.ok);
+    QCOMPARE(result.diagnostics.size(), std::size_t {1});
+    QVERIFY(result.diagnostics.front().message.startsWith(QStringLiteral("Cannot open /nonexistent/project.xml: ")));
+}
+
+QTEST_GUILESS_MAIN(TestPlcopenRobustness)
+#include "tst_plcopen_robustness.moc"
