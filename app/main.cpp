@@ -2,6 +2,7 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QMessageBox>
 
 int main(int argc, char *argv[])
 {
@@ -20,5 +21,10 @@ int main(int argc, char *argv[])
 
     iec::app::MainWindow window;
     window.show();
+    if (!parser.positionalArguments().isEmpty()) {
+        QString error;
+        if (!window.openProject(parser.positionalArguments().constFirst(), &error))
+            QMessageBox::critical(&window, QApplication::translate("main", "Open Project"), error);
+    }
     return QApplication::exec();
 }

@@ -1,8 +1,13 @@
 #include "app/mainwindow.h"
 
+#include "app/documentarea.h"
 #include "app/messagespane.h"
+#include "app/projecttreemodel.h"
+#include "app/projecttreeview.h"
 #include "app/settingsdialog.h"
 #include "app/uitranslator.h"
+#include "model/plcopen/reader.h"
+#include "model/plcopen/writer.h"
 #include "model/projectmodel.h"
 
 #include <QAction>
@@ -10,12 +15,12 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QEvent>
-#include <QLabel>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
 #include <QStatusBar>
-#include <QTreeWidget>
 #include <QUndoGroup>
 
 namespace iec::app {
@@ -28,10 +33,21 @@ MainWindow::MainWindow(QWidget *parent)
     , m_settings(Settings::load(QSettings()))
 {
     setObjectName(QStringLiteral("MainWindow"));
-    auto *placeholder = new QLabel(this);
-    placeholder->setAlignment(Qt::AlignCenter);
-    placeholder->setObjectName(QStringLiteral("documentArea"));
-    setCentralWidget(placeholder);
+    m_documents = new DocumentArea(*m_projectModel, this);
+    m_documents->setObjectName(QStringLiteral("documentArea"));
+    setCentralWidget(m_documents);
+    connect(m_projectModel, &model::ProjectModel::projectReset, this, &MainWindow::updateWindowTitle);
+    // Every change bumps the revision; the title's [*] compares it with the saved one.
+    for (const auto signal : {&model::ProjectModel::pouAdded, &model::ProjectModel::pouRemoved,
+                              &model::ProjectModel::pouRenamed, &model::ProjectModel::pouPartsChanged,
+                              &model::ProjectModel::variablesChanged})
+        connect(m_projectModel, signal, this, &MainWindow::updateWindowTitle);
+    connect(m_projectModel, &model::ProjectModel::dataTypesChanged, this, &MainWindow::updateWindowTitle);
+    connect(m_projectModel, &model::ProjectModel::bodyTextChanged, this, &MainWindow::updateWindowTitle);
+    connect(m_projectModel, &model::ProjectModel::elementsInserted, this, &MainWindow::updateWindowTitle);
+    connect(m_projectModel, &model::ProjectModel::elementsRemoved, this, &MainWindow::updateWindowTitle);
+    connect(m_projectModel, &model::ProjectModel::elementsChanged, this, &MainWindow::updateWindowTitle);
+    connect(m_projectModel, &model::ProjectModel::connectionsChanged, this, &MainWindow::updateWindowTitle);
 
     createActions();
     createMenus();
@@ -47,6 +63,18 @@ MainWindow::~MainWindow() = default;
 
 void MainWindow::createActions()
 {
+    m_newAction = new QAction(this);
+    m_newAction->setShortcut(QKeySequence::New);
+    connect(m_newAction, &QAction::triggered, this, &MainWindow::newProjectInteractive);
+    m_openAction = new QAction(this);
+    m_openAction->setShortcut(QKeySequence::Open);
+    connect(m_openAction, &QAction::triggered, this, &MainWindow::openProjectInteractive);
+    m_saveAction = new QAction(this);
+    m_saveAction->setShortcut(QKeySequence::Save);
+    connect(m_saveAction, &QAction::triggered, this, &MainWindow::saveInteractive);
+    m_saveAsAction = new QAction(this);
+    m_saveAsAction->setShortcut(QKeySequence::SaveAs);
+    connect(m_saveAsAction, &QAction::triggered, this, &MainWindow::saveAsInteractive);
     m_quitAction = new QAction(this);
     m_quitAction->setShortcut(QKeySequence::Quit);
     m_quitAction->setMenuRole(QAction::QuitRole);
@@ -89,6 +117,11 @@ void MainWindow::createMenus()
 {
     m_fileMenu = menuBar()->addMenu(QString());
     m_fileMenu->setObjectName(QStringLiteral("fileMenu"));
+    m_fileMenu->addAction(m_newAction);
+    m_fileMenu->addAction(m_openAction);
+    m_fileMenu->addAction(m_saveAction);
+    m_fileMenu->addAction(m_saveAsAction);
+    m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_quitAction);
 
     m_editMenu = menuBar()->addMenu(QString());
@@ -119,8 +152,11 @@ void MainWindow::createMenus()
 
 void MainWindow::createDocks()
 {
-    m_projectTree = new QTreeWidget(this);
+    m_projectTreeModel = new ProjectTreeModel(*m_projectModel, this);
+    m_projectTree = new ProjectTreeView(this);
     m_projectTree->setObjectName(QStringLiteral("projectTree"));
+    m_projectTree->setProjectModel(m_projectTreeModel);
+    connect(m_projectTree, &ProjectTreeView::openRequested, m_documents, &DocumentArea::openBody);
     m_projectDock = new QDockWidget(this);
     m_projectDock->setObjectName(QStringLiteral("projectDock"));
     m_projectDock->setWidget(m_projectTree);
@@ -139,7 +175,7 @@ void MainWindow::createDocks()
 
 void MainWindow::retranslateUi()
 {
-    setWindowTitle(tr("IEC Studio"));
+    updateWindowTitle();
     m_fileMenu->setTitle(tr("&File"));
     m_editMenu->setTitle(tr("&Edit"));
     m_viewMenu->setTitle(tr("&View"));
@@ -147,6 +183,10 @@ void MainWindow::retranslateUi()
     m_onlineMenu->setTitle(tr("&Online"));
     m_helpMenu->setTitle(tr("&Help"));
 
+    m_newAction->setText(tr("&New Project"));
+    m_openAction->setText(tr("&Open..."));
+    m_saveAction->setText(tr("&Save"));
+    m_saveAsAction->setText(tr("Save &As..."));
     m_quitAction->setText(tr("&Quit"));
     m_undoAction->setText(tr("&Undo"));
     m_redoAction->setText(tr("&Redo"));
@@ -159,10 +199,7 @@ void MainWindow::retranslateUi()
     m_aboutQtAction->setText(tr("About &Qt"));
 
     m_projectDock->setWindowTitle(tr("Project"));
-    m_projectTree->setHeaderLabel(tr("Project"));
     m_messagesDock->setWindowTitle(tr("Messages"));
-    if (auto *placeholder = qobject_cast<QLabel *>(centralWidget()))
-        placeholder->setText(tr("Open a POU from the project tree to edit it."));
 }
 
 void MainWindow::changeEvent(QEvent *event)
@@ -174,8 +211,153 @@ void MainWindow::changeEvent(QEvent *event)
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
     saveWindowLayout();
     QMainWindow::closeEvent(event);
+}
+
+bool MainWindow::hasUnsavedChanges() const
+{
+    return m_projectModel->revision() != m_savedRevision;
+}
+
+void MainWindow::updateWindowTitle()
+{
+    const QString name = m_currentFile.isEmpty() ? tr("Untitled") : QFileInfo(m_currentFile).fileName();
+    // [*] is where Qt shows the modified marker.
+    setWindowTitle(tr("%1[*] - IEC Studio").arg(name));
+    setWindowModified(hasUnsavedChanges());
+}
+
+namespace {
+
+Message::Severity messageSeverity(model::Diagnostic::Severity severity)
+{
+    switch (severity) {
+    case model::Diagnostic::Severity::Info:
+        return Message::Severity::Info;
+    case model::Diagnostic::Severity::Warning:
+        return Message::Severity::Warning;
+    case model::Diagnostic::Severity::Error:
+        return Message::Severity::Error;
+    }
+    return Message::Severity::Error;
+}
+
+QList<Message> messagesOf(const std::vector<model::Diagnostic> &diagnostics, const QString &fileName)
+{
+    QList<Message> messages;
+    for (const model::Diagnostic &diagnostic : diagnostics) {
+        // Reader diagnostics point into the file, so the location names the file and its line.
+        messages.append({.severity = messageSeverity(diagnostic.severity),
+                         .text = diagnostic.message,
+                         .pouName = diagnostic.pouName.value_or(fileName),
+                         .line = diagnostic.line,
+                         .column = diagnostic.column,
+                         .localId = diagnostic.localId});
+    }
+    return messages;
+}
+
+} // namespace
+
+bool MainWindow::openProject(const QString &path, QString *error)
+{
+    model::plcopen::ReadResult result = model::plcopen::readProjectFile(path);
+    const QString fileName = QFileInfo(path).fileName();
+    m_messages->model().setMessages(QStringLiteral("import"), messagesOf(result.diagnostics, fileName));
+    if (result.fileError || !result.isProject) {
+        if (error)
+            *error = result.diagnostics.empty() ? tr("%1 is not a PLCopen XML project.").arg(fileName)
+                                                : result.diagnostics.front().message;
+        return false;
+    }
+    m_projectModel->reset(std::move(result.project));
+    m_currentFile = QFileInfo(path).absoluteFilePath();
+    m_savedRevision = m_projectModel->revision();
+    updateWindowTitle();
+    return true;
+}
+
+bool MainWindow::saveProject(const QString &path, QString *error)
+{
+    m_documents->flushEdits();
+    if (!model::plcopen::saveProjectFile(m_projectModel->project(), path, error))
+        return false;
+    m_currentFile = QFileInfo(path).absoluteFilePath();
+    m_savedRevision = m_projectModel->revision();
+    updateWindowTitle();
+    return true;
+}
+
+void MainWindow::newProject()
+{
+    m_projectModel->reset({});
+    m_currentFile.clear();
+    m_savedRevision = m_projectModel->revision();
+    m_messages->model().clear();
+    updateWindowTitle();
+}
+
+bool MainWindow::maybeSave()
+{
+    m_documents->flushEdits();
+    if (!hasUnsavedChanges())
+        return true;
+    const auto answer = QMessageBox::warning(this, tr("Unsaved Changes"),
+                                             tr("The project has unsaved changes. Save them first?"),
+                                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save)
+        return saveInteractive();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::newProjectInteractive()
+{
+    if (maybeSave())
+        newProject();
+}
+
+void MainWindow::openProjectInteractive()
+{
+    if (!maybeSave())
+        return;
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Project"), QFileInfo(m_currentFile).path(),
+                                                      tr("PLCopen XML projects (*.xml);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!openProject(path, &error))
+        QMessageBox::critical(this, tr("Open Project"), tr("The project could not be opened: %1").arg(error));
+}
+
+bool MainWindow::saveInteractive()
+{
+    if (m_currentFile.isEmpty())
+        return saveAsInteractive();
+    QString error;
+    if (saveProject(m_currentFile, &error))
+        return true;
+    QMessageBox::critical(this, tr("Save Project"), tr("The project could not be saved: %1").arg(error));
+    return false;
+}
+
+bool MainWindow::saveAsInteractive()
+{
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Project As"), m_currentFile,
+                                                tr("PLCopen XML projects (*.xml)"));
+    if (path.isEmpty())
+        return false;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".xml");
+    QString error;
+    if (saveProject(path, &error))
+        return true;
+    QMessageBox::critical(this, tr("Save Project"), tr("The project could not be saved: %1").arg(error));
+    return false;
 }
 
 void MainWindow::restoreWindowLayout()

@@ -7,7 +7,6 @@
 class QAction;
 class QDockWidget;
 class QMenu;
-class QTreeWidget;
 class QUndoGroup;
 
 namespace iec::model {
@@ -16,7 +15,10 @@ class ProjectModel;
 
 namespace iec::app {
 
+class DocumentArea;
 class MessagesPane;
+class ProjectTreeModel;
+class ProjectTreeView;
 class UiTranslator;
 
 // The IDE's main window: menus, the project tree and messages docks, and the central document
@@ -33,6 +35,16 @@ public:
     [[nodiscard]] QUndoGroup &undoGroup() { return *m_undoGroup; }
     [[nodiscard]] const Settings &settings() const { return m_settings; }
     [[nodiscard]] MessagesPane &messagesPane() { return *m_messages; }
+    [[nodiscard]] DocumentArea &documents() { return *m_documents; }
+    [[nodiscard]] ProjectTreeView &projectTree() { return *m_projectTree; }
+    [[nodiscard]] QString currentFile() const { return m_currentFile; }
+    [[nodiscard]] bool hasUnsavedChanges() const;
+
+    // Non-interactive file operations (the menu commands wrap them with dialogs). On failure they
+    // return false and say why in `error`; the open project stays as it was.
+    bool openProject(const QString &path, QString *error = nullptr);
+    bool saveProject(const QString &path, QString *error = nullptr);
+    void newProject();
 
     // Stores the settings and applies them at once: UI language, editor font, grid, autosave.
     void applySettings(const Settings &settings);
@@ -40,6 +52,10 @@ public:
 public Q_SLOTS:
     void showAboutBox();
     void showSettingsDialog();
+    void newProjectInteractive();
+    void openProjectInteractive();
+    bool saveInteractive();
+    bool saveAsInteractive();
 
 Q_SIGNALS:
     void settingsChanged(const iec::app::Settings &settings);
@@ -56,11 +72,16 @@ private:
     void restoreWindowLayout();
     void saveWindowLayout() const;
     void applyUiLanguage(const QString &localeName);
+    void updateWindowTitle();
+    // Asks whether to save unsaved changes; false when the user cancels.
+    bool maybeSave();
 
     model::ProjectModel *m_projectModel = nullptr;
     QUndoGroup *m_undoGroup = nullptr;
     UiTranslator *m_translator = nullptr;
     Settings m_settings;
+    QString m_currentFile;
+    quint64 m_savedRevision = 0;
 
     QMenu *m_fileMenu = nullptr;
     QMenu *m_editMenu = nullptr;
@@ -69,6 +90,10 @@ private:
     QMenu *m_onlineMenu = nullptr;
     QMenu *m_helpMenu = nullptr;
 
+    QAction *m_newAction = nullptr;
+    QAction *m_openAction = nullptr;
+    QAction *m_saveAction = nullptr;
+    QAction *m_saveAsAction = nullptr;
     QAction *m_quitAction = nullptr;
     QAction *m_undoAction = nullptr;
     QAction *m_redoAction = nullptr;
@@ -82,8 +107,10 @@ private:
 
     QDockWidget *m_projectDock = nullptr;
     QDockWidget *m_messagesDock = nullptr;
-    QTreeWidget *m_projectTree = nullptr;
+    ProjectTreeModel *m_projectTreeModel = nullptr;
+    ProjectTreeView *m_projectTree = nullptr;
     MessagesPane *m_messages = nullptr;
+    DocumentArea *m_documents = nullptr;
 };
 
 } // namespace iec::app

@@ -1,6 +1,9 @@
 #!/usr/bin/env python3
 """Fill translations into a Qt .ts file from a JSON object {source text: translation}.
 
+A translation given as a list fills the plural forms of a %n message, in the order Qt uses for
+the language (German: singular, plural; Chinese: one form).
+
 Usage: scripts/ts_fill.py translations/iecstudio_de.ts MAPPING.json
 Only messages whose source is in the mapping change; they lose type="unfinished".
 Reports the messages of the file that are still unfinished afterwards.
@@ -22,7 +25,15 @@ def main() -> int:
         if translation is None:
             continue
         if source in mapping:
-            translation.text = mapping[source]
+            value = mapping[source]
+            if isinstance(value, list):
+                for form in list(translation):
+                    translation.remove(form)
+                translation.text = None
+                for text in value:
+                    ET.SubElement(translation, "numerusform").text = text
+            else:
+                translation.text = value
             translation.attrib.pop("type", None)
         if translation.get("type") == "unfinished":
             unfinished.append(source)

@@ -9,7 +9,12 @@
 #include <QSpinBox>
 #include <QTemporaryDir>
 #include <QTest>
-#include <QTreeWidget>
+#include "app/documentarea.h"
+#include "app/projecttreemodel.h"
+#include "app/projecttreeview.h"
+#include "editors/text/codeeditor.h"
+#include "model/plcopen/reader.h"
+#include "model/projectmodel.h"
 
 using namespace iec::app;
 
@@ -26,6 +31,8 @@ private Q_SLOTS:
     void settingsPersistAndClamp();
     void settingsDialogEditsACopy();
     void windowLayoutIsRestored();
+    void openEditSaveReopen();
+    void openingAMissingFileKeepsTheProject();
 
 private:
     QTemporaryDir m_configHome;
@@ -77,7 +84,11 @@ void TestMainWindow::opensWithMenusAndDocks()
     auto *projectDock = window.findChild<QDockWidget *>(QStringLiteral("projectDock"));
     QVERIFY(projectDock);
     QVERIFY(projectDock->isVisible());
-    QCOMPARE(window.findChild<QTreeWidget *>(QStringLiteral("projectTree"))->topLevelItemCount(), 0);
+    // An empty project shows the six folders with nothing in them.
+    const QAbstractItemModel *tree = window.projectTree().model();
+    QCOMPARE(tree->rowCount(), 6);
+    for (int row = 0; row < tree->rowCount(); ++row)
+        QCOMPARE(tree->rowCount(tree->index(row, 0)), 0);
     QVERIFY(window.findChild<QDockWidget *>(QStringLiteral("messagesDock"))->isVisible());
     QVERIFY(window.close());
 }
@@ -169,6 +180,61 @@ void TestMainWindow::windowLayoutIsRestored()
     QVERIFY(QTest::qWaitForWindowExposed(&reopened));
     QVERIFY(!reopened.findChild<QDockWidget *>(QStringLiteral("messagesDock"))->isVisible());
     QVERIFY(reopened.findChild<QDockWidget *>(QStringLiteral("projectDock"))->isVisible());
+}
+
+void TestMainWindow::openEditSaveReopen()
+{
+    const QString example = QStringLiteral(IEC_SOURCE_DIR "/resources/examples/first_steps.xml");
+    MainWindow window;
+    QString error;
+    QVERIFY2(window.openProject(example, &error), qPrintable(error));
+    QVERIFY(!window.hasUnsavedChanges());
+    QCOMPARE(window.windowTitle(), QStringLiteral("first_steps.xml[*] - IEC Studio"));
+
+    // The tree lists the program; activating it opens its ST body in an editor.
+    ProjectTreeView &tree = window.projectTree();
+    const auto *treeModel = static_cast<const ProjectTreeModel *>(tree.model());
+    const QModelIndex main = treeModel->index(0, 0, treeModel->index(0, 0));
+    QCOMPARE(main.data().toString(), QStringLiteral("Main (PRG)"));
+    Q_EMIT tree.activated(main);
+    const iec::model::BodyRef body = *treeModel->bodyRef(main);
+    iec::editors::CodeEditor *editor = window.documents().textEditorFor(body);
+    QVERIFY(editor);
+    QVERIFY(editor->toPlainText().contains(QStringLiteral("Pulse(IN := NOT Pulse.Q, PT := T#500ms);")));
+
+    // Typing reaches the model after the editor's pause (flushed here), and marks the window.
+    editor->moveCursor(QTextCursor::End);
+    QTest::keyClick(editor, Qt::Key_Return);
+    QTest::keyClicks(editor, QStringLiteral("Count := Count;"));
+    editor->flushPendingEdit();
+    QVERIFY(window.projectModel().body(body)->text().endsWith(QStringLiteral("Count := Count;")));
+    QVERIFY(window.hasUnsavedChanges());
+
+    QTemporaryDir dir;
+    const QString saved = dir.filePath(QStringLiteral("saved.xml"));
+    QVERIFY2(window.saveProject(saved, &error), qPrintable(error));
+    QVERIFY(!window.hasUnsavedChanges());
+    const auto reread = iec::model::plcopen::readProjectFile(saved);
+    QVERIFY(reread.ok);
+    QVERIFY(reread.project.types.pous.front().body()->text().endsWith(QStringLiteral("Count := Count;")));
+
+    MainWindow reopened;
+    QVERIFY(reopened.openProject(saved, &error));
+    QCOMPARE(reopened.projectModel().project().types.pous.front().body()->text(),
+             window.projectModel().project().types.pous.front().body()->text());
+}
+
+void TestMainWindow::openingAMissingFileKeepsTheProject()
+{
+    MainWindow window;
+    QString error;
+    QVERIFY(window.openProject(QStringLiteral(IEC_SOURCE_DIR "/resources/examples/first_steps.xml"), &error));
+    const iec::model::Project before = window.projectModel().project();
+
+    QVERIFY(!window.openProject(QStringLiteral("/nonexistent/project.xml"), &error));
+    QVERIFY(!error.isEmpty());
+    QVERIFY(window.projectModel().project() == before);
+    QVERIFY(window.currentFile().endsWith(QStringLiteral("first_steps.xml")));
 }
 
 QTEST_MAIN(TestMainWindow)

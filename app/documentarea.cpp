@@ -1,0 +1,150 @@
+#include "app/documentarea.h"
+
+#include "app/treeicons.h"
+#include "editors/text/codeeditor.h"
+#include "editors/text/texteditorwidget.h"
+#include "model/projectmodel.h"
+
+#include <QLabel>
+
+namespace iec::app {
+
+using model::BodyRef;
+
+namespace {
+
+// Each tab's widget carries the body it shows, so no side table can drift from the tabs.
+const char *const kBodyRefProperty = "iecBodyRef";
+
+} // namespace
+
+DocumentArea::DocumentArea(model::ProjectModel &projectModel, QWidget *parent)
+    : QTabWidget(parent)
+    , m_projectModel(projectModel)
+{
+    setDocumentMode(true);
+    setTabsClosable(true);
+    setMovable(true);
+    connect(this, &QTabWidget::tabCloseRequested, this, [this](int index) {
+        flushEdits();
+        delete widget(index);
+    });
+    connect(&projectModel, &model::ProjectModel::projectReset, this,
+            [this] { closeDocumentsIf([](const BodyRef &) { return true; }); });
+    connect(&projectModel, &model::ProjectModel::pouRemoved, this, [this](model::PouId id) {
+        closeDocumentsIf([id](const BodyRef &ref) { return ref.pou == id; });
+    });
+    connect(&projectModel, &model::ProjectModel::pouRenamed, this, &DocumentArea::retitleDocuments);
+    connect(&projectModel, &model::ProjectModel::pouPartsChanged, this, [this] {
+        // A renamed action keeps no tab: its BodyRef (by name) no longer finds a body.
+        closeDocumentsIf([this](const BodyRef &ref) { return m_projectModel.body(ref) == nullptr; });
+        retitleDocuments();
+    });
+    connect(&projectModel, &model::ProjectModel::bodyTextChanged, this, &DocumentArea::updateTextFromModel);
+}
+
+QString DocumentArea::title(const model::Project &project, const BodyRef &ref)
+{
+    const model::Pou *pou = project.findPou(ref.pou);
+    if (!pou)
+        return {};
+    return ref.part == BodyRef::Part::Pou ? pou->name : pou->name + QLatin1Char('.') + ref.name;
+}
+
+BodyRef DocumentArea::refOf(int index) const
+{
+    return widget(index)->property(kBodyRefProperty).value<BodyRef>();
+}
+
+QWidget *DocumentArea::documentFor(const BodyRef &ref) const
+{
+    for (int index = 0; index < count(); ++index) {
+        if (refOf(index) == ref)
+            return widget(index);
+    }
+    return nullptr;
+}
+
+editors::CodeEditor *DocumentArea::textEditorFor(const BodyRef &ref) const
+{
+    const auto *textWidget = qobject_cast<editors::TextEditorWidget *>(documentFor(ref));
+    return textWidget ? textWidget->editor() : nullptr;
+}
+
+std::optional<BodyRef> DocumentArea::currentBody() const
+{
+    if (currentIndex() < 0)
+        return std::nullopt;
+    return refOf(currentIndex());
+}
+
+QWidget *DocumentArea::openBody(const BodyRef &ref)
+{
+    if (QWidget *open = documentFor(ref)) {
+        setCurrentWidget(open);
+        return open;
+    }
+    const model::Body *body = m_projectModel.body(ref);
+    if (!body)
+        return nullptr;
+    QWidget *document = createEditor(ref);
+    document->setProperty(kBodyRefProperty, QVariant::fromValue(ref));
+    const int index = addTab(document, languageIcon(body->language()), title(m_projectModel.project(), ref));
+    setCurrentIndex(index);
+    return document;
+}
+
+QWidget *DocumentArea::createEditor(const BodyRef &ref)
+{
+    const model::Body *body = m_projectModel.body(ref);
+    if (body->language() != model::BodyLanguage::ST && body->language() != model::BodyLanguage::IL) {
+        auto *placeholder = new QLabel(tr("This body is written in %1. Its editor is not available in this "
+                                          "version; the body is kept unchanged when the project is saved.")
+                                           .arg(languageName(body->language())));
+        placeholder->setAlignment(Qt::AlignCenter);
+        placeholder->setWordWrap(true);
+        return placeholder;
+    }
+    const auto language
+        = body->language() == model::BodyLanguage::IL ? editors::TextLanguage::IL : editors::TextLanguage::ST;
+    auto *textWidget = new editors::TextEditorWidget(language);
+    editors::CodeEditor *editor = textWidget->editor();
+    editor->setBodyText(body->text());
+    connect(editor, &editors::CodeEditor::textEdited, this,
+            [this, ref, editor] { m_projectModel.setBodyText(ref, editor->toPlainText()); });
+    return textWidget;
+}
+
+void DocumentArea::flushEdits()
+{
+    for (int index = 0; index < count(); ++index) {
+        if (auto *textWidget = qobject_cast<editors::TextEditorWidget *>(widget(index)))
+            textWidget->editor()->flushPendingEdit();
+    }
+}
+
+void DocumentArea::updateTextFromModel(const BodyRef &ref)
+{
+    // The editor's own edits come back here too; only a change made elsewhere (a rename that
+    // rewrote references, an undo of such a change) replaces the editor's text.
+    editors::CodeEditor *editor = textEditorFor(ref);
+    const model::Body *body = m_projectModel.body(ref);
+    if (editor && body && editor->toPlainText() != body->text())
+        editor->setBodyText(body->text());
+}
+
+void DocumentArea::closeDocumentsIf(const std::function<bool(const BodyRef &)> &shouldClose)
+{
+    for (int index = count() - 1; index >= 0; --index) {
+        if (shouldClose(refOf(index)))
+            delete widget(index);
+    }
+}
+
+void DocumentArea::retitleDocuments()
+{
+    for (int index = 0; index < count(); ++index)
+        setTabText(index, title(m_projectModel.project(), refOf(index)));
+}
+
+} // namespace iec::app

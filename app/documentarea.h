@@ -1,0 +1,49 @@
+#pragma once
+
+#include "model/ids.h"
+
+#include <QTabWidget>
+
+namespace iec::model {
+class ProjectModel;
+struct Project;
+}
+
+namespace iec::editors {
+class CodeEditor;
+}
+
+namespace iec::app {
+
+// The tabs in the middle of the window: one per open POU body, action or transition. Text bodies
+// open in the ST/IL editor, which pushes what the user types into the model (the text document's
+// own undo stays the authority while typing, DESIGN.md). Tabs follow the model: a renamed POU
+// retitles its tabs, a removed one closes them.
+class DocumentArea : public QTabWidget
+{
+    Q_OBJECT
+
+public:
+    explicit DocumentArea(model::ProjectModel &projectModel, QWidget *parent = nullptr);
+
+    // Opens the body in a tab (or shows its tab when it is open already); returns the tab's widget.
+    QWidget *openBody(const model::BodyRef &ref);
+    [[nodiscard]] QWidget *documentFor(const model::BodyRef &ref) const;
+    [[nodiscard]] editors::CodeEditor *textEditorFor(const model::BodyRef &ref) const;
+    [[nodiscard]] std::optional<model::BodyRef> currentBody() const;
+    // Sends text typed but not yet pushed (the editors wait for a pause) into the model.
+    void flushEdits();
+
+    static QString title(const model::Project &project, const model::BodyRef &ref);
+
+private:
+    void closeDocumentsIf(const std::function<bool(const model::BodyRef &)> &shouldClose);
+    void retitleDocuments();
+    void updateTextFromModel(const model::BodyRef &ref);
+    [[nodiscard]] model::BodyRef refOf(int index) const;
+    QWidget *createEditor(const model::BodyRef &ref);
+
+    model::ProjectModel &m_projectModel;
+};
+
+} // namespace iec::app

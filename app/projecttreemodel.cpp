@@ -1,0 +1,275 @@
+#include "app/projecttreemodel.h"
+
+#include "app/treeicons.h"
+#include "model/projectmodel.h"
+
+namespace iec::app {
+
+using model::BodyRef;
+using model::PouKind;
+
+ProjectTreeModel::ProjectTreeModel(model::ProjectModel &projectModel, QObject *parent)
+    : QAbstractItemModel(parent)
+    , m_projectModel(projectModel)
+{
+    // Coarse signals, coarse answer: the tree is small next to the project (1,000 POUs rebuild in
+    // about a millisecond), and views keep their state by key.
+    const auto refresh = [this] { rebuild(); };
+    connect(&projectModel, &model::ProjectModel::projectReset, this, refresh);
+    connect(&projectModel, &model::ProjectModel::pouAdded, this, refresh);
+    connect(&projectModel, &model::ProjectModel::pouRemoved, this, refresh);
+    connect(&projectModel, &model::ProjectModel::pouRenamed, this, refresh);
+    connect(&projectModel, &model::ProjectModel::pouPartsChanged, this, refresh);
+    connect(&projectModel, &model::ProjectModel::dataTypesChanged, this, refresh);
+    rebuild();
+}
+
+QString ProjectTreeModel::folderKey(Folder folder)
+{
+    return QStringLiteral("folder:%1").arg(int(folder));
+}
+
+QString ProjectTreeModel::pouKey(model::PouId id)
+{
+    return QStringLiteral("pou:%1").arg(id.value);
+}
+
+QString ProjectTreeModel::partKey(const BodyRef &ref)
+{
+    const QChar part = ref.part == BodyRef::Part::Action ? QLatin1Char('a') : QLatin1Char('t');
+    return QStringLiteral("%1:%2:%3").arg(part).arg(ref.pou.value).arg(ref.name.toLower());
+}
+
+int ProjectTreeModel::addNode(Node node)
+{
+    const int index = int(m_nodes.size());
+    std::vector<int> &siblings = node.parent < 0 ? m_topLevel : m_nodes[std::size_t(node.parent)].children;
+    node.row = int(siblings.size());
+    siblings.push_back(index);
+    m_nodeByKey.insert(node.key, index);
+    m_nodes.push_back(std::move(node));
+    return index;
+}
+
+void ProjectTreeModel::addPou(int folder, const model::Pou &pou)
+{
+    const int pouNode = addNode({.kind = NodeKind::Pou, .key = pouKey(pou.id), .name = pou.name, .pou = pou.id,
+                                 .pouKind = pou.kind, .language = pou.language(), .parent = folder});
+    const auto addParts = [&](const std::vector<model::PouPart> &parts, BodyRef::Part part, NodeKind kind) {
+        for (const model::PouPart &value : parts) {
+            addNode({.kind = kind, .key = partKey({pou.id, part, value.name}), .name = value.name, .pou = pou.id,
+                     .language = value.body.language(), .parent = pouNode});
+        }
+    };
+    addParts(pou.actions, BodyRef::Part::Action, NodeKind::Action);
+    addParts(pou.transitions, BodyRef::Part::Transition, NodeKind::Transition);
+}
+
+void ProjectTreeModel::addInstances()
+{
+    const model::Project &project = m_projectModel.project();
+    const int globals = addNode({.folder = Folder::GlobalVariables, .key = folderKey(Folder::GlobalVariables)});
+    const int configurations = addNode({.folder = Folder::Configurations, .key = folderKey(Folder::Configurations)});
+    const auto addGlobalLists = [&](const std::vector<model::VarList> &lists, const QString &owner) {
+        for (std::size_t i = 0; i < lists.size(); ++i) {
+            const QString name = lists[i].name.value_or(owner);
+            addNode({.kind = NodeKind::GlobalVarList, .key = QStringLiteral("gvl:%1:%2").arg(owner).arg(i),
+                     .name = name, .parent = globals});
+        }
+    };
+    for (const model::Configuration &configuration : project.instances.configurations) {
+        addGlobalLists(configuration.globalVars, configuration.name);
+        const int configurationNode = addNode({.kind = NodeKind::Configuration,
+                                               .key = QStringLiteral("cfg:%1").arg(configuration.name),
+                                               .name = configuration.name, .parent = configurations});
+        for (const model::Resource &resource : configuration.resources) {
+            const QString path = configuration.name + QLatin1Char('.') + resource.name;
+            addGlobalLists(resource.globalVars, path);
+            const int resourceNode = addNode({.kind = NodeKind::Resource, .key = QStringLiteral("res:%1").arg(path),
+                                              .name = resource.name, .parent = configurationNode});
+            for (const model::Task &task : resource.tasks) {
+                addNode({.kind = NodeKind::Task, .key = QStringLiteral("task:%1.%2").arg(path, task.name),
+                         .name = task.name, .parent = resourceNode});
+            }
+        }
+    }
+}
+
+void ProjectTreeModel::rebuild()
+{
+    beginResetModel();
+    m_nodes.clear();
+    m_topLevel.clear();
+    m_nodeByKey.clear();
+    const model::Project &project = m_projectModel.project();
+    const int programs = addNode({.folder = Folder::Programs, .key = folderKey(Folder::Programs)});
+    const int functionBlocks = addNode({.folder = Folder::FunctionBlocks, .key = folderKey(Folder::FunctionBlocks)});
+    const int functions = addNode({.folder = Folder::Functions, .key = folderKey(Folder::Functions)});
+    for (const model::Pou &pou : project.types.pous) {
+        const int folder = pou.kind == PouKind::Program ? programs
+            : pou.kind == PouKind::FunctionBlock       ? functionBlocks
+                                                       : functions;
+        addPou(folder, pou);
+    }
+    const int dataTypes = addNode({.folder = Folder::DataTypes, .key = folderKey(Folder::DataTypes)});
+    for (const model::DataTypeDecl &type : project.types.dataTypes)
+        addNode({.kind = NodeKind::DataType, .key = QStringLiteral("type:%1").arg(type.name.toLower()),
+                 .name = type.name, .parent = dataTypes});
+    addInstances();
+    endResetModel();
+}
+
+const ProjectTreeModel::Node *ProjectTreeModel::node(const QModelIndex &index) const
+{
+    if (!index.isValid() || index.model() != this)
+        return nullptr;
+    return &m_nodes[std::size_t(index.internalId())];
+}
+
+QModelIndex ProjectTreeModel::index(int row, int column, const QModelIndex &parent) const
+{
+    if (column != 0 || row < 0)
+        return {};
+    const std::vector<int> &siblings = parent.isValid() ? node(parent)->children : m_topLevel;
+    if (row >= int(siblings.size()))
+        return {};
+    return createIndex(row, column, quintptr(siblings[std::size_t(row)]));
+}
+
+QModelIndex ProjectTreeModel::parent(const QModelIndex &child) const
+{
+    const Node *childNode = node(child);
+    if (!childNode || childNode->parent < 0)
+        return {};
+    const Node &parentNode = m_nodes[std::size_t(childNode->parent)];
+    return createIndex(parentNode.row, 0, quintptr(childNode->parent));
+}
+
+int ProjectTreeModel::rowCount(const QModelIndex &parent) const
+{
+    if (parent.column() > 0)
+        return 0;
+    return int(parent.isValid() ? node(parent)->children.size() : m_topLevel.size());
+}
+
+int ProjectTreeModel::columnCount(const QModelIndex &) const
+{
+    return 1;
+}
+
+QString ProjectTreeModel::displayText(const Node &node) const
+{
+    switch (node.kind) {
+    case NodeKind::Folder:
+        switch (node.folder) {
+        case Folder::Programs:
+            return tr("Programs");
+        case Folder::FunctionBlocks:
+            return tr("Function Blocks");
+        case Folder::Functions:
+            return tr("Functions");
+        case Folder::DataTypes:
+            return tr("Data Types");
+        case Folder::GlobalVariables:
+            return tr("Global Variables");
+        case Folder::Configurations:
+            return tr("Configurations");
+        }
+        break;
+    case NodeKind::Pou:
+        // As in CODESYS: the kind as a short suffix, PLC_PRG (PRG).
+        switch (node.pouKind) {
+        case PouKind::Program:
+            return tr("%1 (PRG)").arg(node.name);
+        case PouKind::FunctionBlock:
+            return tr("%1 (FB)").arg(node.name);
+        case PouKind::Function:
+            return tr("%1 (FUN)").arg(node.name);
+        }
+        break;
+    default:
+        break;
+    }
+    return node.name;
+}
+
+QVariant ProjectTreeModel::data(const QModelIndex &index, int role) const
+{
+    const Node *item = node(index);
+    if (!item)
+        return {};
+    switch (role) {
+    case Qt::DisplayRole:
+        return displayText(*item);
+    case Qt::ToolTipRole:
+        if (item->kind == NodeKind::Pou || item->kind == NodeKind::Action || item->kind == NodeKind::Transition)
+            return tr("%1, written in %2").arg(item->name, languageName(item->language));
+        return {};
+    case Qt::DecorationRole:
+        switch (item->kind) {
+        case NodeKind::Pou:
+        case NodeKind::Action:
+        case NodeKind::Transition:
+            return languageIcon(item->language);
+        default:
+            return nodeIcon(item->kind);
+        }
+    case KeyRole:
+        return item->key;
+    case NodeKindRole:
+        return int(item->kind);
+    default:
+        return {};
+    }
+}
+
+QString ProjectTreeModel::key(const QModelIndex &index) const
+{
+    const Node *item = node(index);
+    return item ? item->key : QString();
+}
+
+QModelIndex ProjectTreeModel::indexForKey(const QString &key) const
+{
+    const auto it = m_nodeByKey.constFind(key);
+    if (it == m_nodeByKey.constEnd())
+        return {};
+    return createIndex(m_nodes[std::size_t(*it)].row, 0, quintptr(*it));
+}
+
+std::optional<ProjectTreeModel::NodeKind> ProjectTreeModel::nodeKind(const QModelIndex &index) const
+{
+    const Node *item = node(index);
+    return item ? std::optional(item->kind) : std::nullopt;
+}
+
+std::optional<BodyRef> ProjectTreeModel::bodyRef(const QModelIndex &index) const
+{
+    const Node *item = node(index);
+    if (!item)
+        return std::nullopt;
+    switch (item->kind) {
+    case NodeKind::Pou:
+        return BodyRef{item->pou, BodyRef::Part::Pou, {}};
+    case NodeKind::Action:
+        return BodyRef{item->pou, BodyRef::Part::Action, item->name};
+    case NodeKind::Transition:
+        return BodyRef{item->pou, BodyRef::Part::Transition, item->name};
+    default:
+        return std::nullopt;
+    }
+}
+
+model::PouId ProjectTreeModel::pouId(const QModelIndex &index) const
+{
+    const Node *item = node(index);
+    return item ? item->pou : model::PouId{};
+}
+
+QString ProjectTreeModel::name(const QModelIndex &index) const
+{
+    const Node *item = node(index);
+    return item ? item->name : QString();
+}
+
+} // namespace iec::app

@@ -1,0 +1,78 @@
+#pragma once
+
+#include "model/ids.h"
+#include "model/pou.h"
+
+#include <QAbstractItemModel>
+#include <QHash>
+
+#include <optional>
+#include <vector>
+
+namespace iec::model {
+class ProjectModel;
+}
+
+namespace iec::app {
+
+// The project tree: POUs grouped by kind with their actions and transitions beneath them, data
+// types, global variable lists and the configurations with their resources and tasks. It rebuilds
+// itself from the model's coarse signals; every node has a stable key so that views can keep
+// expansion and selection across the rebuild.
+class ProjectTreeModel : public QAbstractItemModel
+{
+    Q_OBJECT
+
+public:
+    enum class NodeKind { Folder, Pou, Action, Transition, DataType, GlobalVarList, Configuration, Resource, Task };
+    enum class Folder { Programs, FunctionBlocks, Functions, DataTypes, GlobalVariables, Configurations };
+    enum Role { KeyRole = Qt::UserRole + 1, NodeKindRole };
+
+    explicit ProjectTreeModel(model::ProjectModel &projectModel, QObject *parent = nullptr);
+
+    [[nodiscard]] QString key(const QModelIndex &index) const;
+    [[nodiscard]] QModelIndex indexForKey(const QString &key) const;
+    [[nodiscard]] std::optional<NodeKind> nodeKind(const QModelIndex &index) const;
+    // The body a node opens: a POU's own body, an action's or a transition's.
+    [[nodiscard]] std::optional<model::BodyRef> bodyRef(const QModelIndex &index) const;
+    [[nodiscard]] model::PouId pouId(const QModelIndex &index) const;
+    [[nodiscard]] QString name(const QModelIndex &index) const; // the model name, without decoration
+
+    QModelIndex index(int row, int column, const QModelIndex &parent = {}) const override;
+    QModelIndex parent(const QModelIndex &child) const override;
+    int rowCount(const QModelIndex &parent = {}) const override;
+    int columnCount(const QModelIndex &parent = {}) const override;
+    QVariant data(const QModelIndex &index, int role) const override;
+
+    static QString folderKey(Folder folder);
+    static QString pouKey(model::PouId id);
+    static QString partKey(const model::BodyRef &ref);
+
+private:
+    struct Node {
+        NodeKind kind = NodeKind::Folder;
+        Folder folder = Folder::Programs; // for folders
+        QString key;
+        QString name;
+        model::PouId pou;
+        model::PouKind pouKind = model::PouKind::Program;
+        model::BodyLanguage language = model::BodyLanguage::ST;
+        int parent = -1; // index into m_nodes; -1: top level
+        int row = 0;     // position among its siblings
+        std::vector<int> children;
+    };
+
+    void rebuild();
+    int addNode(Node node);
+    void addPou(int folder, const model::Pou &pou);
+    void addInstances();
+    [[nodiscard]] QString displayText(const Node &node) const;
+    [[nodiscard]] const Node *node(const QModelIndex &index) const;
+
+    model::ProjectModel &m_projectModel;
+    std::vector<Node> m_nodes;
+    std::vector<int> m_topLevel;
+    QHash<QString, int> m_nodeByKey;
+};
+
+} // namespace iec::app

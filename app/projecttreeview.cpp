@@ -1,0 +1,89 @@
+#include "app/projecttreeview.h"
+
+#include "app/projecttreemodel.h"
+
+#include <QEvent>
+#include <QHeaderView>
+
+namespace iec::app {
+
+ProjectTreeView::ProjectTreeView(QWidget *parent)
+    : QTreeView(parent)
+{
+    setHeaderHidden(true);
+    setUniformRowHeights(true);
+    setSelectionMode(QAbstractItemView::SingleSelection);
+    setEditTriggers(QAbstractItemView::NoEditTriggers);
+    connect(this, &QTreeView::activated, this, [this](const QModelIndex &index) {
+        if (const auto body = m_model ? m_model->bodyRef(index) : std::nullopt)
+            Q_EMIT openRequested(*body);
+    });
+}
+
+void ProjectTreeView::setProjectModel(ProjectTreeModel *model)
+{
+    m_model = model;
+    setModel(model);
+    connect(model, &QAbstractItemModel::modelAboutToBeReset, this, &ProjectTreeView::rememberState);
+    connect(model, &QAbstractItemModel::modelReset, this, &ProjectTreeView::restoreState);
+    restoreState();
+}
+
+QString ProjectTreeView::currentKey() const
+{
+    return m_model ? m_model->key(currentIndex()) : QString();
+}
+
+void ProjectTreeView::selectKey(const QString &key)
+{
+    const QModelIndex index = m_model->indexForKey(key);
+    if (!index.isValid())
+        return;
+    for (QModelIndex parent = index.parent(); parent.isValid(); parent = parent.parent())
+        expand(parent);
+    setCurrentIndex(index);
+    scrollTo(index);
+}
+
+void ProjectTreeView::rememberState()
+{
+    m_expandedKeys.clear();
+    const std::function<void(const QModelIndex &)> visit = [&](const QModelIndex &parent) {
+        for (int row = 0; row < m_model->rowCount(parent); ++row) {
+            const QModelIndex child = m_model->index(row, 0, parent);
+            if (isExpanded(child)) {
+                m_expandedKeys.insert(m_model->key(child));
+                visit(child);
+            }
+        }
+    };
+    visit({});
+    m_currentKey = currentKey();
+}
+
+void ProjectTreeView::restoreState()
+{
+    if (m_firstFill) {
+        // A project opens with its top-level folders expanded, as CODESYS shows it.
+        for (int row = 0; row < m_model->rowCount(); ++row)
+            m_expandedKeys.insert(m_model->key(m_model->index(row, 0)));
+        m_firstFill = false;
+    }
+    for (const QString &key : std::as_const(m_expandedKeys)) {
+        const QModelIndex index = m_model->indexForKey(key);
+        if (index.isValid())
+            expand(index);
+    }
+    if (!m_currentKey.isEmpty())
+        selectKey(m_currentKey);
+}
+
+void ProjectTreeView::changeEvent(QEvent *event)
+{
+    // Folder names and kind suffixes are translated by the model's data(): ask for them again.
+    if (event->type() == QEvent::LanguageChange)
+        doItemsLayout();
+    QTreeView::changeEvent(event);
+}
+
+} // namespace iec::app

@@ -1,0 +1,41 @@
+#pragma once
+
+#include "model/ids.h"
+
+#include <QSet>
+#include <QTreeView>
+
+namespace iec::app {
+
+class ProjectTreeModel;
+
+// Shows a ProjectTreeModel and keeps the expanded nodes and the current node (by key) when the
+// model rebuilds. Activating a POU, action or transition asks to open its body.
+class ProjectTreeView : public QTreeView
+{
+    Q_OBJECT
+
+public:
+    explicit ProjectTreeView(QWidget *parent = nullptr);
+
+    void setProjectModel(ProjectTreeModel *model);
+    [[nodiscard]] QString currentKey() const;
+    void selectKey(const QString &key);
+
+Q_SIGNALS:
+    void openRequested(const iec::model::BodyRef &body);
+
+protected:
+    void changeEvent(QEvent *event) override;
+
+private:
+    void rememberState();
+    void restoreState();
+
+    ProjectTreeModel *m_model = nullptr;
+    QSet<QString> m_expandedKeys;
+    QString m_currentKey;
+    bool m_firstFill = true;
+};
+
+} // namespace iec::app

@@ -1,0 +1,142 @@
+#pragma once
+
+#include "editors/text/completion.h"
+#include "editors/text/textlanguage.h"
+
+#include <QHash>
+#include <QIcon>
+#include <QPlainTextEdit>
+#include <QPointer>
+#include <QTimer>
+
+class QCompleter;
+class QStandardItemModel;
+
+namespace iec::editors {
+
+class CodeHighlighter;
+class InputAssistantDialog;
+class LineNumberArea;
+
+// The ST and IL body editor: lexer-based highlighting, line numbers, current line, auto-indent
+// and block completion, bracket matching, folding, comment toggling, completion (Ctrl+Space),
+// the input assistant (F2), go to definition (F12, Ctrl+click) and compiler diagnostics as wavy
+// underlines with tooltips. One class for both languages; what differs is data.
+//
+// Typing uses the QTextDocument's own undo stack (DESIGN.md); textEdited tells the application,
+// debounced, that the text changed so it can push it into the model.
+class CodeEditor : public QPlainTextEdit
+{
+    Q_OBJECT
+
+public:
+    explicit CodeEditor(TextLanguage language = TextLanguage::ST, QWidget *parent = nullptr);
+    ~CodeEditor() override;
+
+    [[nodiscard]] TextLanguage language() const { return m_language; }
+    void setLanguage(TextLanguage language);
+
+    // Replaces the whole text (opening a body, or a change that came from the model): no
+    // textEdited, the undo history starts afresh, diagnostics are cleared.
+    void setBodyText(const QString &text);
+
+    // Not owned; may be null (then only keywords and the standard library are offered).
+    void setCompletionProvider(const CompletionProvider *provider) { m_provider = provider; }
+    [[nodiscard]] const CompletionProvider *completionProvider() const { return m_provider; }
+
+    // Diagnostics follow the text as it is edited until the next call.
+    void setDiagnostics(const QList<TextDiagnostic> &diagnostics);
+    [[nodiscard]] QList<TextDiagnostic> diagnostics() const;
+    // The messages of the diagnostics that cover document position `position`, one per line.
+    [[nodiscard]] QString diagnosticMessageAt(int position) const;
+
+    // Folding; lines are 0-based block numbers.
+    [[nodiscard]] QList<FoldRange> foldRanges() const { return m_foldRanges; }
+    [[nodiscard]] bool isFolded(int firstLine) const;
+    bool fold(int firstLine);
+    bool unfold(int firstLine);
+    void toggleFold(int firstLine);
+    void unfoldAll();
+    void updateFoldRangesNow();
+
+    // The dotted name under `position` up to the end of the word there ("Tank.Level" on "Level").
+    [[nodiscard]] QString identifierPathAt(int position) const;
+
+    // Moves the cursor to a 1-based line and column, unfolding as needed.
+    void goToLine(int line, int column = 1);
+
+    [[nodiscard]] CodeHighlighter *highlighter() const { return m_highlighter; }
+    [[nodiscard]] QCompleter *completer() const { return m_completer; }
+    [[nodiscard]] InputAssistantDialog *inputAssistant() const;
+
+    // Milliseconds of quiet before textEdited (default 300).
+    void setEditDebounceInterval(int milliseconds) { m_editTimer.setInterval(milliseconds); }
+    // Emits a pending textEdited now (before saving, switching documents, tests).
+    void flushPendingEdit();
+
+    [[nodiscard]] int lineNumberAreaWidth() const;
+    void paintLineNumberArea(QPaintEvent *event);
+    void lineNumberAreaClicked(const QPoint &position);
+
+public Q_SLOTS:
+    void toggleComment();
+    void showCompletion();
+    void openInputAssistant();
+    void requestDefinition();
+
+Q_SIGNALS:
+    // The user changed the text (debounced). Not emitted by setBodyText.
+    void textEdited();
+    // Go to definition on `identifier` (a dotted path) at a 1-based line and column; the
+    // application resolves it and calls goToLine or opens another POU.
+    void definitionRequested(const QString &identifier, int line, int column);
+
+protected:
+    void keyPressEvent(QKeyEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
+    void paintEvent(QPaintEvent *event) override;
+    void mousePressEvent(QMouseEvent *event) override;
+    bool viewportEvent(QEvent *event) override;
+    void contextMenuEvent(QContextMenuEvent *event) override;
+
+private:
+    struct PlacedDiagnostic {
+        TextDiagnostic diagnostic;
+        QTextCursor range;
+    };
+
+    void updateLineNumberAreaWidth();
+    void updateLineNumberArea(const QRect &rect, int dy);
+    void updateExtraSelections();
+    void onContentsChange(int position, int removed, int added);
+    void applyFoldVisibility();
+    void relayout();
+
+    void handleEnter();
+    void handleTab(bool backward);
+    void reindentClosingKeyword();
+    void updateCompletionPrefix();
+    void insertCompletion(const QString &text);
+    [[nodiscard]] int bracketMatch(int position) const;
+
+    TextLanguage m_language;
+    CodeHighlighter *m_highlighter = nullptr;
+    LineNumberArea *m_lineNumberArea = nullptr;
+    const CompletionProvider *m_provider = nullptr;
+    QCompleter *m_completer = nullptr;
+    QStandardItemModel *m_completionModel = nullptr;
+    QHash<int, QIcon> m_kindIcons;
+    int m_completionStart = -1;
+    QPointer<InputAssistantDialog> m_assistant;
+
+    QList<PlacedDiagnostic> m_diagnostics;
+    QList<FoldRange> m_foldRanges;
+    bool m_hasHiddenBlocks = false;
+    int m_lastBlockCount = 1;
+
+    QTimer m_editTimer;
+    QTimer m_foldTimer;
+    bool m_settingText = false;
+};
+
+} // namespace iec::editors
