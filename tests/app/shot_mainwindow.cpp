@@ -1,0 +1,39 @@
+// Not a test: renders the main window with the example project open, in each UI language, to
+// PNG files for looking at (scripts/screenshots.sh). Offscreen, so it runs without a display.
+#include "app/documentarea.h"
+#include "app/mainwindow.h"
+#include "app/projecttreemodel.h"
+#include "app/projecttreeview.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QSettings>
+#include <QTemporaryDir>
+
+int main(int argc, char *argv[])
+{
+    QApplication application(argc, argv);
+    QTemporaryDir config;
+    qputenv("XDG_CONFIG_HOME", config.path().toLocal8Bit());
+    const QString outDir = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QDir::tempPath();
+    const QString project = argc > 2 ? QString::fromLocal8Bit(argv[2])
+                                     : QStringLiteral(IEC_SOURCE_DIR "/resources/examples/first_steps.xml");
+    for (const QString &language : {QStringLiteral("en"), QStringLiteral("zh_CN"), QStringLiteral("de")}) {
+        iec::app::MainWindow window;
+        iec::app::Settings settings = window.settings();
+        settings.uiLanguage = language;
+        window.applySettings(settings);
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+        window.resize(1280, 800);
+        window.show();
+        if (!window.openProject(project))
+            return 1;
+        auto *tree = static_cast<const iec::app::ProjectTreeModel *>(window.projectTree().model());
+        const QModelIndex firstPou = tree->index(0, 0, tree->index(0, 0));
+        if (const auto body = tree->bodyRef(firstPou))
+            window.documents().openBody(*body);
+        QCoreApplication::processEvents();
+        window.grab().save(QDir(outDir).filePath(QStringLiteral("mainwindow_%1.png").arg(language)));
+    }
+    return 0;
+}
