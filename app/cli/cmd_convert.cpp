@@ -1,18 +1,50 @@
-// iecstudio-cli convert IN.xml OUT.xml: read a PLCopen project and write it back as TC6 2.01.
+// iecstudio-cli convert IN OUT: between PLCopen XML (.xml) and IEC text (.st), either way.
 
 #include "app/cli/commands.h"
-#include "app/cli/diagnostics.h"
+#include "app/cli/projectinput.h"
 
-#include "model/plcopen/reader.h"
+#include "interpreter/frontend/iecprinter.h"
+
 #include "model/plcopen/writer.h"
+
+#include <QFileInfo>
+#include <QSaveFile>
 
 namespace iec::cli {
 
 namespace {
 
-bool isXml(const QString &path)
+bool writeText(const QString &text, const QString &path, QString &error)
 {
-    return path.endsWith(QLatin1String(".xml"), Qt::CaseInsensitive);
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(text.toUtf8()) < 0 || !file.commit()) {
+        error = QStringLiteral("%1 cannot be written: %2.").arg(path, file.errorString());
+        return false;
+    }
+    return true;
+}
+
+// IEC text has no file header; a project read from .st gets one from the file it came from, so
+// converting the same file twice gives the same bytes.
+void fillHeader(model::Project &project, const QString &input)
+{
+    if (!project.fileHeader.creationDateTime.isEmpty())
+        return;
+    project.fileHeader.productVersion = QStringLiteral(IECSTUDIO_VERSION);
+    project.fileHeader.creationDateTime = QFileInfo(input).lastModified().toUTC().toString(Qt::ISODate);
+}
+
+bool writeProject(model::Project &project, const QString &input, const QString &output, Io io, QString &error)
+{
+    if (formatOf(output) == FileFormat::Xml) {
+        fillHeader(project, input);
+        return model::plcopen::saveProjectFile(project, output, &error);
+    }
+    std::vector<interp::frontend::PrintWarning> warnings;
+    const QString text = interp::frontend::printProject(project, &warnings);
+    for (const interp::frontend::PrintWarning &warning : warnings)
+        io.err << input << ":" << warning.pou << ": warning: " << warning.message << "\n";
+    return writeText(text, output, error);
 }
 
 } // namespace
@@ -25,18 +57,15 @@ int runConvert(const QStringList &arguments, Io io)
     }
     const QString &input = arguments.at(0);
     const QString &output = arguments.at(1);
-    if (!isXml(input) || !isXml(output)) {
-        io.err << "iecstudio-cli: convert reads and writes PLCopen XML (.xml) in this build.\n";
+    if (formatOf(input) == FileFormat::Other || formatOf(output) == FileFormat::Other) {
+        io.err << "iecstudio-cli: convert reads and writes PLCopen XML (.xml) and IEC text (.st).\n";
         return ExitUsage;
     }
-    const model::plcopen::ReadResult result = model::plcopen::readProjectFile(input);
-    printDiagnostics(input, result.diagnostics, io.err);
-    if (result.fileError)
-        return ExitIoError;
-    if (!result.ok)
-        return ExitFailed; // never write a project that was only partly understood
+    LoadedProject loaded = loadProject(input, io.err);
+    if (loaded.status != ExitOk)
+        return loaded.status; // never write a project that was only partly understood
     QString error;
-    if (!model::plcopen::saveProjectFile(result.project, output, &error)) {
+    if (!writeProject(loaded.project, input, output, io, error)) {
         io.err << "iecstudio-cli: " << error << "\n";
         return ExitIoError;
     }

@@ -14,12 +14,12 @@ int notAvailableYet(const QStringList &, Io io)
 }
 
 constexpr std::array<Command, 5> kCommands{{
-    {"check", "check FILE", "Compile every POU and list the diagnostics; exit 1 on an error.", notAvailableYet},
+    {"check", "check FILE", "Compile every POU and list the diagnostics; exit 1 on an error.", runCheck},
     {"info", "info FILE [--json]", "Count POUs, data types, variables and graphical elements.", runInfo},
-    {"convert", "convert IN OUT", "Read a PLCopen XML project and write it to OUT.xml (IEC text .st comes with the compiler).", runConvert},
+    {"convert", "convert IN OUT", "Convert between PLCopen XML (.xml) and IEC text (.st), either way.", runConvert},
     {"run", "run FILE [--program P] [--cycles N] [--cycle-time 10ms] [--set NAME=VALUE[@CYCLE]]... "
             "[--watch NAME]... [--trace OUT.csv|OUT.vcd]",
-     "Run scan cycles on a virtual clock and print the watched values.", notAvailableYet},
+     "Run scan cycles on a virtual clock and print the watched values.", runRun},
     {"render", "render FILE --pou NAME OUT.svg|OUT.png|OUT.pdf", "Draw a POU body without a display.",
      notAvailableYet},
 }};

@@ -35,5 +35,7 @@ int printUsage(QTextStream &stream);
 // The subcommands, one file each (cmd_*.cpp).
 int runInfo(const QStringList &arguments, Io io);
 int runConvert(const QStringList &arguments, Io io);
+int runCheck(const QStringList &arguments, Io io);
+int runRun(const QStringList &arguments, Io io);
 
 } // namespace iec::cli

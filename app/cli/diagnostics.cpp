@@ -34,4 +34,25 @@ void printDiagnostics(const QString &file, const std::vector<model::Diagnostic> 
     }
 }
 
+QString formatDiagnostic(const QString &file, const interp::Diagnostic &diagnostic)
+{
+    QString text = file + QLatin1Char(':');
+    if (!diagnostic.pou.isEmpty())
+        text += diagnostic.pou + QLatin1Char(':');
+    if (diagnostic.location.line > 0)
+        text += QStringLiteral("%1:%2:").arg(diagnostic.location.line).arg(diagnostic.location.column);
+    text += diagnostic.severity == interp::Diagnostic::Severity::Error ? QStringLiteral(" error: ")
+                                                                       : QStringLiteral(" warning: ");
+    text += diagnostic.message;
+    if (!diagnostic.hint.isEmpty())
+        text += QStringLiteral(" (hint: ") + diagnostic.hint + QLatin1Char(')');
+    return text;
+}
+
+void printDiagnostics(const QString &file, const interp::Diagnostics &diagnostics, QTextStream &stream)
+{
+    for (const interp::Diagnostic &diagnostic : diagnostics.all())
+        stream << formatDiagnostic(file, diagnostic) << "\n";
+}
+
 } // namespace iec::cli

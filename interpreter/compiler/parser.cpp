@@ -10,9 +10,11 @@ using namespace ast;
 
 namespace {
 
-// Words that are keywords only in a few places (tasks, SFC) and ordinary names elsewhere.
-constexpr std::string_view kSoftKeywords[] = {"INTERVAL", "PRIORITY", "SINGLE", "ON", "FROM", "STEP", "READ_ONLY",
-                                              "READ_WRITE", "CONSTANT"};
+// Words that are keywords only in a few places (configurations, tasks, SFC) and ordinary names
+// elsewhere. RESOURCE and TASK are here because tools name them so ("RESOURCE Resource",
+// "TASK Task"), and PLCopen files carry such names.
+constexpr std::string_view kSoftKeywords[] = {"INTERVAL", "PRIORITY", "SINGLE",   "ON",       "FROM",     "STEP",
+                                              "READ_ONLY", "READ_WRITE", "CONSTANT", "RESOURCE", "TASK"};
 // IL operators that are also ST operators, and so never names in ST.
 constexpr std::string_view kStOperatorWords[] = {"AND", "OR", "XOR", "NOT", "MOD"};
 

@@ -125,6 +125,33 @@ void put(std::uint8_t *p, T v)
     std::memcpy(p, &v, sizeof v);
 }
 
+const Symbol *symbolNamed(const Module &module, const QString &name)
+{
+    const Symbol *found = nullptr;
+    for (const Symbol &s : module.symbols) {
+        if (s.name.compare(name, Qt::CaseInsensitive) == 0)
+            found = &s; // the last one wins, as the compiler's scopes do
+    }
+    return found;
+}
+
+// The first part of a name: a global or a program instance (Main in PROGRAM Main WITH T : Prog),
+// or else the name of the program's POU when exactly one instance runs it (Prog.Counter).
+const Symbol *rootSymbol(const Module &module, const QString &name)
+{
+    if (const Symbol *symbol = symbolNamed(module, name))
+        return symbol;
+    const ProgramInstance *only = nullptr;
+    for (const ProgramInstance &instance : module.programs) {
+        if (module.pous[size_t(instance.pou)].name.compare(name, Qt::CaseInsensitive) != 0)
+            continue;
+        if (only)
+            return nullptr; // two instances of the program: the instance name must be given
+        only = &instance;
+    }
+    return only ? symbolNamed(module, only->name) : nullptr;
+}
+
 } // namespace
 
 std::optional<VariableRef> resolveSymbol(const Module &module, const QString &name)
@@ -146,16 +173,11 @@ std::optional<VariableRef> resolveSymbol(const Module &module, const QString &na
             const QString n = m.captured(1);
             if (first) {
                 first = false;
-                bool found = false;
-                for (const Symbol &s : module.symbols) {
-                    if (s.name.compare(n, Qt::CaseInsensitive) == 0) {
-                        ref.type = s.type;
-                        ref.offset = s.offset;
-                        found = true;
-                    }
-                }
-                if (!found)
+                const Symbol *root = rootSymbol(module, n);
+                if (!root)
                     return std::nullopt;
+                ref.type = root->type;
+                ref.offset = root->offset;
                 continue;
             }
             if (!ref.type || ref.bit >= 0 || (ref.type->kind != TypeKind::Struct && ref.type->kind != TypeKind::FunctionBlock))

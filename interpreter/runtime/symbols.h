@@ -18,7 +18,9 @@ struct VariableRef {
     char imageArea = 0;       // 'I', 'Q', 'M' for %-addresses (process image); 0 for variables
 };
 
-// Resolves Main.Counter, Main.Timer1.ET, Main.Values[3], Main.Word.5, GlobalVar, %QX0.1.
+// Resolves Main.Counter, Main.Timer1.ET, Main.Values[3], Main.Word.5, GlobalVar, %QX0.1. The first
+// part is a global or a program instance, or the program's POU name when exactly one instance
+// runs it (PROGRAM Fast WITH T : Counter: both Fast.n and Counter.n).
 std::optional<VariableRef> resolveSymbol(const Module &module, const QString &name);
 
 // The value at `ref` in IEC literal syntax: TRUE, 42, 1.5, T#1s500ms, 'text', [1, 2], (a := 1).

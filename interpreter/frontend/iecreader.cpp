@@ -1,0 +1,479 @@
+#include "interpreter/frontend/iecreader.h"
+
+#include "interpreter/compiler/lexer.h"
+#include "interpreter/compiler/parser.h"
+
+namespace iec::interp::frontend {
+
+namespace {
+
+// ---- expressions back to text (initial values, bounds, task settings) ------------------------
+
+QString exprText(const ast::Expr &e, bool top = true);
+
+QString argsText(const std::vector<ast::CallArg> &args)
+{
+    QStringList parts;
+    for (const ast::CallArg &a : args) {
+        QString part = a.negatedOutput ? QStringLiteral("NOT ") : QString();
+        if (!a.name.isEmpty())
+            part += a.name + (a.isOutput ? QStringLiteral(" => ") : QStringLiteral(" := "));
+        parts << part + exprText(a.value);
+    }
+    return parts.join(QStringLiteral(", "));
+}
+
+QString exprText(const ast::Expr &e, bool top)
+{
+    switch (e.kind) {
+    case ast::ExprKind::Literal:
+    case ast::ExprKind::Name:
+    case ast::ExprKind::DirectAddress:
+    case ast::ExprKind::Error:
+        return e.text;
+    case ast::ExprKind::Member:
+    case ast::ExprKind::BitAccess:
+        return exprText(e.operands[0], false) + QLatin1Char('.') + e.text;
+    case ast::ExprKind::Index: {
+        QStringList indices;
+        for (size_t i = 1; i < e.operands.size(); ++i)
+            indices << exprText(e.operands[i]);
+        return exprText(e.operands[0], false) + QLatin1Char('[') + indices.join(QStringLiteral(", "))
+            + QLatin1Char(']');
+    }
+    case ast::ExprKind::Unary: {
+        const QString space = e.text.front().isLetter() ? QStringLiteral(" ") : QString();
+        return e.text + space + exprText(e.operands[0], false);
+    }
+    case ast::ExprKind::Binary: {
+        const QString text = exprText(e.operands[0], false) + QLatin1Char(' ') + e.text + QLatin1Char(' ')
+            + exprText(e.operands[1], false);
+        return top ? text : QLatin1Char('(') + text + QLatin1Char(')');
+    }
+    case ast::ExprKind::Call:
+        return e.text + QLatin1Char('(') + argsText(e.callArgs) + QLatin1Char(')');
+    }
+    return e.text;
+}
+
+QString optionalText(const std::optional<ast::Expr> &e)
+{
+    return e ? exprText(*e) : QString();
+}
+
+// ---- declarations ----------------------------------------------------------------------------
+
+model::DataType toModel(const ast::TypeSpec &spec);
+std::vector<model::Variable> toModel(const std::vector<ast::VarDecl> &vars);
+
+model::DataType namedType(const QString &name)
+{
+    if (isTypeName(name) && name.compare(QLatin1String("STRING"), Qt::CaseInsensitive) != 0)
+        return {model::ElementaryType {name.toUpper()}};
+    return {model::DerivedType {name, {}, {}}};
+}
+
+model::Range toModel(const ast::Range &range)
+{
+    return {exprText(range.low), exprText(range.high)};
+}
+
+model::DataType enumType(const ast::TypeSpec &spec)
+{
+    model::EnumType type;
+    for (qsizetype i = 0; i < spec.enumValues.size(); ++i) {
+        const auto &explicitValue = spec.enumExplicit[size_t(i)];
+        type.values.push_back(
+            {spec.enumValues[i], explicitValue ? std::optional(exprText(*explicitValue)) : std::nullopt});
+    }
+    if (!spec.name.isEmpty())
+        type.baseType = model::Box<model::DataType>(namedType(spec.name));
+    return {type};
+}
+
+model::DataType toModel(const ast::TypeSpec &spec)
+{
+    switch (spec.kind) {
+    case ast::TypeSpec::Kind::Named:
+        return namedType(spec.name);
+    case ast::TypeSpec::Kind::String:
+        return {model::StringType {spec.wide, spec.length ? std::optional(exprText(*spec.length)) : std::nullopt}};
+    case ast::TypeSpec::Kind::Array: {
+        model::ArrayType type;
+        for (const ast::Range &range : spec.ranges)
+            type.dimensions.push_back(toModel(range));
+        type.baseType = model::Box<model::DataType>(toModel(spec.element.front()));
+        return {type};
+    }
+    case ast::TypeSpec::Kind::Subrange: {
+        const model::DataType base = namedType(spec.name);
+        const bool isUnsigned = spec.name.startsWith(QLatin1Char('U'), Qt::CaseInsensitive);
+        return {model::SubrangeType {isUnsigned, toModel(spec.ranges.front()), model::Box<model::DataType>(base)}};
+    }
+    case ast::TypeSpec::Kind::Enum:
+        return enumType(spec);
+    case ast::TypeSpec::Kind::Struct: {
+        model::StructType type;
+        type.members = toModel(spec.members);
+        return {type};
+    }
+    }
+    return namedType(spec.name);
+}
+
+std::optional<model::Value> toModel(const ast::Initializer &init)
+{
+    switch (init.kind) {
+    case ast::Initializer::Kind::None:
+        return std::nullopt;
+    case ast::Initializer::Kind::Expression:
+        return model::Value {model::SimpleValue {optionalText(init.value)}};
+    case ast::Initializer::Kind::Array: {
+        model::ArrayValue value;
+        for (size_t i = 0; i < init.items.size(); ++i) {
+            const auto &repeat = init.repeats[i];
+            const std::optional<model::Value> item = toModel(init.items[i]);
+            value.values.push_back({repeat ? std::optional(exprText(*repeat)) : std::nullopt,
+                model::Box<model::Value>(item.value_or(model::Value {}))});
+        }
+        return model::Value {value};
+    }
+    case ast::Initializer::Kind::Struct: {
+        model::StructValue value;
+        for (size_t i = 0; i < init.items.size(); ++i) {
+            const std::optional<model::Value> item = toModel(init.items[i]);
+            value.values.push_back(
+                {init.memberNames[qsizetype(i)], model::Box<model::Value>(item.value_or(model::Value {}))});
+        }
+        return model::Value {value};
+    }
+    }
+    return std::nullopt;
+}
+
+std::vector<model::Variable> toModel(const std::vector<ast::VarDecl> &vars)
+{
+    std::vector<model::Variable> result;
+    for (const ast::VarDecl &decl : vars) {
+        model::Variable variable;
+        variable.name = decl.name;
+        if (!decl.address.isEmpty())
+            variable.address = decl.address;
+        variable.type = toModel(decl.type);
+        variable.initialValue = toModel(decl.init);
+        result.push_back(std::move(variable));
+    }
+    return result;
+}
+
+std::optional<model::VarListKind> listKind(ast::VarKind kind)
+{
+    switch (kind) {
+    case ast::VarKind::Local:
+        return model::VarListKind::Local;
+    case ast::VarKind::Input:
+        return model::VarListKind::Input;
+    case ast::VarKind::Output:
+        return model::VarListKind::Output;
+    case ast::VarKind::InOut:
+        return model::VarListKind::InOut;
+    case ast::VarKind::External:
+        return model::VarListKind::External;
+    case ast::VarKind::Global:
+        return model::VarListKind::Global;
+    case ast::VarKind::Temp:
+        return model::VarListKind::Temp;
+    case ast::VarKind::Access:
+        return model::VarListKind::Access;
+    case ast::VarKind::Config:
+        return std::nullopt;
+    }
+    return std::nullopt;
+}
+
+std::vector<model::VarList> toModel(
+    const std::vector<ast::VarSection> &sections, const QString &owner, Diagnostics &diagnostics)
+{
+    std::vector<model::VarList> lists;
+    for (const ast::VarSection &section : sections) {
+        const auto kind = listKind(section.kind);
+        if (!kind) {
+            diagnostics.warning(owner, section.location,
+                QStringLiteral("VAR_CONFIG cannot be stored in a PLCopen project yet and was left out."));
+            continue;
+        }
+        model::VarList list;
+        list.kind = *kind;
+        list.constant = section.constant;
+        list.retain = section.retain;
+        list.nonretain = section.nonRetain;
+        list.variables = toModel(section.vars);
+        lists.push_back(std::move(list));
+    }
+    return lists;
+}
+
+// ---- configurations --------------------------------------------------------------------------
+
+model::Task toModel(const ast::TaskDecl &decl, const QString &owner, Diagnostics &diagnostics)
+{
+    model::Task task;
+    task.name = decl.name;
+    if (decl.single)
+        task.single = exprText(*decl.single);
+    if (decl.interval)
+        task.interval = exprText(*decl.interval);
+    if (decl.priority) {
+        bool ok = false;
+        task.priority = exprText(*decl.priority).toUInt(&ok);
+        if (!ok || task.priority > 65535)
+            diagnostics.warning(owner, decl.priority->location,
+                QStringLiteral("The priority of task %1 must be a number from 0 to 65535; 0 is used.").arg(decl.name));
+    }
+    return task;
+}
+
+void addProgram(
+    const ast::ProgramConfig &program, model::Resource &resource, const QString &owner, Diagnostics &diagnostics)
+{
+    if (!program.args.empty()) {
+        diagnostics.warning(owner, program.location,
+            QStringLiteral(
+                "The arguments of program instance %1 cannot be stored in a PLCopen project and were left out.")
+                .arg(program.instance));
+    }
+    const model::PouInstance instance {program.instance, program.type, {}, {}, {}, {}};
+    for (model::Task &task : resource.tasks) {
+        if (task.name.compare(program.task, Qt::CaseInsensitive) == 0) {
+            task.pouInstances.push_back(instance);
+            return;
+        }
+    }
+    resource.pouInstances.push_back(instance); // no WITH (or an unknown task: the compiler reports it)
+}
+
+model::Configuration toModel(const ast::ConfigurationDecl &decl, Diagnostics &diagnostics)
+{
+    model::Configuration configuration;
+    configuration.name = decl.name;
+    configuration.globalVars = toModel(decl.globals, decl.name, diagnostics);
+    for (const ast::ResourceDecl &r : decl.resources) {
+        model::Resource resource;
+        resource.name = r.name.isEmpty() ? QStringLiteral("Resource") : r.name;
+        resource.globalVars = toModel(r.globals, decl.name, diagnostics);
+        for (const ast::TaskDecl &task : r.tasks)
+            resource.tasks.push_back(toModel(task, decl.name, diagnostics));
+        for (const ast::ProgramConfig &program : r.programs)
+            addProgram(program, resource, decl.name, diagnostics);
+        configuration.resources.push_back(std::move(resource));
+    }
+    return configuration;
+}
+
+// ---- bodies: the text between the declarations and END_xxx, as written ------------------------
+
+// The significant tokens of the source (no comments or pragmas) with the words they spell.
+class TokenCursor
+{
+public:
+    explicit TokenCursor(QStringView text)
+        : m_text(text)
+    {
+        for (const Token &t : tokenize(text)) {
+            if (t.kind != TokenKind::Comment && t.kind != TokenKind::Pragma)
+                m_tokens.push_back(t);
+        }
+    }
+    bool atEnd() const { return m_pos >= m_tokens.size(); }
+    bool is(const char *word) const
+    {
+        return !atEnd() && text().compare(QLatin1String(word), Qt::CaseInsensitive) == 0;
+    }
+    QStringView text() const { return m_text.mid(m_tokens[m_pos].offset, m_tokens[m_pos].length); }
+    int start() const { return atEnd() ? int(m_text.size()) : m_tokens[m_pos].offset; }
+    int end() const { return m_tokens[m_pos].offset + m_tokens[m_pos].length; }
+    void next() { ++m_pos; }
+    // Moves past the next `word`; returns the offset just after it.
+    int skipPast(const char *word)
+    {
+        while (!atEnd() && !is(word))
+            next();
+        const int after = atEnd() ? int(m_text.size()) : end();
+        next();
+        return after;
+    }
+    // VAR, VAR_INPUT, VAR_GLOBAL ... (every section keyword starts with VAR and then '_' or ends)
+    bool isVarSection() const
+    {
+        if (atEnd() || !text().startsWith(QLatin1String("VAR"), Qt::CaseInsensitive))
+            return false;
+        return m_tokens[m_pos].kind == TokenKind::Keyword && (text().size() == 3 || text()[3] == u'_');
+    }
+    int lineEndAfter(int offset) const
+    {
+        const qsizetype newline = m_text.indexOf(u'\n', offset);
+        return newline < 0 ? int(m_text.size()) : int(newline);
+    }
+
+private:
+    QStringView m_text;
+    std::vector<Token> m_tokens;
+    size_t m_pos = 0;
+};
+
+// A body as written: without the line break that follows the declarations and without trailing
+// blank lines.
+QString bodyText(QStringView source, int from, int to)
+{
+    QStringView body = source.mid(from, to - from);
+    const qsizetype newline = body.indexOf(u'\n');
+    if (newline >= 0 && body.left(newline).trimmed().isEmpty())
+        body = body.mid(newline + 1);
+    while (!body.isEmpty() && body.back().isSpace())
+        body.chop(1);
+    return body.toString();
+}
+
+struct PouTexts {
+    QString body;
+    std::vector<std::pair<QString, QString>> actions; // name, text
+};
+
+// At PROGRAM / FUNCTION_BLOCK / FUNCTION: finds the body and the actions' texts.
+PouTexts pouTexts(TokenCursor &cursor, QStringView source)
+{
+    const QByteArray end = "END_" + cursor.text().toString().toUpper().toLatin1();
+    cursor.next(); // the keyword
+    int bodyStart = cursor.start();
+    if (!cursor.atEnd()) { // the name
+        bodyStart = cursor.end();
+        cursor.next();
+    }
+    if (cursor.is(":")) { // a function's result type: up to the end of its line
+        const int lineEnd = cursor.lineEndAfter(cursor.end());
+        while (!cursor.atEnd() && cursor.start() < lineEnd && !cursor.isVarSection() && !cursor.is(end.constData())) {
+            bodyStart = cursor.end();
+            cursor.next();
+        }
+    }
+    while (cursor.isVarSection())
+        bodyStart = cursor.skipPast("END_VAR");
+    PouTexts texts;
+    while (!cursor.atEnd() && !cursor.is(end.constData()) && !cursor.is("ACTION"))
+        cursor.next();
+    texts.body = bodyText(source, bodyStart, cursor.start());
+    while (cursor.is("ACTION")) {
+        cursor.next();
+        const QString name = cursor.atEnd() ? QString() : cursor.text().toString();
+        cursor.next();
+        const int actionStart = cursor.is(":") ? cursor.end() : cursor.start();
+        while (!cursor.atEnd() && !cursor.is("END_ACTION"))
+            cursor.next();
+        texts.actions.emplace_back(name, bodyText(source, actionStart, cursor.start()));
+        cursor.next();
+    }
+    cursor.skipPast(end.constData());
+    return texts;
+}
+
+// The texts of every POU in source order.
+std::vector<PouTexts> allPouTexts(QStringView source)
+{
+    std::vector<PouTexts> result;
+    TokenCursor cursor(source);
+    while (!cursor.atEnd()) {
+        if (cursor.is("TYPE"))
+            cursor.skipPast("END_TYPE");
+        else if (cursor.is("CONFIGURATION"))
+            cursor.skipPast("END_CONFIGURATION");
+        else if (cursor.isVarSection())
+            cursor.skipPast("END_VAR");
+        else if (cursor.is("PROGRAM") || cursor.is("FUNCTION_BLOCK") || cursor.is("FUNCTION"))
+            result.push_back(pouTexts(cursor, source));
+        else
+            cursor.next();
+    }
+    return result;
+}
+
+model::PouKind toModel(ast::PouKind kind)
+{
+    switch (kind) {
+    case ast::PouKind::Program:
+        return model::PouKind::Program;
+    case ast::PouKind::FunctionBlock:
+        return model::PouKind::FunctionBlock;
+    case ast::PouKind::Function:
+        return model::PouKind::Function;
+    }
+    return model::PouKind::Program;
+}
+
+model::Body textBody(ast::Language language, const QString &text)
+{
+    model::Body body
+        = model::Body::withLanguage(language == ast::Language::IL ? model::BodyLanguage::IL : model::BodyLanguage::ST);
+    body.setText(text);
+    return body;
+}
+
+model::Pou toModel(const ast::Pou &pou, const PouTexts &texts, Diagnostics &diagnostics)
+{
+    model::Pou result;
+    result.name = pou.name;
+    result.kind = toModel(pou.kind);
+    model::Interface interface;
+    if (pou.returnType)
+        interface.returnType = toModel(*pou.returnType);
+    interface.varLists = toModel(pou.sections, pou.name, diagnostics);
+    result.pouInterface = std::move(interface);
+    if (pou.body.language == ast::Language::SFC) {
+        diagnostics.warning(pou.name, pou.location,
+            QStringLiteral(
+                "%1 is a chart in textual SFC, which the project model cannot hold yet; its body was left out.")
+                .arg(pou.name));
+        return result;
+    }
+    result.bodies.push_back(textBody(pou.body.language, texts.body));
+    for (size_t i = 0; i < pou.actions.size() && i < texts.actions.size(); ++i) {
+        model::PouAction action;
+        action.name = texts.actions[i].first;
+        action.body = textBody(pou.actions[i].body.language, texts.actions[i].second);
+        result.actions.push_back(std::move(action));
+    }
+    return result;
+}
+
+model::Project emptyProject(const QString &name)
+{
+    model::Project project;
+    project.fileHeader.companyName = QStringLiteral("IEC Studio");
+    project.fileHeader.productName = QStringLiteral("IEC Studio");
+    project.contentHeader.name = name;
+    return project;
+}
+
+} // namespace
+
+TextReadResult readIecText(QStringView text, const QString &projectName)
+{
+    TextReadResult result;
+    result.project = emptyProject(projectName);
+    const ast::CompilationUnit unit = parseUnit(text, result.diagnostics);
+    for (const ast::TypeDecl &type : unit.types)
+        result.project.types.dataTypes.push_back({type.name, toModel(type.type), toModel(type.init), {}, {}, {}, 0});
+    const std::vector<PouTexts> texts = allPouTexts(text);
+    for (size_t i = 0; i < unit.pous.size(); ++i)
+        result.project.types.pous.push_back(
+            toModel(unit.pous[i], i < texts.size() ? texts[i] : PouTexts {}, result.diagnostics));
+    for (const ast::ConfigurationDecl &configuration : unit.configurations)
+        result.project.instances.configurations.push_back(toModel(configuration, result.diagnostics));
+    if (!unit.globals.empty()) {
+        result.diagnostics.warning({}, unit.globals.front().location,
+            QStringLiteral("VAR_GLOBAL outside a CONFIGURATION cannot be stored in a PLCopen project; put it inside "
+                           "the CONFIGURATION."));
+    }
+    return result;
+}
+
+} // namespace iec::interp::frontend

@@ -1,0 +1,23 @@
+#pragma once
+
+#include "interpreter/compiler/diagnostics.h"
+
+#include "model/project.h"
+
+#include <QStringView>
+
+// Reads IEC 61131-3 text (.st: TYPE, PROGRAM, FUNCTION_BLOCK, FUNCTION, CONFIGURATION ... as the
+// parser understands it) into the project model. Declarations become model values; ST and IL
+// bodies keep their text exactly as written (comments included), so editing and converting
+// back lose nothing the model can hold.
+namespace iec::interp::frontend {
+
+struct TextReadResult {
+    model::Project project;
+    Diagnostics diagnostics; // parse errors, and warnings for what the model cannot hold
+};
+
+// `projectName` becomes contentHeader/@name. With parse errors the project holds what was read.
+TextReadResult readIecText(QStringView text, const QString &projectName);
+
+} // namespace iec::interp::frontend

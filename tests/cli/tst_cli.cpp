@@ -1,0 +1,425 @@
+// iecstudio-cli check / run / convert, run as a separate process exactly as users run it
+// (formats: docs/cli.md).
+#include <QFile>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+class TestCli : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void firstStepsBlinks_data();
+    void firstStepsBlinks();
+    void runScriptCommand();
+    void cycleTimeForms_data();
+    void cycleTimeForms();
+    void setAppliesAtItsCycleAndCsvTrace();
+    void vcdTrace();
+    void namesByInstanceOrProgram_data();
+    void namesByInstanceOrProgram();
+    void programOptionRunsOneProgramAlone();
+    void unknownNamesAreRefused();
+    void runtimeFaultIsReported();
+    void compileErrorsStopRun();
+    void check_data();
+    void check();
+    void checkNamesGraphicalPousOfTheCorpus();
+    void convertRoundTrips();
+    void convertedStValidatesAgainstTheSchema();
+    void usageErrors_data();
+    void usageErrors();
+};
+
+namespace {
+
+struct Result {
+    int exitCode = -1;
+    QString out;
+    QString err;
+};
+
+Result cli(const QStringList &arguments)
+{
+    QProcess process;
+    process.start(QStringLiteral(IECSTUDIO_CLI), arguments);
+    if (!process.waitForFinished(120'000))
+        return {};
+    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2,
+        QString::fromUtf8(process.readAllStandardOutput()), QString::fromUtf8(process.readAllStandardError())};
+}
+
+QString example()
+{
+    return QStringLiteral(IEC_SOURCE_DIR "/resources/examples/first_steps.xml");
+}
+
+QString readAll(const QString &path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll())
+                                          : QStringLiteral("<missing %1>").arg(path);
+}
+
+// Writes `text` into `dir` as `name` and returns its path.
+QString writeFile(const QTemporaryDir &dir, const QString &name, const QString &text)
+{
+    const QString path = dir.filePath(name);
+    QFile file(path);
+    if (file.open(QIODevice::WriteOnly))
+        file.write(text.toUtf8());
+    return path;
+}
+
+const char *const kCounter = "PROGRAM Main\n"
+                             "VAR x : INT; on : BOOL; r : REAL := 0.5; t : TIME; s : STRING := 'a,b'; END_VAR\n"
+                             "x := x + 1;\nr := r * 2.0;\nt := t + T#1500ms;\n"
+                             "END_PROGRAM\n";
+
+// Program Prog runs as instance Fast of configuration C.
+const char *const kConfiguration
+    = "PROGRAM Prog\nVAR_EXTERNAL g : INT; END_VAR\nVAR n : INT; a : ARRAY[1..2] OF INT; q AT %QX0.1 : BOOL; END_VAR\n"
+      "n := n + 1; g := g + 2; a[2] := n; q := n > 2;\nEND_PROGRAM\n"
+      "PROGRAM Other\nVAR_EXTERNAL g : INT; END_VAR\ng := g - 1;\nEND_PROGRAM\n"
+      "CONFIGURATION C\nVAR_GLOBAL g : INT; END_VAR\nRESOURCE R ON PLC\n"
+      "TASK T(INTERVAL := T#5ms, PRIORITY := 1);\nPROGRAM Fast WITH T : Prog;\n"
+      "END_RESOURCE\nEND_CONFIGURATION\n";
+
+} // namespace
+
+void TestCli::firstStepsBlinks_data()
+{
+    // TON with PT = T#500ms at 10 ms: Q in its 51st call (cycle 51, ET = 500 ms), which toggles
+    // Blink on and counts; cycle 52 calls it with IN = NOT Q = FALSE (reset), cycle 53 starts
+    // again, so Q comes back in cycle 103 (Blink off) and 155 (Blink on, Count 2).
+    QTest::addColumn<int>("cycles");
+    QTest::addColumn<QString>("output");
+    QTest::newRow("50") << 50 << QStringLiteral("Main.Count = 0\nMain.Blink = FALSE\n");
+    QTest::newRow("51") << 51 << QStringLiteral("Main.Count = 1\nMain.Blink = TRUE\n");
+    QTest::newRow("102") << 102 << QStringLiteral("Main.Count = 1\nMain.Blink = TRUE\n");
+    QTest::newRow("103") << 103 << QStringLiteral("Main.Count = 1\nMain.Blink = FALSE\n");
+    QTest::newRow("155") << 155 << QStringLiteral("Main.Count = 2\nMain.Blink = TRUE\n");
+}
+
+void TestCli::firstStepsBlinks()
+{
+    QFETCH(int, cycles);
+    QFETCH(QString, output);
+    const Result result = cli({QStringLiteral("run"), example(), QStringLiteral("--cycles"), QString::number(cycles),
+        QStringLiteral("--watch"), QStringLiteral("Main.Count"), QStringLiteral("--watch"),
+        QStringLiteral("Main.Blink")});
+    QCOMPARE(result.err, QString());
+    QCOMPARE(result.out, output);
+    QCOMPARE(result.exitCode, 0);
+}
+
+void TestCli::runScriptCommand()
+{
+    // What scripts/run.sh runs without a display.
+    const Result result = cli({QStringLiteral("run"), example(), QStringLiteral("--cycles"), QStringLiteral("100"),
+        QStringLiteral("--cycle-time"), QStringLiteral("10ms"), QStringLiteral("--watch"), QStringLiteral("Main.Count"),
+        QStringLiteral("--watch"), QStringLiteral("Main.Blink")});
+    QCOMPARE(result.out, QStringLiteral("Main.Count = 1\nMain.Blink = TRUE\n"));
+    QCOMPARE(result.exitCode, 0);
+}
+
+void TestCli::cycleTimeForms_data()
+{
+    QTest::addColumn<QString>("cycleTime");
+    QTest::addColumn<QString>("output");
+    // ET after 5 cycles is 4 cycle times: the first call starts the timer at ET = 0.
+    QTest::newRow("10ms") << QStringLiteral("10ms") << QStringLiteral("Main.T.ET = T#40ms\n");
+    QTest::newRow("T#10ms") << QStringLiteral("T#10ms") << QStringLiteral("Main.T.ET = T#40ms\n");
+    QTest::newRow("TIME#10ms") << QStringLiteral("TIME#10ms") << QStringLiteral("Main.T.ET = T#40ms\n");
+    QTest::newRow("PT0.01S") << QStringLiteral("PT0.01S") << QStringLiteral("Main.T.ET = T#40ms\n");
+    QTest::newRow("0.25s") << QStringLiteral("0.25s") << QStringLiteral("Main.T.ET = T#1s\n");
+    QTest::newRow("no option: 10 ms") << QString() << QStringLiteral("Main.T.ET = T#40ms\n");
+}
+
+void TestCli::cycleTimeForms()
+{
+    QFETCH(QString, cycleTime);
+    QFETCH(QString, output);
+    QTemporaryDir dir;
+    const QString file = writeFile(dir, QStringLiteral("timer.st"),
+        QStringLiteral("PROGRAM Main\nVAR T : TON; END_VAR\nT(IN := TRUE, PT := T#10s);\nEND_PROGRAM\n"));
+    QStringList arguments {QStringLiteral("run"), file, QStringLiteral("--cycles"), QStringLiteral("5"),
+        QStringLiteral("--watch"), QStringLiteral("Main.T.ET")};
+    if (!cycleTime.isEmpty())
+        arguments << QStringLiteral("--cycle-time") << cycleTime;
+    const Result result = cli(arguments);
+    QCOMPARE(result.err, QString());
+    QCOMPARE(result.out, output);
+    QCOMPARE(result.exitCode, 0);
+}
+
+void TestCli::setAppliesAtItsCycleAndCsvTrace()
+{
+    QTemporaryDir dir;
+    const QString file = writeFile(dir, QStringLiteral("counter.st"), QLatin1String(kCounter));
+    const QString csv = dir.filePath(QStringLiteral("trace.csv"));
+    const Result result = cli(
+        {QStringLiteral("run"), file, QStringLiteral("--cycles"), QStringLiteral("4"), QStringLiteral("--cycle-time"),
+            QStringLiteral("T#2.5ms"), QStringLiteral("--set"), QStringLiteral("Main.x=100@3"), QStringLiteral("--set"),
+            QStringLiteral("Main.on=TRUE@2"), QStringLiteral("--set"), QStringLiteral("Main.s='y,\"z\"'"),
+            QStringLiteral("--watch"), QStringLiteral("Main.x"), QStringLiteral("--watch"), QStringLiteral("Main.on"),
+            QStringLiteral("--watch"), QStringLiteral("Main.r"), QStringLiteral("--watch"), QStringLiteral("Main.t"),
+            QStringLiteral("--watch"), QStringLiteral("Main.s"), QStringLiteral("--trace"), csv});
+    QCOMPARE(result.err, QString());
+    QCOMPARE(
+        result.out, QStringLiteral("Main.x = 102\nMain.on = TRUE\nMain.r = 8.0\nMain.t = T#6s\nMain.s = 'y,\"z\"'\n"));
+    QCOMPARE(result.exitCode, 0);
+    QCOMPARE(readAll(csv),
+        QStringLiteral("cycle,time_ms,Main.x,Main.on,Main.r,Main.t,Main.s\n"
+                       "1,2.5,1,FALSE,1.0,T#1s500ms,\"'y,\"\"z\"\"'\"\n"
+                       "2,5,2,TRUE,2.0,T#3s,\"'y,\"\"z\"\"'\"\n"
+                       "3,7.5,101,TRUE,4.0,T#4s500ms,\"'y,\"\"z\"\"'\"\n"
+                       "4,10,102,TRUE,8.0,T#6s,\"'y,\"\"z\"\"'\"\n"));
+}
+
+void TestCli::vcdTrace()
+{
+    QTemporaryDir dir;
+    const QString file = writeFile(dir, QStringLiteral("counter.st"), QLatin1String(kCounter));
+    const QString vcd = dir.filePath(QStringLiteral("trace.vcd"));
+    const Result result = cli({QStringLiteral("run"), file, QStringLiteral("--cycles"), QStringLiteral("2"),
+        QStringLiteral("--set"), QStringLiteral("Main.on=TRUE@2"), QStringLiteral("--watch"), QStringLiteral("Main.on"),
+        QStringLiteral("--watch"), QStringLiteral("Main.x"), QStringLiteral("--watch"), QStringLiteral("Main.r"),
+        QStringLiteral("--trace"), vcd});
+    QCOMPARE(result.err, QString());
+    QCOMPARE(result.exitCode, 0);
+    QCOMPARE(readAll(vcd),
+        QStringLiteral("$version iecstudio-cli run $end\n$timescale 1 us $end\n$scope module iecstudio $end\n"
+                       "$var wire 1 ! Main.on $end\n$var wire 16 \" Main.x $end\n$var real 64 # Main.r $end\n"
+                       "$upscope $end\n$enddefinitions $end\n#0\n$dumpvars\n0!\nb0 \"\nr0.5 #\n$end\n"
+                       "#10000\nb1 \"\nr1 #\n"
+                       "#20000\n1!\nb10 \"\nr2 #\n"));
+
+    const Result refused = cli({QStringLiteral("run"), file, QStringLiteral("--watch"), QStringLiteral("Main.s"),
+        QStringLiteral("--trace"), vcd});
+    QCOMPARE(refused.exitCode, 2);
+    QCOMPARE(refused.err,
+        QStringLiteral(
+            "iecstudio-cli: Main.s is a STRING, which a VCD trace cannot show; trace it to a .csv file instead.\n"));
+}
+
+void TestCli::namesByInstanceOrProgram_data()
+{
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QString>("output");
+    QTest::newRow("instance") << QStringLiteral("Fast.n") << QStringLiteral("Fast.n = 3\n");
+    QTest::newRow("program POU, one instance") << QStringLiteral("Prog.n") << QStringLiteral("Prog.n = 3\n");
+    QTest::newRow("global") << QStringLiteral("g") << QStringLiteral("g = 6\n");
+    QTest::newRow("output address") << QStringLiteral("%QX0.1") << QStringLiteral("%QX0.1 = TRUE\n");
+    QTest::newRow("array element") << QStringLiteral("Fast.a[2]") << QStringLiteral("Fast.a[2] = 3\n");
+}
+
+void TestCli::namesByInstanceOrProgram()
+{
+    QFETCH(QString, name);
+    QFETCH(QString, output);
+    QTemporaryDir dir;
+    const QString file = writeFile(dir, QStringLiteral("config.st"), QLatin1String(kConfiguration));
+    const Result result = cli({QStringLiteral("run"), file, QStringLiteral("--cycles"), QStringLiteral("3"),
+        QStringLiteral("--watch"), name});
+    QCOMPARE(result.err, QString());
+    QCOMPARE(result.out, output);
+    QCOMPARE(result.exitCode, 0);
+}
+
+void TestCli::programOptionRunsOneProgramAlone()
+{
+    QTemporaryDir dir;
+    const QString file = writeFile(dir, QStringLiteral("config.st"), QLatin1String(kConfiguration));
+    const Result result = cli({QStringLiteral("run"), file, QStringLiteral("--program"), QStringLiteral("Other"),
+        QStringLiteral("--cycles"), QStringLiteral("4"), QStringLiteral("--watch"), QStringLiteral("g")});
+    QCOMPARE(result.err, QString());
+    QCOMPARE(result.out, QStringLiteral("g = -4\n")); // the configuration's global stays; only Other runs
+    QCOMPARE(result.exitCode, 0);
+    const Result missing = cli({QStringLiteral("run"), file, QStringLiteral("--program"), QStringLiteral("Nope")});
+    QCOMPARE(missing.exitCode, 1);
+    QCOMPARE(missing.err, file + QStringLiteral(": error: There is no PROGRAM called Nope.\n"));
+}
+
+void TestCli::unknownNamesAreRefused()
+{
+    const Result result = cli({QStringLiteral("run"), example(), QStringLiteral("--watch"),
+        QStringLiteral("Main.Nothing"), QStringLiteral("--set"), QStringLiteral("Other.x=1")});
+    QCOMPARE(result.exitCode, 2);
+    QCOMPARE(result.out, QString());
+    const QString prefix = QStringLiteral("iecstudio-cli: ") + example();
+    QCOMPARE(result.err,
+        prefix
+            + QStringLiteral(
+                ": there is no variable called Main.Nothing (write it as Program.Variable, Global or %QX0.1).\n")
+            + prefix
+            + QStringLiteral(
+                ": there is no variable called Other.x (write it as Program.Variable, Global or %QX0.1).\n"));
+}
+
+void TestCli::runtimeFaultIsReported()
+{
+    QTemporaryDir dir;
+    const QString file = writeFile(dir, QStringLiteral("fault.st"),
+        QStringLiteral("PROGRAM Main\nVAR d : INT := 2; q : INT; END_VAR\nd := d - 1;\nq := 10 / d;\nEND_PROGRAM\n"));
+    const Result result = cli({QStringLiteral("run"), file, QStringLiteral("--cycles"), QStringLiteral("5"),
+        QStringLiteral("--watch"), QStringLiteral("Main.q")});
+    QCOMPARE(result.exitCode, 1);
+    QCOMPARE(result.out, QStringLiteral("Main.q = 10\n")); // the state the program stopped in
+    QCOMPARE(result.err, file + QStringLiteral(":Main:4: runtime error in cycle 2: Integer division by zero.\n"));
+}
+
+void TestCli::compileErrorsStopRun()
+{
+    QTemporaryDir dir;
+    const QString file = writeFile(
+        dir, QStringLiteral("wrong.st"), QStringLiteral("PROGRAM Main\nVAR x : INT; END_VAR\nx := y;\nEND_PROGRAM\n"));
+    const Result result = cli({QStringLiteral("run"), file, QStringLiteral("--watch"), QStringLiteral("Main.x")});
+    QCOMPARE(result.exitCode, 1);
+    QCOMPARE(result.out, QString());
+    QCOMPARE(result.err,
+        file + QStringLiteral(":Main:3:6: error: Unknown variable 'y'. (hint: declare it in a VAR section)\n"));
+}
+
+void TestCli::check_data()
+{
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QString>("content");
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<QString>("output"); // FILE stands for the file's path
+
+    QTest::newRow("clean .st") << QStringLiteral("ok.st") << QString::fromLatin1(kCounter) << 0 << QString();
+    QTest::newRow("undeclared")
+        << QStringLiteral("bad.st") << QStringLiteral("PROGRAM Main\nVAR x : INT; END_VAR\nx := y;\nEND_PROGRAM\n") << 1
+        << QStringLiteral("FILE:Main:3:6: error: Unknown variable 'y'. (hint: declare it in a VAR section)\n");
+    QTest::newRow("XML body: line in the body")
+        << QStringLiteral("bad.xml") << QStringLiteral(R"(<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <fileHeader companyName="t" productName="t" productVersion="1" creationDateTime="2026-01-01T00:00:00"/>
+  <contentHeader name="t"><coordinateInfo><fbd><scaling x="1" y="1"/></fbd><ld><scaling x="1" y="1"/></ld><sfc><scaling x="1" y="1"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous><pou name="P" pouType="program"><interface><localVars><variable name="x"><type><INT/></type></variable></localVars></interface>
+  <body><ST><xhtml:p><![CDATA[x := 1;
+x := y;]]></xhtml:p></ST></body></pou></pous></types><instances><configurations/></instances></project>)")
+        << 1 << QStringLiteral("FILE:P:2:6: error: Unknown variable 'y'. (hint: declare it in a VAR section)\n");
+    QTest::newRow("not XML") << QStringLiteral("broken.xml") << QStringLiteral("<project") << 1 << QString();
+}
+
+void TestCli::check()
+{
+    QFETCH(QString, name);
+    QFETCH(QString, content);
+    QFETCH(int, exitCode);
+    QFETCH(QString, output);
+    QTemporaryDir dir;
+    const QString file = writeFile(dir, name, content);
+    const Result result = cli({QStringLiteral("check"), file});
+    QCOMPARE(result.exitCode, exitCode);
+    if (!output.isEmpty() || exitCode == 0)
+        QCOMPARE(result.out, QString(output).replace(QLatin1String("FILE"), file));
+    else
+        QVERIFY2(result.out.startsWith(file + QLatin1Char(':')), qPrintable(result.out));
+
+    const Result missing = cli({QStringLiteral("check"), dir.filePath(QStringLiteral("missing.st"))});
+    QCOMPARE(missing.exitCode, 3);
+}
+
+void TestCli::checkNamesGraphicalPousOfTheCorpus()
+{
+    const QString file = QStringLiteral(IEC_SHARED_DIR "/plcopen/corpus/beremiz_iec61131_lang_test.xml");
+    const Result result = cli({QStringLiteral("check"), file});
+    QCOMPARE(result.exitCode, 1);
+    QCOMPARE(result.out,
+        file
+            + QStringLiteral(":main_test: error: main_test is written in FBD, which this version cannot run yet. "
+                             "(hint: write it in ST or IL to run it now)\n")
+            + file
+            + QStringLiteral(":TEMPO_TEST: error: TEMPO_TEST is written in FBD, which this version cannot run yet. "
+                             "(hint: write it in ST or IL to run it now)\n"));
+}
+
+void TestCli::convertRoundTrips()
+{
+    QTemporaryDir dir;
+    const QString st1 = dir.filePath(QStringLiteral("a.st"));
+    const QString xml = dir.filePath(QStringLiteral("b.xml"));
+    const QString st2 = dir.filePath(QStringLiteral("c.st"));
+    const QString st3 = dir.filePath(QStringLiteral("d.st"));
+    QCOMPARE(cli({QStringLiteral("convert"), example(), st1}).exitCode, 0);
+    QCOMPARE(cli({QStringLiteral("convert"), st1, xml}).exitCode, 0);
+    QCOMPARE(cli({QStringLiteral("convert"), xml, st2}).exitCode, 0);
+    QCOMPARE(cli({QStringLiteral("convert"), st2, st3}).exitCode, 0);
+    QVERIFY(readAll(st1).startsWith(QLatin1String("PROGRAM Main\n")));
+    QCOMPARE(readAll(st2), readAll(st1));
+    QCOMPARE(readAll(st3), readAll(st1));
+    // The converted program still runs the same.
+    const QStringList watch {
+        QStringLiteral("--cycles"), QStringLiteral("51"), QStringLiteral("--watch"), QStringLiteral("Main.Count")};
+    QCOMPARE(cli(QStringList {QStringLiteral("run"), st1} + watch).out, QStringLiteral("Main.Count = 1\n"));
+    QCOMPARE(cli(QStringList {QStringLiteral("run"), xml} + watch).out, QStringLiteral("Main.Count = 1\n"));
+    // .xml -> .xml keeps working; the copy converts to the same text.
+    const QString copy = dir.filePath(QStringLiteral("copy.xml"));
+    const QString st4 = dir.filePath(QStringLiteral("e.st"));
+    QCOMPARE(cli({QStringLiteral("convert"), xml, copy}).exitCode, 0);
+    QCOMPARE(cli({QStringLiteral("convert"), copy, st4}).exitCode, 0);
+    QCOMPARE(readAll(st4), readAll(st1));
+}
+
+void TestCli::convertedStValidatesAgainstTheSchema()
+{
+    const QString xmllint = QStandardPaths::findExecutable(QStringLiteral("xmllint"));
+    if (xmllint.isEmpty())
+        QSKIP("xmllint is not installed (libxml2-utils)");
+    QTemporaryDir dir;
+    const QString st = writeFile(dir, QStringLiteral("all.st"),
+        QStringLiteral("TYPE P : STRUCT x : INT := 1; END_STRUCT; C : (Red, Green); R : INT (0..9); END_TYPE\n")
+            + QLatin1String(kCounter) + QLatin1String(kConfiguration));
+    const QString xml = dir.filePath(QStringLiteral("all.xml"));
+    const Result converted = cli({QStringLiteral("convert"), st, xml});
+    QCOMPARE(converted.err, QString());
+    QCOMPARE(converted.exitCode, 0);
+    QProcess lint;
+    lint.start(xmllint,
+        {QStringLiteral("--noout"), QStringLiteral("--schema"),
+            QStringLiteral(IEC_SHARED_DIR "/plcopen/tc6_xml_v201.xsd"), xml});
+    QVERIFY(lint.waitForFinished(60'000));
+    QVERIFY2(lint.exitCode() == 0, lint.readAllStandardError().constData());
+}
+
+void TestCli::usageErrors_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("firstLine");
+    QTest::newRow("run without file") << QStringList {QStringLiteral("run")}
+                                      << QStringLiteral("iecstudio-cli: run needs a FILE (.xml or .st).");
+    QTest::newRow("bad cycles") << QStringList {QStringLiteral("run"), QStringLiteral("x.st"),
+        QStringLiteral("--cycles"), QStringLiteral("many")}
+                                << QStringLiteral(
+                                       "iecstudio-cli: --cycles needs a whole number of cycles, not 'many'.");
+    QTest::newRow("bad cycle time")
+        << QStringList {QStringLiteral("run"), QStringLiteral("x.st"), QStringLiteral("--cycle-time"),
+               QStringLiteral("fast")}
+        << QStringLiteral(
+               "iecstudio-cli: --cycle-time needs a duration above zero such as 10ms, T#10ms or PT0.01S, not 'fast'.");
+    QTest::newRow("bad trace") << QStringList {QStringLiteral("run"), QStringLiteral("x.st"), QStringLiteral("--trace"),
+        QStringLiteral("t.txt")}
+                               << QStringLiteral("iecstudio-cli: --trace writes a .csv or a .vcd file, not 't.txt'.");
+    QTest::newRow("bad set") << QStringList {QStringLiteral("run"), QStringLiteral("x.st"), QStringLiteral("--set"),
+        QStringLiteral("x")} << QStringLiteral("iecstudio-cli: --set needs NAME=VALUE or NAME=VALUE@CYCLE, not 'x'.");
+    QTest::newRow("convert to .txt")
+        << QStringList {QStringLiteral("convert"), QStringLiteral("a.xml"), QStringLiteral("b.txt")}
+        << QStringLiteral("iecstudio-cli: convert reads and writes PLCopen XML (.xml) and IEC text (.st).");
+}
+
+void TestCli::usageErrors()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, firstLine);
+    const Result result = cli(arguments);
+    QCOMPARE(result.exitCode, 2);
+    QCOMPARE(result.err.section(QLatin1Char('\n'), 0, 0), firstLine);
+}
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "tst_cli.moc"

@@ -1,0 +1,206 @@
+// IEC text <-> project model (interpreter/frontend/iecreader.h, iecprinter.h): what a .st file
+// becomes in the model, how the model prints, and that printing is stable after one round.
+#include "interpreter/compiler/compiler.h"
+#include "interpreter/frontend/iecprinter.h"
+#include "interpreter/frontend/iecreader.h"
+#include "interpreter/frontend/projectsource.h"
+#include "interpreter/runtime/runtime.h"
+
+#include "model/plcopen/reader.h"
+
+#include <QTest>
+
+using namespace iec;
+using namespace iec::interp;
+
+class TestIecText : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void printsWhatItRead_data();
+    void printsWhatItRead();
+    void readsIntoModelValues();
+    void keepsBodiesVerbatim();
+    void printsTheFirstStepsExample();
+    void graphicalBodiesBecomeAComment();
+    void reportsParseErrorsWithFileLines();
+    void textAndModelRunAlike();
+};
+
+namespace {
+
+QString errors(const Diagnostics &diagnostics)
+{
+    QStringList lines;
+    for (const Diagnostic &d : diagnostics.all())
+        lines << d.toString();
+    return lines.join(QLatin1Char('\n'));
+}
+
+QString roundTrip(const QString &text)
+{
+    const frontend::TextReadResult read = frontend::readIecText(text, QStringLiteral("p"));
+    if (!read.diagnostics.all().empty())
+        return errors(read.diagnostics);
+    return frontend::printProject(read.project);
+}
+
+} // namespace
+
+void TestIecText::printsWhatItRead_data()
+{
+    QTest::addColumn<QString>("input");
+    QTest::addColumn<QString>("printed");
+
+    QTest::newRow("struct, enum, array, subrange, string")
+        << QStringLiteral("TYPE P : STRUCT x : INT := 1; y : REAL; END_STRUCT; END_TYPE\n"
+                          "TYPE C : (Red, Green := 5) INT := Green; END_TYPE\n"
+                          "TYPE A : ARRAY[1..2, 0..N] OF P; S : UINT (0..10); N8 : STRING[8] := 'x'; END_TYPE\n")
+        << QStringLiteral(
+               "TYPE\n    P : STRUCT\n        x : INT := 1;\n        y : REAL;\n    END_STRUCT;\nEND_TYPE\n\n"
+               "TYPE\n    C : (Red, Green := 5) INT := Green;\nEND_TYPE\n\n"
+               "TYPE\n    A : ARRAY[1..2, 0..N] OF P;\nEND_TYPE\n\n"
+               "TYPE\n    S : UINT (0..10);\nEND_TYPE\n\n"
+               "TYPE\n    N8 : STRING[8] := 'x';\nEND_TYPE\n");
+    QTest::newRow("function with sections, flags, AT and initial values")
+        << QStringLiteral(
+               "FUNCTION F : DINT\nVAR_INPUT a, b : INT := -1; END_VAR\nVAR CONSTANT K : INT := 2 * 3; END_VAR\n"
+               "VAR RETAIN q AT %QX0.1 : BOOL; arr : ARRAY[0..3] OF INT := [2(1), 3, 4]; s : P := (x := 2); END_VAR\n"
+               "F := a + b;\nEND_FUNCTION\n")
+        << QStringLiteral("FUNCTION F : DINT\nVAR_INPUT\n    a : INT := -1;\n    b : INT := -1;\nEND_VAR\n"
+                          "VAR CONSTANT\n    K : INT := 2 * 3;\nEND_VAR\n"
+                          "VAR RETAIN\n    q AT %QX0.1 : BOOL;\n    arr : ARRAY[0..3] OF INT := [2(1), 3, 4];\n    s : "
+                          "P := (x := 2);\nEND_VAR\n"
+                          "F := a + b;\nEND_FUNCTION\n");
+    QTest::newRow("configuration with tasks and instances")
+        << QStringLiteral(
+               "PROGRAM Main\nEND_PROGRAM\nCONFIGURATION Cfg\nVAR_GLOBAL g : INT; END_VAR\nRESOURCE R ON PLC\n"
+               "TASK T1(INTERVAL := T#20ms, PRIORITY := 3);\nPROGRAM M1 WITH T1 : Main;\nPROGRAM M2 : Main;\n"
+               "END_RESOURCE\nEND_CONFIGURATION\n")
+        << QStringLiteral(
+               "PROGRAM Main\nEND_PROGRAM\n\nCONFIGURATION Cfg\n    VAR_GLOBAL\n        g : INT;\n    END_VAR\n"
+               "    RESOURCE R ON PLC\n        TASK T1(INTERVAL := T#20ms, PRIORITY := 3);\n"
+               "        PROGRAM M1 WITH T1 : Main;\n        PROGRAM M2 : Main;\n    END_RESOURCE\nEND_CONFIGURATION\n");
+}
+
+void TestIecText::printsWhatItRead()
+{
+    QFETCH(QString, input);
+    QFETCH(QString, printed);
+    QCOMPARE(roundTrip(input), printed);
+    QCOMPARE(roundTrip(printed), printed); // stable after one round
+}
+
+void TestIecText::readsIntoModelValues()
+{
+    const auto read
+        = frontend::readIecText(u"FUNCTION_BLOCK Fb\nVAR_IN_OUT io : WSTRING; END_VAR\nVAR_OUTPUT NON_RETAIN o : "
+                                u"ARRAY[1..2] OF BOOL := [TRUE, FALSE]; END_VAR\nEND_FUNCTION_BLOCK\n",
+            QStringLiteral("proj"));
+    QCOMPARE(errors(read.diagnostics), QString());
+    QCOMPARE(read.project.contentHeader.name, QStringLiteral("proj"));
+    QCOMPARE(read.project.types.pous.size(), size_t(1));
+    const model::Pou &fb = read.project.types.pous.front();
+    QCOMPARE(fb.kind, model::PouKind::FunctionBlock);
+    const auto &lists = fb.pouInterface->varLists;
+    QCOMPARE(lists.size(), size_t(2));
+    QCOMPARE(lists[0].kind, model::VarListKind::InOut);
+    QCOMPARE(lists[0].variables.front().type, (model::DataType {model::StringType {true, std::nullopt}}));
+    QCOMPARE(lists[1].kind, model::VarListKind::Output);
+    QVERIFY(lists[1].nonretain);
+    const model::Variable &o = lists[1].variables.front();
+    const auto *array = std::get_if<model::ArrayType>(&o.type.kind);
+    QVERIFY(array);
+    QCOMPARE(array->dimensions, (std::vector<model::Range> {{QStringLiteral("1"), QStringLiteral("2")}}));
+    QCOMPARE(*array->baseType, (model::DataType {model::ElementaryType {QStringLiteral("BOOL")}}));
+    const auto *items = std::get_if<model::ArrayValue>(&o.initialValue->kind);
+    QVERIFY(items);
+    QCOMPARE(items->values.size(), size_t(2));
+    QCOMPARE(*items->values[1].value, (model::Value {model::SimpleValue {QStringLiteral("FALSE")}}));
+}
+
+void TestIecText::keepsBodiesVerbatim()
+{
+    const QString body = QStringLiteral("(* keep me *)\nIF x THEN\n    x := FALSE; // and me\nEND_IF;");
+    const auto read = frontend::readIecText(
+        QStringLiteral(
+            "PROGRAM Main\nVAR x : BOOL; END_VAR\n%1\n\nACTION Reset:\nx := FALSE;\nEND_ACTION\nEND_PROGRAM\n")
+            .arg(body),
+        QStringLiteral("p"));
+    QCOMPARE(errors(read.diagnostics), QString());
+    const model::Pou &main = read.project.types.pous.front();
+    QCOMPARE(main.body()->language(), model::BodyLanguage::ST);
+    QCOMPARE(main.body()->text(), body);
+    QCOMPARE(main.actions.size(), size_t(1));
+    QCOMPARE(main.actions.front().name, QStringLiteral("Reset"));
+    QCOMPARE(main.actions.front().body.text(), QStringLiteral("x := FALSE;"));
+
+    const auto il
+        = frontend::readIecText(u"FUNCTION_BLOCK F\nVAR n : INT; END_VAR\nLD n\nADD 1\nST n\nEND_FUNCTION_BLOCK\n", {});
+    QCOMPARE(il.project.types.pous.front().body()->language(), model::BodyLanguage::IL);
+    QCOMPARE(il.project.types.pous.front().body()->text(), QStringLiteral("LD n\nADD 1\nST n"));
+}
+
+void TestIecText::printsTheFirstStepsExample()
+{
+    const auto read
+        = model::plcopen::readProjectFile(QStringLiteral(IEC_SOURCE_DIR "/resources/examples/first_steps.xml"));
+    QVERIFY(read.ok);
+    QCOMPARE(frontend::printProject(read.project),
+        QStringLiteral("PROGRAM Main\nVAR\n    Pulse : TON;\n    Blink : BOOL;\n    Count : INT := 0;\nEND_VAR\n"
+                       "(* A lamp that blinks at 1 Hz and counts its flashes. *)\n"
+                       "Pulse(IN := NOT Pulse.Q, PT := T#500ms);\nIF Pulse.Q THEN\n    Blink := NOT Blink;\n"
+                       "    IF Blink THEN\n        Count := Count + 1;\n    END_IF;\nEND_IF;\nEND_PROGRAM\n\n"
+                       "CONFIGURATION Config\n    RESOURCE Resource ON PLC\n        TASK MainTask(INTERVAL := T#10ms, "
+                       "PRIORITY := 1);\n"
+                       "        PROGRAM Main WITH MainTask : Main;\n    END_RESOURCE\nEND_CONFIGURATION\n"));
+}
+
+void TestIecText::graphicalBodiesBecomeAComment()
+{
+    model::Pou chart;
+    chart.name = QStringLiteral("Chart");
+    chart.bodies.push_back(model::Body::withLanguage(model::BodyLanguage::SFC));
+    std::vector<frontend::PrintWarning> warnings;
+    QCOMPARE(frontend::printPou(chart, &warnings),
+        QStringLiteral(
+            "PROGRAM Chart\n(* The SFC body of Chart has no IEC text form and was left out. *)\nEND_PROGRAM\n"));
+    QCOMPARE(warnings.size(), size_t(1));
+    QCOMPARE(warnings.front().pou, QStringLiteral("Chart"));
+    QCOMPARE(warnings.front().message,
+        QStringLiteral("Chart is written in SFC, which has no IEC text form; its body was left out."));
+}
+
+void TestIecText::reportsParseErrorsWithFileLines()
+{
+    const auto read = frontend::readIecText(u"PROGRAM Main\nVAR x : INT END_VAR\nEND_PROGRAM\n", {});
+    QVERIFY(read.diagnostics.hasErrors());
+    QCOMPARE(read.diagnostics.all().front().location.line, 2);
+}
+
+void TestIecText::textAndModelRunAlike()
+{
+    const QString source = QStringLiteral("PROGRAM Main\nVAR t : TON; n : INT; END_VAR\nt(IN := TRUE, PT := T#30ms);\n"
+                                          "IF t.Q THEN n := n + 1; END_IF;\nEND_PROGRAM\n");
+    const auto read = frontend::readIecText(source, {});
+    QCOMPARE(errors(read.diagnostics), QString());
+    Diagnostics fromModel, fromText;
+    const auto viaModel = frontend::compileProject(read.project, fromModel);
+    const auto viaText = compileText(source, fromText);
+    QVERIFY(viaModel && viaText);
+    Runtime a(viaModel), b(viaText);
+    QStringList traceA, traceB;
+    for (int cycle = 0; cycle < 6; ++cycle) {
+        QVERIFY(a.runCycle() && b.runCycle());
+        traceA << a.read(QStringLiteral("Main.n")).value();
+        traceB << b.read(QStringLiteral("Main.n")).value();
+    }
+    QCOMPARE(traceA,
+        (QStringList {QStringLiteral("0"), QStringLiteral("0"), QStringLiteral("0"), QStringLiteral("1"),
+            QStringLiteral("2"), QStringLiteral("3")}));
+    QCOMPARE(traceB, traceA);
+}
+
+QTEST_GUILESS_MAIN(TestIecText)
+#include "tst_iectext.moc"
