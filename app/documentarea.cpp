@@ -6,6 +6,7 @@
 #include "model/projectmodel.h"
 
 #include <QLabel>
+#include <QTextDocument>
 
 namespace iec::app {
 
@@ -27,13 +28,12 @@ DocumentArea::DocumentArea(model::ProjectModel &projectModel, QWidget *parent)
     setMovable(true);
     connect(this, &QTabWidget::tabCloseRequested, this, [this](int index) {
         flushEdits();
-        delete widget(index);
+        closeDocument(index);
     });
     connect(&projectModel, &model::ProjectModel::projectReset, this,
-            [this] { closeDocumentsIf([](const BodyRef &) { return true; }); });
-    connect(&projectModel, &model::ProjectModel::pouRemoved, this, [this](model::PouId id) {
-        closeDocumentsIf([id](const BodyRef &ref) { return ref.pou == id; });
-    });
+        [this] { closeDocumentsIf([](const BodyRef &) { return true; }); });
+    connect(&projectModel, &model::ProjectModel::pouRemoved, this,
+        [this](model::PouId id) { closeDocumentsIf([id](const BodyRef &ref) { return ref.pou == id; }); });
     connect(&projectModel, &model::ProjectModel::pouRenamed, this, &DocumentArea::retitleDocuments);
     connect(&projectModel, &model::ProjectModel::pouPartsChanged, this, [this] {
         // A renamed action keeps no tab: its BodyRef (by name) no longer finds a body.
@@ -110,8 +110,10 @@ QWidget *DocumentArea::createEditor(const BodyRef &ref)
     auto *textWidget = new editors::TextEditorWidget(language);
     editors::CodeEditor *editor = textWidget->editor();
     editor->setBodyText(body->text());
+    editor->document()->setModified(false);
+    connect(editor->document(), &QTextDocument::modificationChanged, this, &DocumentArea::typingModifiedChanged);
     connect(editor, &editors::CodeEditor::textEdited, this,
-            [this, ref, editor] { m_projectModel.setBodyText(ref, editor->toPlainText()); });
+        [this, ref, editor] { m_projectModel.setBodyText(ref, editor->toPlainText()); });
     return textWidget;
 }
 
@@ -129,15 +131,72 @@ void DocumentArea::updateTextFromModel(const BodyRef &ref)
     // rewrote references, an undo of such a change) replaces the editor's text.
     editors::CodeEditor *editor = textEditorFor(ref);
     const model::Body *body = m_projectModel.body(ref);
-    if (editor && body && editor->toPlainText() != body->text())
+    if (editor && body && editor->toPlainText() != body->text()) {
+        // The replaced text came from an undoable command; typing before it is still unsaved.
+        const bool typedBefore = editor->document()->isModified();
         editor->setBodyText(body->text());
+        editor->document()->setModified(typedBefore);
+    }
+}
+
+bool DocumentArea::hasUnsavedTyping() const
+{
+    if (m_typingInClosedDocuments)
+        return true;
+    for (int index = 0; index < count(); ++index) {
+        if (const auto *textWidget = qobject_cast<editors::TextEditorWidget *>(widget(index))) {
+            if (textWidget->editor()->document()->isModified())
+                return true;
+        }
+    }
+    return false;
+}
+
+void DocumentArea::markTypingSaved()
+{
+    m_typingInClosedDocuments = false;
+    for (int index = 0; index < count(); ++index) {
+        if (auto *textWidget = qobject_cast<editors::TextEditorWidget *>(widget(index)))
+            textWidget->editor()->document()->setModified(false);
+    }
+    Q_EMIT typingModifiedChanged();
+}
+
+void DocumentArea::closeDocument(int index)
+{
+    // The typing is in the model by now (flushed), but no undo stack remembers it.
+    if (const auto *textWidget = qobject_cast<editors::TextEditorWidget *>(widget(index))) {
+        if (textWidget->editor()->document()->isModified())
+            m_typingInClosedDocuments = true;
+    }
+    delete widget(index);
+    Q_EMIT typingModifiedChanged();
+}
+
+void DocumentArea::activateNext()
+{
+    if (count() > 0)
+        setCurrentIndex((currentIndex() + 1) % count());
+}
+
+void DocumentArea::activatePrevious()
+{
+    if (count() > 0)
+        setCurrentIndex((currentIndex() + count() - 1) % count());
+}
+
+void DocumentArea::closeAll()
+{
+    flushEdits();
+    for (int index = count() - 1; index >= 0; --index)
+        closeDocument(index);
 }
 
 void DocumentArea::closeDocumentsIf(const std::function<bool(const BodyRef &)> &shouldClose)
 {
     for (int index = count() - 1; index >= 0; --index) {
         if (shouldClose(refOf(index)))
-            delete widget(index);
+            closeDocument(index);
     }
 }
 

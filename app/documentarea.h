@@ -7,7 +7,7 @@
 namespace iec::model {
 class ProjectModel;
 struct Project;
-}
+} // namespace iec::model
 
 namespace iec::editors {
 class CodeEditor;
@@ -34,7 +34,22 @@ public:
     // Sends text typed but not yet pushed (the editors wait for a pause) into the model.
     void flushEdits();
 
+    // Typing is not on any undo stack, so the window asks here whether there is unsaved typing:
+    // an open editor's document is modified, or one was when its tab closed.
+    [[nodiscard]] bool hasUnsavedTyping() const;
+    // The project was saved (or replaced): what is typed so far counts as saved.
+    void markTypingSaved();
+
+    // Window → Next / Previous Document (wrapping around).
+    void activateNext();
+    void activatePrevious();
+    void closeAll();
+
     static QString title(const model::Project &project, const model::BodyRef &ref);
+
+Q_SIGNALS:
+    // hasUnsavedTyping() may have changed.
+    void typingModifiedChanged();
 
 private:
     void closeDocumentsIf(const std::function<bool(const model::BodyRef &)> &shouldClose);
@@ -42,8 +57,10 @@ private:
     void updateTextFromModel(const model::BodyRef &ref);
     [[nodiscard]] model::BodyRef refOf(int index) const;
     QWidget *createEditor(const model::BodyRef &ref);
+    void closeDocument(int index);
 
     model::ProjectModel &m_projectModel;
+    bool m_typingInClosedDocuments = false;
 };
 
 } // namespace iec::app

@@ -15,13 +15,14 @@ int main(int argc, char *argv[])
     parser.setApplicationDescription(QStringLiteral("IEC 61131-3 development environment"));
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addPositionalArgument(QStringLiteral("project"),
-                                 QStringLiteral("PLCopen XML project to open."));
+    parser.addPositionalArgument(QStringLiteral("project"), QStringLiteral("PLCopen XML project to open."));
     parser.process(application);
 
     iec::app::MainWindow window;
     window.show();
-    if (!parser.positionalArguments().isEmpty()) {
+    // A recovered project takes the window; the project named on the command line waits.
+    window.offerRecoveryInteractive();
+    if (!parser.positionalArguments().isEmpty() && !window.hasUnsavedChanges()) {
         QString error;
         if (!window.openProject(parser.positionalArguments().constFirst(), &error))
             QMessageBox::critical(&window, QApplication::translate("main", "Open Project"), error);

@@ -1,11 +1,19 @@
 #include "app/mainwindow.h"
 
 #include "app/documentarea.h"
+#include "app/listmenus.h"
 #include "app/messagespane.h"
+#include "app/projectcommands.h"
+#include "app/projecttreeactions.h"
 #include "app/projecttreemodel.h"
 #include "app/projecttreeview.h"
+#include "app/recentfiles.h"
+#include "app/recoverymanager.h"
 #include "app/settingsdialog.h"
 #include "app/uitranslator.h"
+#include "app/undoactions.h"
+#include "app/undostacks.h"
+#include "editors/text/codeeditor.h"
 #include "model/plcopen/reader.h"
 #include "model/plcopen/writer.h"
 #include "model/projectmodel.h"
@@ -13,14 +21,18 @@
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
 #include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
+#include <QStyle>
+#include <QToolBar>
 #include <QUndoGroup>
 
 namespace iec::app {
@@ -28,7 +40,9 @@ namespace iec::app {
 MainWindow::MainWindow(QWidget *parent)
     : QMainWindow(parent)
     , m_projectModel(new model::ProjectModel(this))
-    , m_undoGroup(new QUndoGroup(this))
+    , m_undoStacks(new UndoStacks(this))
+    , m_projectCommands(std::make_unique<ProjectCommands>(*m_projectModel, m_undoStacks->projectStack()))
+    , m_recovery(new RecoveryManager(this))
     , m_translator(new UiTranslator(this))
     , m_settings(Settings::load(QSettings()))
 {
@@ -36,40 +50,56 @@ MainWindow::MainWindow(QWidget *parent)
     m_documents = new DocumentArea(*m_projectModel, this);
     m_documents->setObjectName(QStringLiteral("documentArea"));
     setCentralWidget(m_documents);
+    m_projectCommands->setFlushPendingEdits([this] { m_documents->flushEdits(); });
+    // Modified = some undo stack left its clean state, or typing (which has no stack) is unsaved.
     connect(m_projectModel, &model::ProjectModel::projectReset, this, &MainWindow::updateWindowTitle);
-    // Every change bumps the revision; the title's [*] compares it with the saved one.
-    for (const auto signal : {&model::ProjectModel::pouAdded, &model::ProjectModel::pouRemoved,
-                              &model::ProjectModel::pouRenamed, &model::ProjectModel::pouPartsChanged,
-                              &model::ProjectModel::variablesChanged})
-        connect(m_projectModel, signal, this, &MainWindow::updateWindowTitle);
-    connect(m_projectModel, &model::ProjectModel::dataTypesChanged, this, &MainWindow::updateWindowTitle);
-    connect(m_projectModel, &model::ProjectModel::bodyTextChanged, this, &MainWindow::updateWindowTitle);
-    connect(m_projectModel, &model::ProjectModel::elementsInserted, this, &MainWindow::updateWindowTitle);
-    connect(m_projectModel, &model::ProjectModel::elementsRemoved, this, &MainWindow::updateWindowTitle);
-    connect(m_projectModel, &model::ProjectModel::elementsChanged, this, &MainWindow::updateWindowTitle);
-    connect(m_projectModel, &model::ProjectModel::connectionsChanged, this, &MainWindow::updateWindowTitle);
+    connect(m_undoStacks, &UndoStacks::cleanChanged, this, &MainWindow::updateWindowTitle);
+    connect(m_documents, &DocumentArea::typingModifiedChanged, this, &MainWindow::updateWindowTitle);
+    connect(m_recovery, &RecoveryManager::autosaveDue, this, &MainWindow::autosave);
 
     createActions();
-    createMenus();
     createDocks();
+    createMenus();
+    createToolBar();
+    connect(m_documents, &QTabWidget::currentChanged, this, &MainWindow::updateActiveUndoStack);
+    connect(qApp, &QApplication::focusChanged, this, &MainWindow::updateActiveUndoStack);
     statusBar();
     applyUiLanguage(m_settings.uiLanguage);
+    m_recovery->setIntervalMinutes(m_settings.autosaveMinutes);
     retranslateUi();
     resize(1200, 800);
     restoreWindowLayout();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // The children are destroyed after this destructor has run; signals they send on the way
+    // (a closing tab changes the current one, focus moves) must not reach this half-gone window.
+    disconnect(qApp, nullptr, this, nullptr);
+    m_documents->disconnect(this);
+    m_undoStacks->disconnect(this);
+}
+
+QUndoGroup &MainWindow::undoGroup()
+{
+    return m_undoStacks->group();
+}
 
 void MainWindow::createActions()
 {
-    m_newAction = new QAction(this);
+    const QStyle *style = this->style();
+    m_newAction = new QAction(
+        QIcon::fromTheme(QStringLiteral("document-new"), style->standardIcon(QStyle::SP_FileIcon)), QString(), this);
     m_newAction->setShortcut(QKeySequence::New);
     connect(m_newAction, &QAction::triggered, this, &MainWindow::newProjectInteractive);
-    m_openAction = new QAction(this);
+    m_openAction = new QAction(
+        QIcon::fromTheme(QStringLiteral("document-open"), style->standardIcon(QStyle::SP_DialogOpenButton)), QString(),
+        this);
     m_openAction->setShortcut(QKeySequence::Open);
     connect(m_openAction, &QAction::triggered, this, &MainWindow::openProjectInteractive);
-    m_saveAction = new QAction(this);
+    m_saveAction = new QAction(
+        QIcon::fromTheme(QStringLiteral("document-save"), style->standardIcon(QStyle::SP_DialogSaveButton)), QString(),
+        this);
     m_saveAction->setShortcut(QKeySequence::Save);
     connect(m_saveAction, &QAction::triggered, this, &MainWindow::saveInteractive);
     m_saveAsAction = new QAction(this);
@@ -81,20 +111,17 @@ void MainWindow::createActions()
     connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
 
     // Undo and redo follow whichever stack (project or POU) is active in the group.
-    m_undoAction = m_undoGroup->createUndoAction(this);
-    m_undoAction->setShortcut(QKeySequence::Undo);
-    m_redoAction = m_undoGroup->createRedoAction(this);
-    m_redoAction->setShortcut(QKeySequence::Redo);
+    m_undoActions = new UndoActions(m_undoStacks->group(), this);
 
     // Build and the online commands get their behaviour with the compiler and the runtime;
     // until then they are shown, disabled, so the menus already have their final shape.
-    m_buildAction = new QAction(this);
+    m_buildAction = new QAction(style->standardIcon(QStyle::SP_DialogApplyButton), QString(), this);
     m_buildAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
     m_buildAction->setEnabled(false);
-    m_loginAction = new QAction(this);
+    m_loginAction = new QAction(style->standardIcon(QStyle::SP_MediaPlay), QString(), this);
     m_loginAction->setShortcut(QKeySequence(Qt::Key_F5));
     m_loginAction->setEnabled(false);
-    m_stopAction = new QAction(this);
+    m_stopAction = new QAction(style->standardIcon(QStyle::SP_MediaStop), QString(), this);
     m_stopAction->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F5));
     m_stopAction->setEnabled(false);
     m_singleCycleAction = new QAction(this);
@@ -115,39 +142,74 @@ void MainWindow::createActions()
 
 void MainWindow::createMenus()
 {
-    m_fileMenu = menuBar()->addMenu(QString());
-    m_fileMenu->setObjectName(QStringLiteral("fileMenu"));
+    const auto addMenu = [this](const char *objectName) {
+        QMenu *menu = menuBar()->addMenu(QString());
+        menu->setObjectName(QString::fromLatin1(objectName));
+        return menu;
+    };
+    m_fileMenu = addMenu("fileMenu");
     m_fileMenu->addAction(m_newAction);
     m_fileMenu->addAction(m_openAction);
+    m_recentMenu = new RecentFilesMenu(this);
+    connect(m_recentMenu, &RecentFilesMenu::fileChosen, this, &MainWindow::openRecentInteractive);
+    m_fileMenu->addMenu(m_recentMenu);
     m_fileMenu->addAction(m_saveAction);
     m_fileMenu->addAction(m_saveAsAction);
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_quitAction);
 
-    m_editMenu = menuBar()->addMenu(QString());
-    m_editMenu->setObjectName(QStringLiteral("editMenu"));
-    m_editMenu->addAction(m_undoAction);
-    m_editMenu->addAction(m_redoAction);
+    m_editMenu = addMenu("editMenu");
+    m_editMenu->addAction(m_undoActions->undoAction());
+    m_editMenu->addAction(m_undoActions->redoAction());
 
-    m_viewMenu = menuBar()->addMenu(QString());
-    m_viewMenu->setObjectName(QStringLiteral("viewMenu"));
+    m_viewMenu = addMenu("viewMenu");
+    m_viewMenu->addAction(m_projectDock->toggleViewAction());
+    m_viewMenu->addAction(m_messagesDock->toggleViewAction());
 
-    m_projectMenu = menuBar()->addMenu(QString());
-    m_projectMenu->setObjectName(QStringLiteral("projectMenu"));
+    // CODESYS inserts objects through the Insert menu; here they are the tree's add commands.
+    m_insertMenu = addMenu("insertMenu");
+    m_insertMenu->addAction(m_treeActions->addPouAction());
+    m_insertMenu->addAction(m_treeActions->addActionAction());
+    m_insertMenu->addAction(m_treeActions->addTransitionAction());
+
+    m_projectMenu = addMenu("projectMenu");
+    m_treeActions->addTo(m_projectMenu);
+    m_projectMenu->addSeparator();
     m_projectMenu->addAction(m_buildAction);
     m_projectMenu->addSeparator();
     m_projectMenu->addAction(m_settingsAction);
 
-    m_onlineMenu = menuBar()->addMenu(QString());
-    m_onlineMenu->setObjectName(QStringLiteral("onlineMenu"));
+    m_onlineMenu = addMenu("onlineMenu");
     m_onlineMenu->addAction(m_loginAction);
     m_onlineMenu->addAction(m_stopAction);
     m_onlineMenu->addAction(m_singleCycleAction);
 
-    m_helpMenu = menuBar()->addMenu(QString());
-    m_helpMenu->setObjectName(QStringLiteral("helpMenu"));
+    m_windowMenu = new WindowMenu(*m_documents, this);
+    menuBar()->addMenu(m_windowMenu);
+
+    m_helpMenu = addMenu("helpMenu");
+    m_examplesMenu = new ExamplesMenu(this);
+    connect(m_examplesMenu, &ExamplesMenu::exampleChosen, this, &MainWindow::openExampleInteractive);
+    m_helpMenu->addMenu(m_examplesMenu);
+    m_helpMenu->addSeparator();
     m_helpMenu->addAction(m_aboutAction);
     m_helpMenu->addAction(m_aboutQtAction);
+}
+
+void MainWindow::createToolBar()
+{
+    m_toolBar = addToolBar(QString());
+    m_toolBar->setObjectName(QStringLiteral("mainToolBar"));
+    m_toolBar->addAction(m_newAction);
+    m_toolBar->addAction(m_openAction);
+    m_toolBar->addAction(m_saveAction);
+    m_toolBar->addSeparator();
+    m_toolBar->addAction(m_undoActions->undoAction());
+    m_toolBar->addAction(m_undoActions->redoAction());
+    m_toolBar->addSeparator();
+    m_toolBar->addAction(m_buildAction);
+    m_toolBar->addAction(m_loginAction);
+    m_toolBar->addAction(m_stopAction);
 }
 
 void MainWindow::createDocks()
@@ -157,6 +219,12 @@ void MainWindow::createDocks()
     m_projectTree->setObjectName(QStringLiteral("projectTree"));
     m_projectTree->setProjectModel(m_projectTreeModel);
     connect(m_projectTree, &ProjectTreeView::openRequested, m_documents, &DocumentArea::openBody);
+    m_treeActions = new ProjectTreeActions(*m_projectCommands, *m_projectModel, *m_projectTree, this);
+    connect(m_treeActions, &ProjectTreeActions::created, this, [this](const model::BodyRef &item) {
+        m_projectTree->selectKey(item.part == model::BodyRef::Part::Pou ? ProjectTreeModel::pouKey(item.pou)
+                                                                        : ProjectTreeModel::partKey(item));
+        m_documents->openBody(item);
+    });
     m_projectDock = new QDockWidget(this);
     m_projectDock->setObjectName(QStringLiteral("projectDock"));
     m_projectDock->setWidget(m_projectTree);
@@ -168,9 +236,6 @@ void MainWindow::createDocks()
     m_messagesDock->setObjectName(QStringLiteral("messagesDock"));
     m_messagesDock->setWidget(m_messages);
     addDockWidget(Qt::BottomDockWidgetArea, m_messagesDock);
-
-    m_viewMenu->addAction(m_projectDock->toggleViewAction());
-    m_viewMenu->addAction(m_messagesDock->toggleViewAction());
 }
 
 void MainWindow::retranslateUi()
@@ -179,17 +244,23 @@ void MainWindow::retranslateUi()
     m_fileMenu->setTitle(tr("&File"));
     m_editMenu->setTitle(tr("&Edit"));
     m_viewMenu->setTitle(tr("&View"));
+    m_insertMenu->setTitle(tr("&Insert"));
     m_projectMenu->setTitle(tr("&Project"));
     m_onlineMenu->setTitle(tr("&Online"));
+    m_windowMenu->setTitle(tr("&Window"));
     m_helpMenu->setTitle(tr("&Help"));
+    m_recentMenu->setTitle(tr("Recent &Projects"));
+    m_examplesMenu->setTitle(tr("&Examples"));
+    m_toolBar->setWindowTitle(tr("Toolbar"));
+    m_windowMenu->retranslate();
+    m_treeActions->retranslate();
+    m_undoActions->retranslate();
 
     m_newAction->setText(tr("&New Project"));
     m_openAction->setText(tr("&Open..."));
     m_saveAction->setText(tr("&Save"));
     m_saveAsAction->setText(tr("Save &As..."));
     m_quitAction->setText(tr("&Quit"));
-    m_undoAction->setText(tr("&Undo"));
-    m_redoAction->setText(tr("&Redo"));
     m_buildAction->setText(tr("&Build"));
     m_settingsAction->setText(tr("&Settings..."));
     m_loginAction->setText(tr("Login and &Run"));
@@ -215,21 +286,44 @@ void MainWindow::closeEvent(QCloseEvent *event)
         event->ignore();
         return;
     }
+    // Saved or discarded on purpose: nothing to recover from this session.
+    m_recovery->discardCurrent();
     saveWindowLayout();
     QMainWindow::closeEvent(event);
 }
 
 bool MainWindow::hasUnsavedChanges() const
 {
-    return m_projectModel->revision() != m_savedRevision;
+    return !m_undoStacks->isClean() || m_documents->hasUnsavedTyping() || m_recoveredUnsaved;
 }
 
 void MainWindow::updateWindowTitle()
 {
-    const QString name = m_currentFile.isEmpty() ? tr("Untitled") : QFileInfo(m_currentFile).fileName();
+    // The project's own name (contentHeader) first, then the file it is stored in.
+    const QString projectName = m_projectModel->project().contentHeader.name;
+    const QString fileName = QFileInfo(m_currentFile).fileName();
+    QString name;
+    if (projectName.isEmpty())
+        name = fileName.isEmpty() ? tr("Untitled") : fileName;
+    else
+        name = fileName.isEmpty() ? projectName : tr("%1 (%2)").arg(projectName, fileName);
     // [*] is where Qt shows the modified marker.
     setWindowTitle(tr("%1[*] - IEC Studio").arg(name));
     setWindowModified(hasUnsavedChanges());
+}
+
+void MainWindow::updateActiveUndoStack()
+{
+    const QWidget *focus = QApplication::focusWidget();
+    const bool treeHasFocus = focus && (focus == m_projectTree || m_projectTree->isAncestorOf(focus));
+    const std::optional<model::BodyRef> document = m_documents->currentBody();
+    if (treeHasFocus || !document) {
+        m_undoStacks->activateProjectStack();
+        m_undoActions->setTextEditor(nullptr);
+        return;
+    }
+    m_undoStacks->activatePouStack(document->pou);
+    m_undoActions->setTextEditor(m_documents->textEditorFor(*document));
 }
 
 namespace {
@@ -253,18 +347,18 @@ QList<Message> messagesOf(const std::vector<model::Diagnostic> &diagnostics, con
     for (const model::Diagnostic &diagnostic : diagnostics) {
         // Reader diagnostics point into the file, so the location names the file and its line.
         messages.append({.severity = messageSeverity(diagnostic.severity),
-                         .text = diagnostic.message,
-                         .pouName = diagnostic.pouName.value_or(fileName),
-                         .line = diagnostic.line,
-                         .column = diagnostic.column,
-                         .localId = diagnostic.localId});
+            .text = diagnostic.message,
+            .pouName = diagnostic.pouName.value_or(fileName),
+            .line = diagnostic.line,
+            .column = diagnostic.column,
+            .localId = diagnostic.localId});
     }
     return messages;
 }
 
 } // namespace
 
-bool MainWindow::openProject(const QString &path, QString *error)
+bool MainWindow::loadProject(const QString &path, QString *error)
 {
     model::plcopen::ReadResult result = model::plcopen::readProjectFile(path);
     const QString fileName = QFileInfo(path).fileName();
@@ -275,9 +369,51 @@ bool MainWindow::openProject(const QString &path, QString *error)
                                                 : result.diagnostics.front().message;
         return false;
     }
+    // The project shown so far is replaced on purpose (maybeSave asked), so its recovery file goes.
+    m_recovery->discardCurrent();
     m_projectModel->reset(std::move(result.project));
-    m_currentFile = QFileInfo(path).absoluteFilePath();
-    m_savedRevision = m_projectModel->revision();
+    m_undoStacks->clear();
+    m_documents->markTypingSaved();
+    m_recoveredUnsaved = false;
+    return true;
+}
+
+void MainWindow::setCurrentFile(const QString &path)
+{
+    m_currentFile = path.isEmpty() ? QString() : QFileInfo(path).absoluteFilePath();
+    m_recovery->setProject(m_currentFile);
+    if (!m_currentFile.isEmpty()) {
+        QSettings store;
+        RecentFiles::add(store, m_currentFile);
+    }
+    updateWindowTitle();
+}
+
+bool MainWindow::openProject(const QString &path, QString *error)
+{
+    if (!loadProject(path, error))
+        return false;
+    setCurrentFile(path);
+    return true;
+}
+
+bool MainWindow::openExample(const QString &resourcePath, QString *error)
+{
+    if (!loadProject(resourcePath, error))
+        return false;
+    setCurrentFile({});
+    return true;
+}
+
+bool MainWindow::recover(const QString &recoveryFile, QString *error)
+{
+    const Recovery recovery = RecoveryManager::describe(recoveryFile);
+    if (!loadProject(recoveryFile, error))
+        return false;
+    m_currentFile = recovery.projectFile;
+    // Later autosaves go on in the same file; a clean save removes it.
+    m_recovery->adopt(recovery);
+    m_recoveredUnsaved = true;
     updateWindowTitle();
     return true;
 }
@@ -287,19 +423,40 @@ bool MainWindow::saveProject(const QString &path, QString *error)
     m_documents->flushEdits();
     if (!model::plcopen::saveProjectFile(m_projectModel->project(), path, error))
         return false;
-    m_currentFile = QFileInfo(path).absoluteFilePath();
-    m_savedRevision = m_projectModel->revision();
-    updateWindowTitle();
+    m_recovery->discardCurrent();
+    m_undoStacks->setClean();
+    m_documents->markTypingSaved();
+    m_recoveredUnsaved = false;
+    setCurrentFile(path);
     return true;
 }
 
 void MainWindow::newProject()
 {
+    m_recovery->discardCurrent();
     m_projectModel->reset({});
-    m_currentFile.clear();
-    m_savedRevision = m_projectModel->revision();
+    m_undoStacks->clear();
+    m_documents->markTypingSaved();
+    m_recoveredUnsaved = false;
     m_messages->model().clear();
-    updateWindowTitle();
+    setCurrentFile({});
+}
+
+bool MainWindow::autosave()
+{
+    if (!hasUnsavedChanges()) {
+        // Undone back to the saved state: an older recovery file would only bring back changes
+        // the user took back.
+        m_recovery->discardCurrent();
+        return false;
+    }
+    m_documents->flushEdits();
+    QString error;
+    if (!m_recovery->write(m_projectModel->project(), &error)) {
+        statusBar()->showMessage(tr("Autosave failed: %1").arg(error));
+        return false;
+    }
+    return true;
 }
 
 bool MainWindow::maybeSave()
@@ -307,9 +464,9 @@ bool MainWindow::maybeSave()
     m_documents->flushEdits();
     if (!hasUnsavedChanges())
         return true;
-    const auto answer = QMessageBox::warning(this, tr("Unsaved Changes"),
-                                             tr("The project has unsaved changes. Save them first?"),
-                                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    const auto answer
+        = QMessageBox::warning(this, tr("Unsaved Changes"), tr("The project has unsaved changes. Save them first?"),
+            QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
     if (answer == QMessageBox::Save)
         return saveInteractive();
     return answer == QMessageBox::Discard;
@@ -321,12 +478,68 @@ void MainWindow::newProjectInteractive()
         newProject();
 }
 
+bool MainWindow::openRecent(const QString &path, QString *error)
+{
+    if (QFileInfo::exists(path))
+        return openProject(path, error);
+    QSettings store;
+    RecentFiles::remove(store, path);
+    if (error)
+        *error = tr("%1 does not exist any more; it was removed from the recent projects.")
+                     .arg(QDir::toNativeSeparators(path));
+    return false;
+}
+
+void MainWindow::openRecentInteractive(const QString &path)
+{
+    if (QFileInfo::exists(path) && !maybeSave())
+        return;
+    QString error;
+    if (!openRecent(path, &error))
+        QMessageBox::warning(this, tr("Open Project"), error);
+}
+
+void MainWindow::openExampleInteractive(const QString &resourcePath)
+{
+    if (!maybeSave())
+        return;
+    QString error;
+    if (!openExample(resourcePath, &error))
+        QMessageBox::critical(this, tr("Open Project"), tr("The project could not be opened: %1").arg(error));
+}
+
+void MainWindow::offerRecoveryInteractive()
+{
+    for (const Recovery &recovery : RecoveryManager::pendingRecoveries()) {
+        const QString project
+            = recovery.projectFile.isEmpty() ? tr("(untitled)") : QDir::toNativeSeparators(recovery.projectFile);
+        QMessageBox question(QMessageBox::Question, tr("Recover Project"),
+            tr("IEC Studio did not close properly. Recover the autosaved changes?"), QMessageBox::NoButton, this);
+        question.setInformativeText(
+            tr("Project: %1\nAutosaved: %2").arg(project, QLocale().toString(recovery.savedAt, QLocale::ShortFormat)));
+        QPushButton *recoverButton = question.addButton(tr("&Recover"), QMessageBox::AcceptRole);
+        QPushButton *discardButton = question.addButton(QMessageBox::Discard);
+        // Later keeps the file, so the next start asks again.
+        question.addButton(tr("Ask &Later"), QMessageBox::RejectRole);
+        question.setDefaultButton(recoverButton);
+        question.exec();
+        if (question.clickedButton() == discardButton)
+            RecoveryManager::discard(recovery.recoveryFile);
+        if (question.clickedButton() != recoverButton)
+            continue;
+        QString error;
+        if (recover(recovery.recoveryFile, &error))
+            return; // one project per window
+        QMessageBox::critical(this, tr("Recover Project"), tr("The project could not be recovered: %1").arg(error));
+    }
+}
+
 void MainWindow::openProjectInteractive()
 {
     if (!maybeSave())
         return;
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open Project"), QFileInfo(m_currentFile).path(),
-                                                      tr("PLCopen XML projects (*.xml);;All files (*)"));
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open Project"), QFileInfo(m_currentFile).path(), tr("PLCopen XML projects (*.xml);;All files (*)"));
     if (path.isEmpty())
         return;
     QString error;
@@ -347,8 +560,8 @@ bool MainWindow::saveInteractive()
 
 bool MainWindow::saveAsInteractive()
 {
-    QString path = QFileDialog::getSaveFileName(this, tr("Save Project As"), m_currentFile,
-                                                tr("PLCopen XML projects (*.xml)"));
+    QString path
+        = QFileDialog::getSaveFileName(this, tr("Save Project As"), m_currentFile, tr("PLCopen XML projects (*.xml)"));
     if (path.isEmpty())
         return false;
     if (QFileInfo(path).suffix().isEmpty())
@@ -384,6 +597,7 @@ void MainWindow::applySettings(const Settings &settings)
     if (settings.uiLanguage != m_settings.uiLanguage)
         applyUiLanguage(settings.uiLanguage);
     m_settings = settings;
+    m_recovery->setIntervalMinutes(m_settings.autosaveMinutes);
     QSettings store;
     m_settings.save(store);
     Q_EMIT settingsChanged(m_settings);
@@ -399,11 +613,11 @@ void MainWindow::showSettingsDialog()
 void MainWindow::showAboutBox()
 {
     QMessageBox::about(this, tr("About IEC Studio"),
-                       tr("<h3>IEC Studio %1</h3>"
-                          "<p>An IDE for the five IEC 61131-3 languages: Ladder Diagram, Function Block "
-                          "Diagram with CFC, Sequential Function Chart, Instruction List and Structured Text.</p>"
-                          "<p>Projects are stored as PLCopen TC6 XML v2.01.</p>")
-                           .arg(QCoreApplication::applicationVersion()));
+        tr("<h3>IEC Studio %1</h3>"
+           "<p>An IDE for the five IEC 61131-3 languages: Ladder Diagram, Function Block "
+           "Diagram with CFC, Sequential Function Chart, Instruction List and Structured Text.</p>"
+           "<p>Projects are stored as PLCopen TC6 XML v2.01.</p>")
+            .arg(QCoreApplication::applicationVersion()));
 }
 
 } // namespace iec::app

@@ -4,9 +4,12 @@
 
 #include <QMainWindow>
 
+#include <memory>
+
 class QAction;
 class QDockWidget;
 class QMenu;
+class QToolBar;
 class QUndoGroup;
 
 namespace iec::model {
@@ -16,10 +19,18 @@ class ProjectModel;
 namespace iec::app {
 
 class DocumentArea;
+class ExamplesMenu;
 class MessagesPane;
+class ProjectCommands;
+class ProjectTreeActions;
 class ProjectTreeModel;
 class ProjectTreeView;
+class RecentFilesMenu;
+class RecoveryManager;
 class UiTranslator;
+class UndoActions;
+class UndoStacks;
+class WindowMenu;
 
 // The IDE's main window: menus, the project tree and messages docks, and the central document
 // area. Texts are set in retranslateUi() so that switching the UI language updates them live.
@@ -32,12 +43,18 @@ public:
     ~MainWindow() override;
 
     [[nodiscard]] model::ProjectModel &projectModel() { return *m_projectModel; }
-    [[nodiscard]] QUndoGroup &undoGroup() { return *m_undoGroup; }
+    [[nodiscard]] QUndoGroup &undoGroup();
+    [[nodiscard]] UndoStacks &undoStacks() { return *m_undoStacks; }
+    [[nodiscard]] ProjectCommands &projectCommands() { return *m_projectCommands; }
+    [[nodiscard]] ProjectTreeActions &treeActions() { return *m_treeActions; }
+    [[nodiscard]] RecoveryManager &recovery() { return *m_recovery; }
     [[nodiscard]] const Settings &settings() const { return m_settings; }
     [[nodiscard]] MessagesPane &messagesPane() { return *m_messages; }
     [[nodiscard]] DocumentArea &documents() { return *m_documents; }
     [[nodiscard]] ProjectTreeView &projectTree() { return *m_projectTree; }
     [[nodiscard]] QString currentFile() const { return m_currentFile; }
+    // The undo stacks are not at their clean state, typing is unsaved, or the project was
+    // recovered and not saved since.
     [[nodiscard]] bool hasUnsavedChanges() const;
 
     // Non-interactive file operations (the menu commands wrap them with dialogs). On failure they
@@ -45,6 +62,13 @@ public:
     bool openProject(const QString &path, QString *error = nullptr);
     bool saveProject(const QString &path, QString *error = nullptr);
     void newProject();
+    // Opens a project of File → Recent Projects; one that is gone is removed from the list.
+    bool openRecent(const QString &path, QString *error = nullptr);
+    // Opens a shipped example (a resource path from Examples::list()) as a new, untitled project.
+    bool openExample(const QString &resourcePath, QString *error = nullptr);
+    // Opens a recovery file (RecoveryManager::pendingRecoveries()) in place of the project; the
+    // content counts as unsaved and a save goes to the project it came from.
+    bool recover(const QString &recoveryFile, QString *error = nullptr);
 
     // Stores the settings and applies them at once: UI language, editor font, grid, autosave.
     void applySettings(const Settings &settings);
@@ -54,8 +78,14 @@ public Q_SLOTS:
     void showSettingsDialog();
     void newProjectInteractive();
     void openProjectInteractive();
+    void openRecentInteractive(const QString &path);
+    void openExampleInteractive(const QString &resourcePath);
     bool saveInteractive();
     bool saveAsInteractive();
+    // At start: offers the recovery files a crashed session left (one question per file).
+    void offerRecoveryInteractive();
+    // Writes the recovery file when there is something unsaved; true when it wrote one.
+    bool autosave();
 
 Q_SIGNALS:
     void settingsChanged(const iec::app::Settings &settings);
@@ -67,36 +97,49 @@ protected:
 private:
     void createActions();
     void createMenus();
+    void createToolBar();
     void createDocks();
     void retranslateUi();
     void restoreWindowLayout();
     void saveWindowLayout() const;
     void applyUiLanguage(const QString &localeName);
     void updateWindowTitle();
+    // The project tree or no document: the project's undo stack; otherwise the current
+    // document's POU stack (DESIGN.md).
+    void updateActiveUndoStack();
+    // Reads a project file and shows it (no history, nothing unsaved); the caller says whose it is.
+    bool loadProject(const QString &path, QString *error);
+    void setCurrentFile(const QString &path);
     // Asks whether to save unsaved changes; false when the user cancels.
     bool maybeSave();
 
     model::ProjectModel *m_projectModel = nullptr;
-    QUndoGroup *m_undoGroup = nullptr;
+    UndoStacks *m_undoStacks = nullptr;
+    std::unique_ptr<ProjectCommands> m_projectCommands;
+    RecoveryManager *m_recovery = nullptr;
     UiTranslator *m_translator = nullptr;
     Settings m_settings;
     QString m_currentFile;
-    quint64 m_savedRevision = 0;
+    bool m_recoveredUnsaved = false;
 
     QMenu *m_fileMenu = nullptr;
+    RecentFilesMenu *m_recentMenu = nullptr;
     QMenu *m_editMenu = nullptr;
     QMenu *m_viewMenu = nullptr;
+    QMenu *m_insertMenu = nullptr;
     QMenu *m_projectMenu = nullptr;
     QMenu *m_onlineMenu = nullptr;
+    WindowMenu *m_windowMenu = nullptr;
     QMenu *m_helpMenu = nullptr;
+    ExamplesMenu *m_examplesMenu = nullptr;
+    QToolBar *m_toolBar = nullptr;
 
     QAction *m_newAction = nullptr;
     QAction *m_openAction = nullptr;
     QAction *m_saveAction = nullptr;
     QAction *m_saveAsAction = nullptr;
     QAction *m_quitAction = nullptr;
-    QAction *m_undoAction = nullptr;
-    QAction *m_redoAction = nullptr;
+    UndoActions *m_undoActions = nullptr;
     QAction *m_buildAction = nullptr;
     QAction *m_settingsAction = nullptr;
     QAction *m_loginAction = nullptr;
@@ -109,6 +152,7 @@ private:
     QDockWidget *m_messagesDock = nullptr;
     ProjectTreeModel *m_projectTreeModel = nullptr;
     ProjectTreeView *m_projectTree = nullptr;
+    ProjectTreeActions *m_treeActions = nullptr;
     MessagesPane *m_messages = nullptr;
     DocumentArea *m_documents = nullptr;
 };

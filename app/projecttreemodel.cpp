@@ -201,6 +201,8 @@ QVariant ProjectTreeModel::data(const QModelIndex &index, int role) const
     switch (role) {
     case Qt::DisplayRole:
         return displayText(*item);
+    case Qt::EditRole:
+        return item->name;
     case Qt::ToolTipRole:
         if (item->kind == NodeKind::Pou || item->kind == NodeKind::Action || item->kind == NodeKind::Transition)
             return tr("%1, written in %2").arg(item->name, languageName(item->language));
@@ -221,6 +223,24 @@ QVariant ProjectTreeModel::data(const QModelIndex &index, int role) const
     default:
         return {};
     }
+}
+
+Qt::ItemFlags ProjectTreeModel::flags(const QModelIndex &index) const
+{
+    Qt::ItemFlags flags = QAbstractItemModel::flags(index);
+    if (bodyRef(index))
+        flags |= Qt::ItemIsEditable;
+    return flags;
+}
+
+bool ProjectTreeModel::setData(const QModelIndex &index, const QVariant &value, int role)
+{
+    const std::optional<BodyRef> item = bodyRef(index);
+    const QString newName = value.toString().trimmed();
+    if (role != Qt::EditRole || !item || newName == name(index))
+        return false;
+    Q_EMIT renameRequested(*item, newName);
+    return false;
 }
 
 QString ProjectTreeModel::key(const QModelIndex &index) const

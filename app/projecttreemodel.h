@@ -43,10 +43,17 @@ public:
     int rowCount(const QModelIndex &parent = {}) const override;
     int columnCount(const QModelIndex &parent = {}) const override;
     QVariant data(const QModelIndex &index, int role) const override;
+    // POUs, actions and transitions can be renamed in place: setData does not change anything
+    // itself but asks for the rename (an undoable command); the tree follows the model after it.
+    Qt::ItemFlags flags(const QModelIndex &index) const override;
+    bool setData(const QModelIndex &index, const QVariant &value, int role = Qt::EditRole) override;
 
     static QString folderKey(Folder folder);
     static QString pouKey(model::PouId id);
     static QString partKey(const model::BodyRef &ref);
+
+Q_SIGNALS:
+    void renameRequested(const iec::model::BodyRef &item, const QString &newName);
 
 private:
     struct Node {

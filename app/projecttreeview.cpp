@@ -13,7 +13,9 @@ ProjectTreeView::ProjectTreeView(QWidget *parent)
     setHeaderHidden(true);
     setUniformRowHeights(true);
     setSelectionMode(QAbstractItemView::SingleSelection);
-    setEditTriggers(QAbstractItemView::NoEditTriggers);
+    // A click on the selected POU edits its name in place, as in a file manager; F2 opens the
+    // rename dialog (ProjectTreeActions), which explains a name it cannot take.
+    setEditTriggers(QAbstractItemView::SelectedClicked);
     connect(this, &QTreeView::activated, this, [this](const QModelIndex &index) {
         if (const auto body = m_model ? m_model->bodyRef(index) : std::nullopt)
             Q_EMIT openRequested(*body);
@@ -24,6 +26,8 @@ void ProjectTreeView::setProjectModel(ProjectTreeModel *model)
 {
     m_model = model;
     setModel(model);
+    connect(selectionModel(), &QItemSelectionModel::currentChanged, this, &ProjectTreeView::currentItemChanged);
+    connect(model, &QAbstractItemModel::modelReset, this, &ProjectTreeView::currentItemChanged);
     connect(model, &QAbstractItemModel::modelAboutToBeReset, this, &ProjectTreeView::rememberState);
     connect(model, &QAbstractItemModel::modelReset, this, &ProjectTreeView::restoreState);
     restoreState();

@@ -24,6 +24,8 @@ public:
 
 Q_SIGNALS:
     void openRequested(const iec::model::BodyRef &body);
+    // The current node changed (also when a rebuild moved or removed it).
+    void currentItemChanged();
 
 protected:
     void changeEvent(QEvent *event) override;

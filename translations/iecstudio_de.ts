@@ -2,6 +2,102 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>NameRules</name>
+    <message>
+        <source>Enter a name.</source>
+        <translation>Geben Sie einen Namen ein.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an IEC identifier: use letters, digits and single underscores, starting with a letter or an underscore and not ending with an underscore.</source>
+        <translation>&quot;%1&quot; ist kein IEC-Bezeichner: verwenden Sie Buchstaben, Ziffern und einzelne Unterstriche; am Anfang ein Buchstabe oder Unterstrich, am Ende kein Unterstrich.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is a reserved word of IEC 61131-3.</source>
+        <translation>&quot;%1&quot; ist ein reserviertes Wort der IEC 61131-3.</translation>
+    </message>
+    <message>
+        <source>A POU or data type named &quot;%1&quot; exists already.</source>
+        <translation>Ein Baustein oder Datentyp namens &quot;%1&quot; existiert bereits.</translation>
+    </message>
+    <message>
+        <source>This POU has an action or transition named &quot;%1&quot; already.</source>
+        <translation>Dieser Baustein hat bereits eine Aktion oder Transition namens &quot;%1&quot;.</translation>
+    </message>
+</context>
+<context>
+    <name>ProjectCommands</name>
+    <message>
+        <source>A function needs a return type.</source>
+        <translation>Eine Funktion braucht einen Rückgabetyp.</translation>
+    </message>
+    <message>
+        <source>The POU does not exist any more.</source>
+        <translation>Der Baustein existiert nicht mehr.</translation>
+    </message>
+    <message>
+        <source>The item does not exist any more.</source>
+        <translation>Das Element existiert nicht mehr.</translation>
+    </message>
+</context>
+<context>
+    <name>iec::app::AddPouDialog</name>
+    <message>
+        <source>Add POU</source>
+        <translation>Baustein hinzufügen</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Programm</translation>
+    </message>
+    <message>
+        <source>Function Block</source>
+        <translation>Funktionsbaustein</translation>
+    </message>
+    <message>
+        <source>Function</source>
+        <translation>Funktion</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Name:</translation>
+    </message>
+    <message>
+        <source>&amp;Kind:</source>
+        <translation>&amp;Typ:</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>&amp;Sprache:</translation>
+    </message>
+    <message>
+        <source>&amp;Return type:</source>
+        <translation>&amp;Rückgabetyp:</translation>
+    </message>
+    <message>
+        <source>A function needs a return type.</source>
+        <translation>Eine Funktion braucht einen Rückgabetyp.</translation>
+    </message>
+</context>
+<context>
+    <name>iec::app::AddPouPartDialog</name>
+    <message>
+        <source>Add Action</source>
+        <translation>Aktion hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add Transition</source>
+        <translation>Transition hinzufügen</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Name:</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>&amp;Sprache:</translation>
+    </message>
+</context>
+<context>
     <name>iec::app::DocumentArea</name>
     <message>
         <source>This body is written in %1. Its editor is not available in this version; the body is kept unchanged when the project is saved.</source>
@@ -37,14 +133,6 @@
     <message>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
-    </message>
-    <message>
-        <source>&amp;Undo</source>
-        <translation>&amp;Rückgängig</translation>
-    </message>
-    <message>
-        <source>&amp;Redo</source>
-        <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
         <source>&amp;Build</source>
@@ -154,6 +242,68 @@
         <source>PLCopen XML projects (*.xml)</source>
         <translation>PLCopen-XML-Projekte (*.xml)</translation>
     </message>
+    <message>
+        <source>&amp;Insert</source>
+        <translation>&amp;Einfügen</translation>
+    </message>
+    <message>
+        <source>&amp;Window</source>
+        <translation>&amp;Fenster</translation>
+    </message>
+    <message>
+        <source>Recent &amp;Projects</source>
+        <translation>&amp;Zuletzt geöffnete Projekte</translation>
+    </message>
+    <message>
+        <source>&amp;Examples</source>
+        <translation>&amp;Beispiele</translation>
+    </message>
+    <message>
+        <source>Toolbar</source>
+        <translation>Werkzeugleiste</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Automatisches Speichern fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>%1 does not exist any more; it was removed from the recent projects.</source>
+        <translation>%1 existiert nicht mehr; es wurde aus den zuletzt geöffneten Projekten entfernt.</translation>
+    </message>
+    <message>
+        <source>(untitled)</source>
+        <translation>(unbenannt)</translation>
+    </message>
+    <message>
+        <source>Recover Project</source>
+        <translation>Projekt wiederherstellen</translation>
+    </message>
+    <message>
+        <source>IEC Studio did not close properly. Recover the autosaved changes?</source>
+        <translation>IEC Studio wurde nicht ordnungsgemäß beendet. Die automatisch gespeicherten Änderungen wiederherstellen?</translation>
+    </message>
+    <message>
+        <source>Project: %1
+Autosaved: %2</source>
+        <translation>Projekt: %1
+Automatisch gespeichert: %2</translation>
+    </message>
+    <message>
+        <source>&amp;Recover</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Ask &amp;Later</source>
+        <translation>&amp;Später fragen</translation>
+    </message>
+    <message>
+        <source>The project could not be recovered: %1</source>
+        <translation>Das Projekt konnte nicht wiederhergestellt werden: %1</translation>
+    </message>
 </context>
 <context>
     <name>iec::app::MessagesPane</name>
@@ -196,6 +346,49 @@
     <message>
         <source>Errors: %1, warnings: %2</source>
         <translation>Fehler: %1, Warnungen: %2</translation>
+    </message>
+</context>
+<context>
+    <name>iec::app::ProjectTreeActions</name>
+    <message>
+        <source>Add &amp;POU...</source>
+        <translation>&amp;Baustein hinzufügen...</translation>
+    </message>
+    <message>
+        <source>Add &amp;Action...</source>
+        <translation>&amp;Aktion hinzufügen...</translation>
+    </message>
+    <message>
+        <source>Add &amp;Transition...</source>
+        <translation>&amp;Transition hinzufügen...</translation>
+    </message>
+    <message>
+        <source>&amp;Rename...</source>
+        <translation>&amp;Umbenennen...</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Löschen</translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate</source>
+        <translation>D&amp;uplizieren</translation>
+    </message>
+    <message>
+        <source>Add POU</source>
+        <translation>Baustein hinzufügen</translation>
+    </message>
+    <message>
+        <source>Rename %1</source>
+        <translation>%1 umbenennen</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <source>Delete %1? Edit → Undo brings it back.</source>
+        <translation>%1 löschen? Bearbeiten → Rückgängig holt es zurück.</translation>
     </message>
 </context>
 <context>
@@ -262,6 +455,31 @@
     </message>
 </context>
 <context>
+    <name>iec::app::RecentFilesMenu</name>
+    <message>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+</context>
+<context>
+    <name>iec::app::RecoveryManager</name>
+    <message>
+        <source>Cannot create the folder %1.</source>
+        <translation>Der Ordner %1 kann nicht angelegt werden.</translation>
+    </message>
+</context>
+<context>
+    <name>iec::app::RenameDialog</name>
+    <message>
+        <source>Rename %1</source>
+        <translation>%1 umbenennen</translation>
+    </message>
+    <message>
+        <source>&amp;New name:</source>
+        <translation>&amp;Neuer Name:</translation>
+    </message>
+</context>
+<context>
     <name>iec::app::SettingsDialog</name>
     <message>
         <source>Settings</source>
@@ -306,6 +524,48 @@
     <message>
         <source>Autosave every:</source>
         <translation>Automatisch speichern alle:</translation>
+    </message>
+</context>
+<context>
+    <name>iec::app::UndoActions</name>
+    <message>
+        <source>&amp;Undo Typing</source>
+        <translation>Tippen &amp;rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Redo Typing</source>
+        <translation>Tippen &amp;wiederherstellen</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>%1 &amp;rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>%1 &amp;wiederherstellen</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+</context>
+<context>
+    <name>iec::app::WindowMenu</name>
+    <message>
+        <source>&amp;Next Document</source>
+        <translation>&amp;Nächstes Dokument</translation>
+    </message>
+    <message>
+        <source>&amp;Previous Document</source>
+        <translation>&amp;Vorheriges Dokument</translation>
+    </message>
+    <message>
+        <source>&amp;Close All Documents</source>
+        <translation>&amp;Alle Dokumente schließen</translation>
     </message>
 </context>
 <context>

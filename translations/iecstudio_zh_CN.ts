@@ -2,6 +2,102 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>NameRules</name>
+    <message>
+        <source>Enter a name.</source>
+        <translation>请输入名称。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an IEC identifier: use letters, digits and single underscores, starting with a letter or an underscore and not ending with an underscore.</source>
+        <translation>&quot;%1&quot; 不是 IEC 标识符：只能使用字母、数字和单个下划线，以字母或下划线开头，且不能以下划线结尾。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is a reserved word of IEC 61131-3.</source>
+        <translation>&quot;%1&quot; 是 IEC 61131-3 的保留字。</translation>
+    </message>
+    <message>
+        <source>A POU or data type named &quot;%1&quot; exists already.</source>
+        <translation>名为 &quot;%1&quot; 的 POU 或数据类型已存在。</translation>
+    </message>
+    <message>
+        <source>This POU has an action or transition named &quot;%1&quot; already.</source>
+        <translation>此 POU 已有名为 &quot;%1&quot; 的动作或转换。</translation>
+    </message>
+</context>
+<context>
+    <name>ProjectCommands</name>
+    <message>
+        <source>A function needs a return type.</source>
+        <translation>函数需要返回类型。</translation>
+    </message>
+    <message>
+        <source>The POU does not exist any more.</source>
+        <translation>该 POU 已不存在。</translation>
+    </message>
+    <message>
+        <source>The item does not exist any more.</source>
+        <translation>该项已不存在。</translation>
+    </message>
+</context>
+<context>
+    <name>iec::app::AddPouDialog</name>
+    <message>
+        <source>Add POU</source>
+        <translation>添加 POU</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>程序</translation>
+    </message>
+    <message>
+        <source>Function Block</source>
+        <translation>功能块</translation>
+    </message>
+    <message>
+        <source>Function</source>
+        <translation>函数</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>名称(&amp;N)：</translation>
+    </message>
+    <message>
+        <source>&amp;Kind:</source>
+        <translation>类型(&amp;K)：</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>语言(&amp;L)：</translation>
+    </message>
+    <message>
+        <source>&amp;Return type:</source>
+        <translation>返回类型(&amp;R)：</translation>
+    </message>
+    <message>
+        <source>A function needs a return type.</source>
+        <translation>函数需要返回类型。</translation>
+    </message>
+</context>
+<context>
+    <name>iec::app::AddPouPartDialog</name>
+    <message>
+        <source>Add Action</source>
+        <translation>添加动作</translation>
+    </message>
+    <message>
+        <source>Add Transition</source>
+        <translation>添加转换</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>名称(&amp;N)：</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>语言(&amp;L)：</translation>
+    </message>
+</context>
+<context>
     <name>iec::app::DocumentArea</name>
     <message>
         <source>This body is written in %1. Its editor is not available in this version; the body is kept unchanged when the project is saved.</source>
@@ -37,14 +133,6 @@
     <message>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
-    </message>
-    <message>
-        <source>&amp;Undo</source>
-        <translation>撤销(&amp;U)</translation>
-    </message>
-    <message>
-        <source>&amp;Redo</source>
-        <translation>重做(&amp;R)</translation>
     </message>
     <message>
         <source>&amp;Build</source>
@@ -154,6 +242,68 @@
         <source>PLCopen XML projects (*.xml)</source>
         <translation>PLCopen XML 项目 (*.xml)</translation>
     </message>
+    <message>
+        <source>&amp;Insert</source>
+        <translation>插入(&amp;I)</translation>
+    </message>
+    <message>
+        <source>&amp;Window</source>
+        <translation>窗口(&amp;W)</translation>
+    </message>
+    <message>
+        <source>Recent &amp;Projects</source>
+        <translation>最近的项目(&amp;P)</translation>
+    </message>
+    <message>
+        <source>&amp;Examples</source>
+        <translation>示例(&amp;E)</translation>
+    </message>
+    <message>
+        <source>Toolbar</source>
+        <translation>工具栏</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>自动保存失败：%1</translation>
+    </message>
+    <message>
+        <source>%1 does not exist any more; it was removed from the recent projects.</source>
+        <translation>%1 已不存在，已从最近的项目中移除。</translation>
+    </message>
+    <message>
+        <source>(untitled)</source>
+        <translation>(未命名)</translation>
+    </message>
+    <message>
+        <source>Recover Project</source>
+        <translation>恢复项目</translation>
+    </message>
+    <message>
+        <source>IEC Studio did not close properly. Recover the autosaved changes?</source>
+        <translation>IEC Studio 未正常关闭。是否恢复自动保存的更改？</translation>
+    </message>
+    <message>
+        <source>Project: %1
+Autosaved: %2</source>
+        <translation>项目：%1
+自动保存于：%2</translation>
+    </message>
+    <message>
+        <source>&amp;Recover</source>
+        <translation>恢复(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Ask &amp;Later</source>
+        <translation>稍后询问(&amp;L)</translation>
+    </message>
+    <message>
+        <source>The project could not be recovered: %1</source>
+        <translation>无法恢复项目：%1</translation>
+    </message>
 </context>
 <context>
     <name>iec::app::MessagesPane</name>
@@ -196,6 +346,49 @@
     <message>
         <source>Errors: %1, warnings: %2</source>
         <translation>错误：%1，警告：%2</translation>
+    </message>
+</context>
+<context>
+    <name>iec::app::ProjectTreeActions</name>
+    <message>
+        <source>Add &amp;POU...</source>
+        <translation>添加 POU(&amp;P)...</translation>
+    </message>
+    <message>
+        <source>Add &amp;Action...</source>
+        <translation>添加动作(&amp;A)...</translation>
+    </message>
+    <message>
+        <source>Add &amp;Transition...</source>
+        <translation>添加转换(&amp;T)...</translation>
+    </message>
+    <message>
+        <source>&amp;Rename...</source>
+        <translation>重命名(&amp;R)...</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>删除(&amp;D)</translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate</source>
+        <translation>复制(&amp;U)</translation>
+    </message>
+    <message>
+        <source>Add POU</source>
+        <translation>添加 POU</translation>
+    </message>
+    <message>
+        <source>Rename %1</source>
+        <translation>重命名 %1</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>删除</translation>
+    </message>
+    <message>
+        <source>Delete %1? Edit → Undo brings it back.</source>
+        <translation>删除 %1？可通过 编辑 → 撤销 恢复。</translation>
     </message>
 </context>
 <context>
@@ -262,6 +455,31 @@
     </message>
 </context>
 <context>
+    <name>iec::app::RecentFilesMenu</name>
+    <message>
+        <source>(none)</source>
+        <translation>(无)</translation>
+    </message>
+</context>
+<context>
+    <name>iec::app::RecoveryManager</name>
+    <message>
+        <source>Cannot create the folder %1.</source>
+        <translation>无法创建文件夹 %1。</translation>
+    </message>
+</context>
+<context>
+    <name>iec::app::RenameDialog</name>
+    <message>
+        <source>Rename %1</source>
+        <translation>重命名 %1</translation>
+    </message>
+    <message>
+        <source>&amp;New name:</source>
+        <translation>新名称(&amp;N)：</translation>
+    </message>
+</context>
+<context>
     <name>iec::app::SettingsDialog</name>
     <message>
         <source>Settings</source>
@@ -306,6 +524,48 @@
     <message>
         <source>Autosave every:</source>
         <translation>自动保存间隔：</translation>
+    </message>
+</context>
+<context>
+    <name>iec::app::UndoActions</name>
+    <message>
+        <source>&amp;Undo Typing</source>
+        <translation>撤销输入(&amp;U)</translation>
+    </message>
+    <message>
+        <source>&amp;Redo Typing</source>
+        <translation>重做输入(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>撤销 %1(&amp;U)</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>撤销(&amp;U)</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>重做 %1(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>重做(&amp;R)</translation>
+    </message>
+</context>
+<context>
+    <name>iec::app::WindowMenu</name>
+    <message>
+        <source>&amp;Next Document</source>
+        <translation>下一个文档(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;Previous Document</source>
+        <translation>上一个文档(&amp;P)</translation>
+    </message>
+    <message>
+        <source>&amp;Close All Documents</source>
+        <translation>关闭所有文档(&amp;C)</translation>
     </message>
 </context>
 <context>

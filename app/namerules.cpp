@@ -1,0 +1,101 @@
+#include "app/namerules.h"
+
+#include "interpreter/compiler/lexer.h"
+#include "model/project.h"
+
+#include <QRegularExpression>
+
+#include <algorithm>
+#include <functional>
+
+namespace iec::app {
+
+namespace {
+
+bool sameName(const QString &a, const QString &b)
+{
+    return a.compare(b, Qt::CaseInsensitive) == 0;
+}
+
+bool isPouOrTypeName(const model::Project &project, const QString &name, model::PouId except)
+{
+    const bool pouClash = std::ranges::any_of(
+        project.types.pous, [&](const model::Pou &pou) { return pou.id != except && sameName(pou.name, name); });
+    return pouClash || project.findDataType(name) != nullptr;
+}
+
+bool isPartName(const model::Project &project, model::PouId id, const QString &name, const QString &except)
+{
+    const model::Pou *pou = project.findPou(id);
+    if (!pou)
+        return false;
+    const auto clashes = [&](const model::PouPart &part) {
+        return sameName(part.name, name) && !(except.size() && sameName(part.name, except));
+    };
+    return std::ranges::any_of(pou->actions, clashes) || std::ranges::any_of(pou->transitions, clashes);
+}
+
+QString firstFree(const QString &base, const std::function<bool(const QString &)> &taken)
+{
+    if (!taken(base))
+        return base;
+    // A trailing '_' is not allowed in IEC names, so the number joins without a second one.
+    const QString stem = base.endsWith(QLatin1Char('_')) ? base : base + QLatin1Char('_');
+    for (int number = 1;; ++number) {
+        const QString candidate = stem + QString::number(number);
+        if (!taken(candidate))
+            return candidate;
+    }
+}
+
+} // namespace
+
+bool NameRules::isIdentifier(const QString &name)
+{
+    return !identifierError(name).has_value();
+}
+
+std::optional<QString> NameRules::identifierError(const QString &name)
+{
+    static const QRegularExpression identifier(QStringLiteral("^(?:[A-Za-z]|_[A-Za-z0-9])(?:_?[A-Za-z0-9])*$"));
+    if (name.isEmpty())
+        return tr("Enter a name.");
+    if (!identifier.match(name).hasMatch())
+        return tr("\"%1\" is not an IEC identifier: use letters, digits and single underscores, starting with a "
+                  "letter or an underscore and not ending with an underscore.")
+            .arg(name);
+    if (interp::isKeyword(name) || interp::isTypeName(name))
+        return tr("\"%1\" is a reserved word of IEC 61131-3.").arg(name);
+    return std::nullopt;
+}
+
+std::optional<QString> NameRules::pouNameError(const model::Project &project, const QString &name, model::PouId renamed)
+{
+    if (auto error = identifierError(name))
+        return error;
+    if (isPouOrTypeName(project, name, renamed))
+        return tr("A POU or data type named \"%1\" exists already.").arg(name);
+    return std::nullopt;
+}
+
+std::optional<QString> NameRules::partNameError(
+    const model::Project &project, model::PouId pou, const QString &name, const QString &renamed)
+{
+    if (auto error = identifierError(name))
+        return error;
+    if (isPartName(project, pou, name, renamed))
+        return tr("This POU has an action or transition named \"%1\" already.").arg(name);
+    return std::nullopt;
+}
+
+QString NameRules::uniquePouName(const model::Project &project, const QString &base)
+{
+    return firstFree(base, [&](const QString &name) { return isPouOrTypeName(project, name, {}); });
+}
+
+QString NameRules::uniquePartName(const model::Project &project, model::PouId pou, const QString &base)
+{
+    return firstFree(base, [&](const QString &name) { return isPartName(project, pou, name, {}); });
+}
+
+} // namespace iec::app

@@ -1,0 +1,43 @@
+#pragma once
+
+#include "model/ids.h"
+
+#include <QCoreApplication>
+#include <QString>
+
+#include <optional>
+
+namespace iec::model {
+struct Project;
+}
+
+namespace iec::app {
+
+// What a name given in the project tree must be: an IEC 61131-3 identifier (letter or '_' first,
+// then letters, digits and single underscores, not ending in '_', not a keyword or elementary
+// type), unique where the language needs it (case-insensitive, as IEC names are).
+class NameRules
+{
+    Q_DECLARE_TR_FUNCTIONS(NameRules)
+
+public:
+    [[nodiscard]] static bool isIdentifier(const QString &name);
+
+    // nullopt when `name` may name a POU; otherwise a sentence saying why not. POUs and data
+    // types share one namespace. `renamed` is the POU being renamed (its own name does not clash).
+    [[nodiscard]] static std::optional<QString> pouNameError(
+        const model::Project &project, const QString &name, model::PouId renamed = {});
+    // The same for an action or transition of `pou` (actions and transitions share a namespace).
+    // `renamed` is the part's current name when it is being renamed.
+    [[nodiscard]] static std::optional<QString> partNameError(
+        const model::Project &project, model::PouId pou, const QString &name, const QString &renamed = {});
+
+    // `base` itself when it is free, otherwise base_1, base_2, ... (for duplicates and defaults).
+    [[nodiscard]] static QString uniquePouName(const model::Project &project, const QString &base);
+    [[nodiscard]] static QString uniquePartName(const model::Project &project, model::PouId pou, const QString &base);
+
+private:
+    static std::optional<QString> identifierError(const QString &name);
+};
+
+} // namespace iec::app

@@ -1,0 +1,154 @@
+#include "app/projectcommands.h"
+
+#include "app/namerules.h"
+#include "app/referencerename.h"
+#include "interpreter/compiler/lexer.h"
+#include "model/projectmodel.h"
+#include "model/undo/partcommands.h"
+#include "model/undo/poucommands.h"
+
+#include <QUndoStack>
+
+namespace iec::app {
+
+using model::BodyRef;
+
+namespace {
+
+model::DataType dataTypeNamed(const QString &name)
+{
+    const QString upper = name.toUpper();
+    if (upper == u"STRING" || upper == u"WSTRING")
+        return {model::StringType {.wide = upper == u"WSTRING"}};
+    if (interp::isTypeName(name))
+        return {model::ElementaryType {upper}};
+    return {model::DerivedType {.name = name}};
+}
+
+// Says why an operation was refused; returns false so `return fail(...)` reads as the refusal.
+bool fail(QString *error, const QString &message)
+{
+    if (error)
+        *error = message;
+    return false;
+}
+
+} // namespace
+
+model::Pou makePou(const NewPou &pou)
+{
+    model::Pou value;
+    value.name = pou.name;
+    value.kind = pou.kind;
+    value.pouInterface = model::Interface {};
+    if (pou.kind == model::PouKind::Function)
+        value.pouInterface->returnType = dataTypeNamed(pou.returnType.trimmed());
+    value.bodies.push_back(model::Body::withLanguage(pou.language));
+    return value;
+}
+
+ProjectCommands::ProjectCommands(model::ProjectModel &model, QUndoStack &projectStack)
+    : m_model(model)
+    , m_stack(projectStack)
+{ }
+
+std::optional<model::PouId> ProjectCommands::addPou(const NewPou &pou, QString *error)
+{
+    if (const auto problem = NameRules::pouNameError(m_model.project(), pou.name)) {
+        fail(error, *problem);
+        return std::nullopt;
+    }
+    if (pou.kind == model::PouKind::Function && !NameRules::isIdentifier(pou.returnType.trimmed())
+        && !interp::isTypeName(pou.returnType.trimmed())) {
+        fail(error, tr("A function needs a return type."));
+        return std::nullopt;
+    }
+    auto *command = new model::AddPouCommand(m_model, makePou(pou));
+    m_stack.push(command);
+    return command->pouId();
+}
+
+std::optional<BodyRef> ProjectCommands::addPouPart(model::PouId pou, const NewPouPart &part, QString *error)
+{
+    if (!m_model.project().findPou(pou)) {
+        fail(error, tr("The POU does not exist any more."));
+        return std::nullopt;
+    }
+    if (const auto problem = NameRules::partNameError(m_model.project(), pou, part.name)) {
+        fail(error, *problem);
+        return std::nullopt;
+    }
+    model::PouPart value;
+    value.name = part.name;
+    value.body = model::Body::withLanguage(part.language);
+    m_stack.push(new model::AddPouPartCommand(m_model, pou, part.part, std::move(value)));
+    return BodyRef {pou, part.part, part.name};
+}
+
+bool ProjectCommands::rename(const BodyRef &item, const QString &newName, QString *error)
+{
+    flushPendingEdits();
+    const QString oldName = nameOf(item);
+    if (oldName.isEmpty())
+        return fail(error, tr("The item does not exist any more."));
+    if (newName == oldName)
+        return true;
+    if (item.part == BodyRef::Part::Pou) {
+        if (const auto problem = NameRules::pouNameError(m_model.project(), newName, item.pou))
+            return fail(error, *problem);
+        m_stack.push(createRenamePouCommand(m_model, item.pou, newName));
+        return true;
+    }
+    if (const auto problem = NameRules::partNameError(m_model.project(), item.pou, newName, oldName))
+        return fail(error, *problem);
+    m_stack.push(new model::RenamePouPartCommand(m_model, item.pou, item.part, oldName, newName));
+    return true;
+}
+
+bool ProjectCommands::remove(const BodyRef &item)
+{
+    flushPendingEdits();
+    const QString name = nameOf(item);
+    if (name.isEmpty())
+        return false;
+    if (item.part == BodyRef::Part::Pou)
+        m_stack.push(new model::RemovePouCommand(m_model, item.pou));
+    else
+        m_stack.push(new model::RemovePouPartCommand(m_model, item.pou, item.part, name));
+    return true;
+}
+
+std::optional<BodyRef> ProjectCommands::duplicate(const BodyRef &item)
+{
+    flushPendingEdits();
+    const QString name = nameOf(item);
+    if (name.isEmpty())
+        return std::nullopt;
+    if (item.part == BodyRef::Part::Pou) {
+        const QString copyName = NameRules::uniquePouName(m_model.project(), name);
+        auto *command = new model::DuplicatePouCommand(m_model, item.pou, copyName);
+        m_stack.push(command);
+        return BodyRef {command->copyId(), BodyRef::Part::Pou, {}};
+    }
+    const QString copyName = NameRules::uniquePartName(m_model.project(), item.pou, name);
+    m_stack.push(model::AddPouPartCommand::duplicate(m_model, item.pou, item.part, name, copyName));
+    return BodyRef {item.pou, item.part, copyName};
+}
+
+void ProjectCommands::flushPendingEdits() const
+{
+    if (m_flushPendingEdits)
+        m_flushPendingEdits();
+}
+
+QString ProjectCommands::nameOf(const BodyRef &item) const
+{
+    if (item.part == BodyRef::Part::Pou) {
+        const model::Pou *pou = m_model.project().findPou(item.pou);
+        return pou ? pou->name : QString();
+    }
+    const model::PouPart *part = m_model.findPouPart(item.pou, item.part, item.name);
+    return part ? part->name : QString();
+}
+
+} // namespace iec::app

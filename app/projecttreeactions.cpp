@@ -1,0 +1,194 @@
+#include "app/projecttreeactions.h"
+
+#include "app/addpoudialog.h"
+#include "app/addpoupartdialog.h"
+#include "app/namerules.h"
+#include "app/projecttreemodel.h"
+#include "app/projecttreeview.h"
+#include "app/renamedialog.h"
+#include "model/projectmodel.h"
+
+#include <QAction>
+#include <QMenu>
+#include <QMessageBox>
+
+namespace iec::app {
+
+using model::BodyRef;
+
+ProjectTreeActions::ProjectTreeActions(
+    ProjectCommands &commands, model::ProjectModel &model, ProjectTreeView &tree, QWidget *dialogParent)
+    : QObject(dialogParent)
+    , m_commands(commands)
+    , m_model(model)
+    , m_tree(tree)
+    , m_dialogParent(dialogParent)
+{
+    m_addPou = createAction("addPouAction", &ProjectTreeActions::addPouInteractive);
+    m_addAction = createAction("addActionAction", &ProjectTreeActions::addActionInteractive);
+    m_addTransition = createAction("addTransitionAction", &ProjectTreeActions::addTransitionInteractive);
+    m_rename = createAction("renameAction", &ProjectTreeActions::renameInteractive);
+    m_delete = createAction("deleteAction", &ProjectTreeActions::deleteInteractive);
+    m_duplicate = createAction("duplicateAction", &ProjectTreeActions::duplicateCurrent);
+
+    // Delete and F2 mean other things in the editors (F2 is the input assistant), so these two
+    // shortcuts only work while the tree has the focus.
+    m_rename->setShortcut(QKeySequence(Qt::Key_F2));
+    m_delete->setShortcut(QKeySequence::Delete);
+    for (QAction *action : {m_rename, m_delete}) {
+        action->setShortcutContext(Qt::WidgetShortcut);
+        m_tree.addAction(action);
+    }
+
+    m_tree.setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(&m_tree, &QWidget::customContextMenuRequested, this, &ProjectTreeActions::showContextMenu);
+    connect(&m_tree, &ProjectTreeView::currentItemChanged, this, &ProjectTreeActions::updateEnabled);
+    if (auto *treeModel = qobject_cast<ProjectTreeModel *>(m_tree.model()))
+        // Queued: the rename rebuilds the tree, which must not happen inside the editor's commit.
+        connect(treeModel, &ProjectTreeModel::renameRequested, this, &ProjectTreeActions::renameInPlace,
+            Qt::QueuedConnection);
+    updateEnabled();
+    retranslate();
+}
+
+QAction *ProjectTreeActions::createAction(const char *objectName, void (ProjectTreeActions::*slot)())
+{
+    auto *action = new QAction(this);
+    action->setObjectName(QString::fromLatin1(objectName));
+    connect(action, &QAction::triggered, this, slot);
+    return action;
+}
+
+void ProjectTreeActions::addTo(QMenu *menu) const
+{
+    menu->addAction(m_addPou);
+    menu->addAction(m_addAction);
+    menu->addAction(m_addTransition);
+    menu->addSeparator();
+    menu->addAction(m_rename);
+    menu->addAction(m_duplicate);
+    menu->addAction(m_delete);
+}
+
+void ProjectTreeActions::retranslate()
+{
+    m_addPou->setText(tr("Add &POU..."));
+    m_addAction->setText(tr("Add &Action..."));
+    m_addTransition->setText(tr("Add &Transition..."));
+    m_rename->setText(tr("&Rename..."));
+    m_delete->setText(tr("&Delete"));
+    m_duplicate->setText(tr("D&uplicate"));
+}
+
+std::optional<BodyRef> ProjectTreeActions::currentItem() const
+{
+    const auto *treeModel = qobject_cast<const ProjectTreeModel *>(m_tree.model());
+    return treeModel ? treeModel->bodyRef(m_tree.currentIndex()) : std::nullopt;
+}
+
+void ProjectTreeActions::updateEnabled()
+{
+    const std::optional<BodyRef> item = currentItem();
+    const model::Pou *pou = item ? m_model.project().findPou(item->pou) : nullptr;
+    // CODESYS keeps actions and transitions for SFC programs; any program or FB may have them here.
+    const bool mayHaveParts = pou && pou->kind != model::PouKind::Function;
+    m_addAction->setEnabled(mayHaveParts);
+    m_addTransition->setEnabled(mayHaveParts);
+    for (QAction *action : {m_rename, m_delete, m_duplicate})
+        action->setEnabled(item.has_value());
+}
+
+void ProjectTreeActions::showContextMenu(const QPoint &position)
+{
+    updateEnabled();
+    QMenu menu;
+    addTo(&menu);
+    menu.exec(m_tree.viewport()->mapToGlobal(position));
+}
+
+void ProjectTreeActions::addPouInteractive()
+{
+    AddPouDialog dialog(m_model.project(), m_dialogParent);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    QString error;
+    if (const auto id = m_commands.addPou(dialog.newPou(), &error))
+        Q_EMIT created({*id, BodyRef::Part::Pou, {}});
+    else
+        QMessageBox::warning(m_dialogParent, tr("Add POU"), error);
+}
+
+void ProjectTreeActions::addActionInteractive()
+{
+    addPartInteractive(BodyRef::Part::Action);
+}
+
+void ProjectTreeActions::addTransitionInteractive()
+{
+    addPartInteractive(BodyRef::Part::Transition);
+}
+
+void ProjectTreeActions::addPartInteractive(BodyRef::Part part)
+{
+    const std::optional<BodyRef> item = currentItem();
+    if (!item)
+        return;
+    AddPouPartDialog dialog(m_model.project(), item->pou, part, m_dialogParent);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    QString error;
+    if (const auto added = m_commands.addPouPart(item->pou, dialog.newPart(), &error))
+        Q_EMIT created(*added);
+    else
+        QMessageBox::warning(m_dialogParent, dialog.windowTitle(), error);
+}
+
+void ProjectTreeActions::renameInteractive()
+{
+    const std::optional<BodyRef> item = currentItem();
+    if (!item)
+        return;
+    const QString oldName = m_commands.nameOf(*item);
+    const model::Project &project = m_model.project();
+    RenameDialog dialog(
+        oldName,
+        [&](const QString &name) {
+            return item->part == BodyRef::Part::Pou ? NameRules::pouNameError(project, name, item->pou)
+                                                    : NameRules::partNameError(project, item->pou, name, oldName);
+        },
+        m_dialogParent);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    QString error;
+    if (!m_commands.rename(*item, dialog.newName(), &error))
+        QMessageBox::warning(m_dialogParent, dialog.windowTitle(), error);
+}
+
+void ProjectTreeActions::renameInPlace(const BodyRef &item, const QString &newName)
+{
+    QString error;
+    if (!m_commands.rename(item, newName, &error))
+        QMessageBox::warning(m_dialogParent, tr("Rename %1").arg(m_commands.nameOf(item)), error);
+}
+
+void ProjectTreeActions::deleteInteractive()
+{
+    const std::optional<BodyRef> item = currentItem();
+    if (!item)
+        return;
+    const auto answer = QMessageBox::question(m_dialogParent, tr("Delete"),
+        tr("Delete %1? Edit → Undo brings it back.").arg(m_commands.nameOf(*item)), QMessageBox::Yes | QMessageBox::No,
+        QMessageBox::No);
+    if (answer == QMessageBox::Yes)
+        m_commands.remove(*item);
+}
+
+void ProjectTreeActions::duplicateCurrent()
+{
+    if (const std::optional<BodyRef> item = currentItem()) {
+        if (const auto copy = m_commands.duplicate(*item))
+            Q_EMIT created(*copy);
+    }
+}
+
+} // namespace iec::app

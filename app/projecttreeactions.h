@@ -1,0 +1,70 @@
+#pragma once
+
+#include "app/projectcommands.h"
+
+#include <QObject>
+
+class QAction;
+class QMenu;
+class QWidget;
+
+namespace iec::app {
+
+class ProjectTreeView;
+
+// The project tree's commands as actions for the Project menu and the tree's context menu: Add
+// POU, Add Action, Add Transition, Rename, Delete, Duplicate. Each asks what it needs with a
+// dialog and hands the answer to ProjectCommands, which does the work undoably. The actions are
+// enabled for the tree's current item; Delete and F2 work while the tree has the focus.
+class ProjectTreeActions : public QObject
+{
+    Q_OBJECT
+
+public:
+    ProjectTreeActions(
+        ProjectCommands &commands, model::ProjectModel &model, ProjectTreeView &tree, QWidget *dialogParent);
+
+    void addTo(QMenu *menu) const;
+    void retranslate();
+
+    [[nodiscard]] QAction *addPouAction() const { return m_addPou; }
+    [[nodiscard]] QAction *addActionAction() const { return m_addAction; }
+    [[nodiscard]] QAction *addTransitionAction() const { return m_addTransition; }
+    [[nodiscard]] QAction *renameAction() const { return m_rename; }
+    [[nodiscard]] QAction *deleteAction() const { return m_delete; }
+    [[nodiscard]] QAction *duplicateAction() const { return m_duplicate; }
+
+public Q_SLOTS:
+    void addPouInteractive();
+    void addActionInteractive();
+    void addTransitionInteractive();
+    void renameInteractive();
+    void deleteInteractive();
+    void duplicateCurrent();
+    // The tree's in-place editor was closed with `newName`.
+    void renameInPlace(const iec::model::BodyRef &item, const QString &newName);
+
+Q_SIGNALS:
+    // A POU, action or transition was created (added or duplicated): the window opens it.
+    void created(const iec::model::BodyRef &item);
+
+private:
+    QAction *createAction(const char *objectName, void (ProjectTreeActions::*slot)());
+    void addPartInteractive(model::BodyRef::Part part);
+    void updateEnabled();
+    void showContextMenu(const QPoint &position);
+    [[nodiscard]] std::optional<model::BodyRef> currentItem() const;
+
+    ProjectCommands &m_commands;
+    model::ProjectModel &m_model;
+    ProjectTreeView &m_tree;
+    QWidget *m_dialogParent;
+    QAction *m_addPou = nullptr;
+    QAction *m_addAction = nullptr;
+    QAction *m_addTransition = nullptr;
+    QAction *m_rename = nullptr;
+    QAction *m_delete = nullptr;
+    QAction *m_duplicate = nullptr;
+};
+
+} // namespace iec::app
