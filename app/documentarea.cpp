@@ -71,6 +71,13 @@ editors::CodeEditor *DocumentArea::textEditorFor(const BodyRef &ref) const
     return textWidget ? textWidget->editor() : nullptr;
 }
 
+std::optional<BodyRef> DocumentArea::bodyAt(int index) const
+{
+    if (index < 0 || index >= count())
+        return std::nullopt;
+    return refOf(index);
+}
+
 std::optional<BodyRef> DocumentArea::currentBody() const
 {
     if (currentIndex() < 0)

@@ -31,6 +31,7 @@ public:
     [[nodiscard]] QWidget *documentFor(const model::BodyRef &ref) const;
     [[nodiscard]] editors::CodeEditor *textEditorFor(const model::BodyRef &ref) const;
     [[nodiscard]] std::optional<model::BodyRef> currentBody() const;
+    [[nodiscard]] std::optional<model::BodyRef> bodyAt(int index) const;
     // Sends text typed but not yet pushed (the editors wait for a pause) into the model.
     void flushEdits();
 

@@ -1,5 +1,6 @@
 #include "app/mainwindow.h"
 
+#include "app/buildcontroller.h"
 #include "app/documentarea.h"
 #include "app/listmenus.h"
 #include "app/messagespane.h"
@@ -117,7 +118,6 @@ void MainWindow::createActions()
     // until then they are shown, disabled, so the menus already have their final shape.
     m_buildAction = new QAction(style->standardIcon(QStyle::SP_DialogApplyButton), QString(), this);
     m_buildAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
-    m_buildAction->setEnabled(false);
     m_loginAction = new QAction(style->standardIcon(QStyle::SP_MediaPlay), QString(), this);
     m_loginAction->setShortcut(QKeySequence(Qt::Key_F5));
     m_loginAction->setEnabled(false);
@@ -236,6 +236,13 @@ void MainWindow::createDocks()
     m_messagesDock->setObjectName(QStringLiteral("messagesDock"));
     m_messagesDock->setWidget(m_messages);
     addDockWidget(Qt::BottomDockWidgetArea, m_messagesDock);
+
+    m_build = new BuildController(*m_projectModel, *m_documents, *m_messages, this);
+    connect(m_buildAction, &QAction::triggered, m_build, &BuildController::build);
+    connect(m_build, &BuildController::built, this, [this](int errors, int warnings) {
+        m_messagesDock->show();
+        statusBar()->showMessage(tr("Build finished. Errors: %1, warnings: %2.").arg(errors).arg(warnings));
+    });
 }
 
 void MainWindow::retranslateUi()

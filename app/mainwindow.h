@@ -18,6 +18,7 @@ class ProjectModel;
 
 namespace iec::app {
 
+class BuildController;
 class DocumentArea;
 class ExamplesMenu;
 class MessagesPane;
@@ -50,6 +51,7 @@ public:
     [[nodiscard]] RecoveryManager &recovery() { return *m_recovery; }
     [[nodiscard]] const Settings &settings() const { return m_settings; }
     [[nodiscard]] MessagesPane &messagesPane() { return *m_messages; }
+    [[nodiscard]] BuildController &buildController() { return *m_build; }
     [[nodiscard]] DocumentArea &documents() { return *m_documents; }
     [[nodiscard]] ProjectTreeView &projectTree() { return *m_projectTree; }
     [[nodiscard]] QString currentFile() const { return m_currentFile; }
@@ -154,6 +156,7 @@ private:
     ProjectTreeView *m_projectTree = nullptr;
     ProjectTreeActions *m_treeActions = nullptr;
     MessagesPane *m_messages = nullptr;
+    BuildController *m_build = nullptr;
     DocumentArea *m_documents = nullptr;
 };
 

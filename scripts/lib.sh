@@ -10,6 +10,9 @@ IEC_BUILD_PACKAGES=(cmake ninja-build g++ ccache pkg-config
 # Fonts for Latin and Chinese text, so the UI and rendered diagrams read in every UI language.
 IEC_FONT_PACKAGES=(fonts-dejavu-core fonts-wqy-microhei)
 
+# Relative paths in the compiler cache key, so a fresh clone elsewhere reuses earlier builds.
+export CCACHE_BASEDIR="$IEC_ROOT"
+
 iec_say() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }
 
 # Installs the packages that are not installed yet, with apt-get as root or through sudo.

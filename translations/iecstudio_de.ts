@@ -98,6 +98,13 @@
     </message>
 </context>
 <context>
+    <name>iec::app::BuildController</name>
+    <message>
+        <source>%1 Hint: %2</source>
+        <translation>%1 Hinweis: %2</translation>
+    </message>
+</context>
+<context>
     <name>iec::app::DocumentArea</name>
     <message>
         <source>This body is written in %1. Its editor is not available in this version; the body is kept unchanged when the project is saved.</source>
@@ -303,6 +310,10 @@ Automatisch gespeichert: %2</translation>
     <message>
         <source>The project could not be recovered: %1</source>
         <translation>Das Projekt konnte nicht wiederhergestellt werden: %1</translation>
+    </message>
+    <message>
+        <source>Build finished. Errors: %1, warnings: %2.</source>
+        <translation>Übersetzen beendet. Fehler: %1, Warnungen: %2.</translation>
     </message>
 </context>
 <context>

@@ -1,6 +1,8 @@
 // Not a test: renders the main window with the example project open, in each UI language, to
 // PNG files for looking at (scripts/screenshots.sh). Offscreen, so it runs without a display.
+#include "app/buildcontroller.h"
 #include "app/documentarea.h"
+#include "editors/text/codeeditor.h"
 #include "app/mainwindow.h"
 #include "app/projecttreemodel.h"
 #include "app/projecttreeview.h"
@@ -30,8 +32,15 @@ int main(int argc, char *argv[])
             return 1;
         auto *tree = static_cast<const iec::app::ProjectTreeModel *>(window.projectTree().model());
         const QModelIndex firstPou = tree->index(0, 0, tree->index(0, 0));
-        if (const auto body = tree->bodyRef(firstPou))
+        if (const auto body = tree->bodyRef(firstPou)) {
             window.documents().openBody(*body);
+            // IEC_SHOT_TYPO=1 adds a misspelt name and builds, to show how errors look.
+            if (qEnvironmentVariableIsSet("IEC_SHOT_TYPO")) {
+                auto *editor = window.documents().textEditorFor(*body);
+                editor->appendPlainText(QStringLiteral("Countr := 0;"));
+                window.buildController().build();
+            }
+        }
         QCoreApplication::processEvents();
         window.grab().save(QDir(outDir).filePath(QStringLiteral("mainwindow_%1.png").arg(language)));
     }

@@ -1,0 +1,134 @@
+#include "app/buildcontroller.h"
+
+#include "app/documentarea.h"
+#include "editors/text/codeeditor.h"
+#include "interpreter/compiler/lexer.h"
+#include "interpreter/frontend/projectsource.h"
+#include "model/projectmodel.h"
+
+#include <QTextBlock>
+
+namespace iec::app {
+
+using model::BodyRef;
+
+namespace {
+
+const QString kBuildSource = QStringLiteral("build");
+
+// "Main" names a POU's body, "Main.Fill" one of its actions or transitions.
+std::optional<BodyRef> bodyNamed(const model::ProjectModel &projectModel, const QString &name)
+{
+    const int dot = name.indexOf(QLatin1Char('.'));
+    const model::Pou *pou = projectModel.project().findPou(dot < 0 ? name : name.left(dot));
+    if (!pou)
+        return std::nullopt;
+    if (dot < 0)
+        return BodyRef{pou->id, BodyRef::Part::Pou, {}};
+    const QString part = name.mid(dot + 1);
+    for (const BodyRef::Part kind : {BodyRef::Part::Action, BodyRef::Part::Transition}) {
+        if (projectModel.findPouPart(pou->id, kind, part))
+            return BodyRef{pou->id, kind, part};
+    }
+    return std::nullopt;
+}
+
+// The length of the token that starts at the 1-based column, so that the underline covers the
+// whole misspelt name rather than its first letter (the compiler reports positions only).
+int tokenLengthAt(const QString &lineText, int column)
+{
+    interp::LexState state;
+    for (const interp::Token &token : interp::tokenize(lineText, state)) {
+        if (token.offset == column - 1)
+            return token.length;
+    }
+    return 0;
+}
+
+} // namespace
+
+QList<Message> compileMessages(const model::Project &project)
+{
+    interp::Diagnostics diagnostics;
+    interp::frontend::compileProject(project, diagnostics);
+    QList<Message> messages;
+    for (const interp::Diagnostic &diagnostic : diagnostics.all()) {
+        QString text = diagnostic.message;
+        if (!diagnostic.hint.isEmpty())
+            text = BuildController::tr("%1 Hint: %2").arg(text, diagnostic.hint);
+        messages.append({.severity = diagnostic.severity == interp::Diagnostic::Severity::Error
+                             ? Message::Severity::Error
+                             : Message::Severity::Warning,
+                         .text = text,
+                         .pouName = diagnostic.pou,
+                         .line = diagnostic.location.line,
+                         .column = diagnostic.location.column});
+    }
+    return messages;
+}
+
+BuildController::BuildController(model::ProjectModel &projectModel, DocumentArea &documents,
+                                 MessagesPane &messages, QObject *parent)
+    : QObject(parent)
+    , m_projectModel(projectModel)
+    , m_documents(documents)
+    , m_messagesPane(messages)
+{
+    connect(&messages, &MessagesPane::messageActivated, this, &BuildController::openLocation);
+}
+
+bool BuildController::build()
+{
+    // What the user typed in the last moments is part of what they asked to build.
+    m_documents.flushEdits();
+    m_messages = compileMessages(m_projectModel.project());
+    m_messagesPane.model().setMessages(kBuildSource, m_messages);
+    underlineInOpenEditors();
+    const int errors = m_messagesPane.model().count(Message::Severity::Error);
+    Q_EMIT built(errors, m_messagesPane.model().count(Message::Severity::Warning));
+    return errors == 0;
+}
+
+void BuildController::underlineInOpenEditors()
+{
+    const model::Project &project = m_projectModel.project();
+    for (int index = 0; index < m_documents.count(); ++index) {
+        const std::optional<BodyRef> ref = m_documents.bodyAt(index);
+        editors::CodeEditor *editor = ref ? m_documents.textEditorFor(*ref) : nullptr;
+        if (!editor)
+            continue;
+        const QString title = DocumentArea::title(project, *ref);
+        const int lineCount = editor->document()->blockCount();
+        QList<editors::TextDiagnostic> underlines;
+        for (const Message &message : std::as_const(m_messages)) {
+            // Declaration diagnostics count lines in the printed declarations, not in the body.
+            if (message.pouName.compare(title, Qt::CaseInsensitive) != 0 || message.line < 1
+                || message.line > lineCount)
+                continue;
+            const QString lineText = editor->document()->findBlockByNumber(message.line - 1).text();
+            underlines.append({.line = message.line,
+                               .column = std::max(1, message.column),
+                               .length = tokenLengthAt(lineText, message.column),
+                               .severity = message.severity == Message::Severity::Error
+                                   ? editors::TextDiagnostic::Severity::Error
+                                   : editors::TextDiagnostic::Severity::Warning,
+                               .message = message.text});
+        }
+        editor->setDiagnostics(underlines);
+    }
+}
+
+void BuildController::openLocation(const Message &message)
+{
+    const std::optional<BodyRef> ref = bodyNamed(m_projectModel, message.pouName);
+    if (!ref)
+        return;
+    m_documents.openBody(*ref);
+    editors::CodeEditor *editor = m_documents.textEditorFor(*ref);
+    if (editor && message.line > 0 && message.line <= editor->document()->blockCount()) {
+        editor->goToLine(message.line, std::max(1, message.column));
+        editor->setFocus();
+    }
+}
+
+} // namespace iec::app
