@@ -580,6 +580,32 @@ Automatisch gespeichert: %2</translation>
     </message>
 </context>
 <context>
+    <name>iec::editors::AliasPage</name>
+    <message>
+        <source>Base type:</source>
+        <translation>Basistyp:</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::ArrayPage</name>
+    <message>
+        <source>Low</source>
+        <translation>Unten</translation>
+    </message>
+    <message>
+        <source>High</source>
+        <translation>Oben</translation>
+    </message>
+    <message>
+        <source>Dimensions</source>
+        <translation>Dimensionen</translation>
+    </message>
+    <message>
+        <source>Element type:</source>
+        <translation>Elementtyp:</translation>
+    </message>
+</context>
+<context>
     <name>iec::editors::CodeEditor</name>
     <message>
         <source>Go to Definition</source>
@@ -604,6 +630,159 @@ Automatisch gespeichert: %2</translation>
     <message>
         <source>Unfold All</source>
         <translation>Alles ausklappen</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::DataTypeEditor</name>
+    <message>
+        <source>Name:</source>
+        <translation>Name:</translation>
+    </message>
+    <message>
+        <source>Kind:</source>
+        <translation>Art:</translation>
+    </message>
+    <message>
+        <source>Initial value:</source>
+        <translation>Initialwert:</translation>
+    </message>
+    <message>
+        <source>(the default of the type)</source>
+        <translation>(Vorgabewert des Typs)</translation>
+    </message>
+    <message>
+        <source>Structure</source>
+        <translation>Struktur</translation>
+    </message>
+    <message>
+        <source>Enumeration</source>
+        <translation>Aufzählung</translation>
+    </message>
+    <message>
+        <source>Array</source>
+        <translation>Feld</translation>
+    </message>
+    <message>
+        <source>Subrange</source>
+        <translation>Unterbereich</translation>
+    </message>
+    <message>
+        <source>Alias</source>
+        <translation>Alias</translation>
+    </message>
+    <message>
+        <source>String</source>
+        <translation>Zeichenkette</translation>
+    </message>
+    <message>
+        <source>IEC text:</source>
+        <translation>IEC-Text:</translation>
+    </message>
+    <message>
+        <source>IEC text as last applied (correct the marked fields to apply):</source>
+        <translation>IEC-Text wie zuletzt übernommen (korrigieren Sie die markierten Felder, um zu übernehmen):</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::DataTypeValidator</name>
+    <message>
+        <source>A POU or data type named &quot;%1&quot; exists already.</source>
+        <translation>Ein Baustein oder Datentyp namens &quot;%1&quot; existiert bereits.</translation>
+    </message>
+    <message>
+        <source>A structure needs at least one member.</source>
+        <translation>Eine Struktur braucht mindestens ein Element.</translation>
+    </message>
+    <message>
+        <source>There is a member named &quot;%1&quot; already.</source>
+        <translation>Es gibt bereits ein Element namens &quot;%1&quot;.</translation>
+    </message>
+    <message>
+        <source>An enumeration needs at least one value.</source>
+        <translation>Eine Aufzählung braucht mindestens einen Wert.</translation>
+    </message>
+    <message>
+        <source>The value &quot;%1&quot; is listed already.</source>
+        <translation>Der Wert &quot;%1&quot; ist bereits aufgeführt.</translation>
+    </message>
+    <message>
+        <source>Enter a whole number, or leave it empty.</source>
+        <translation>Geben Sie eine ganze Zahl ein oder lassen Sie das Feld leer.</translation>
+    </message>
+    <message>
+        <source>An array needs at least one dimension.</source>
+        <translation>Ein Feld braucht mindestens eine Dimension.</translation>
+    </message>
+    <message>
+        <source>Enter a length from 1 to 65535, or leave it empty for the default.</source>
+        <translation>Geben Sie eine Länge von 1 bis 65535 ein oder lassen Sie das Feld für den Vorgabewert leer.</translation>
+    </message>
+    <message>
+        <source>Choose an integer type such as INT, DINT or UINT.</source>
+        <translation>Wählen Sie einen Ganzzahltyp wie INT, DINT oder UINT.</translation>
+    </message>
+    <message>
+        <source>The upper bound %1 is less than the lower bound %2.</source>
+        <translation>Die obere Grenze %1 ist kleiner als die untere Grenze %2.</translation>
+    </message>
+    <message>
+        <source>Enter a bound.</source>
+        <translation>Geben Sie eine Grenze ein.</translation>
+    </message>
+    <message>
+        <source>Enter a whole number or the name of a constant.</source>
+        <translation>Geben Sie eine ganze Zahl oder den Namen einer Konstante ein.</translation>
+    </message>
+    <message>
+        <source>Enter a type.</source>
+        <translation>Geben Sie einen Typ ein.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a type.</source>
+        <translation>&quot;%1&quot; ist kein Typ.</translation>
+    </message>
+    <message>
+        <source>A type cannot contain itself.</source>
+        <translation>Ein Typ kann sich nicht selbst enthalten.</translation>
+    </message>
+    <message>
+        <source>Unknown type &quot;%1&quot;.</source>
+        <translation>Unbekannter Typ &quot;%1&quot;.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a valid initial value.</source>
+        <translation>&quot;%1&quot; ist kein gültiger Initialwert.</translation>
+    </message>
+    <message>
+        <source>Enter a name.</source>
+        <translation>Geben Sie einen Namen ein.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an IEC identifier: use letters, digits and single underscores, starting with a letter or an underscore and not ending with an underscore.</source>
+        <translation>&quot;%1&quot; ist kein IEC-Bezeichner: verwenden Sie Buchstaben, Ziffern und einzelne Unterstriche; am Anfang ein Buchstabe oder Unterstrich, am Ende kein Unterstrich.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is a reserved word of IEC 61131-3.</source>
+        <translation>&quot;%1&quot; ist ein reserviertes Wort der IEC 61131-3.</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::EnumPage</name>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Value (optional)</source>
+        <translation>Wert (optional)</translation>
+    </message>
+    <message>
+        <source>Values</source>
+        <translation>Werte</translation>
+    </message>
+    <message>
+        <source>Base type (optional):</source>
+        <translation>Basistyp (optional):</translation>
     </message>
 </context>
 <context>
@@ -729,6 +908,45 @@ Automatisch gespeichert: %2</translation>
     <message>
         <source>Programs</source>
         <translation>Programme</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::RowTable</name>
+    <message>
+        <source>Add</source>
+        <translation>Hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add a row below the current one</source>
+        <translation>Eine Zeile unter der aktuellen hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Remove the current row</source>
+        <translation>Die aktuelle Zeile entfernen</translation>
+    </message>
+    <message>
+        <source>Up</source>
+        <translation>Nach oben</translation>
+    </message>
+    <message>
+        <source>Move the current row up</source>
+        <translation>Die aktuelle Zeile nach oben verschieben</translation>
+    </message>
+    <message>
+        <source>Down</source>
+        <translation>Nach unten</translation>
+    </message>
+    <message>
+        <source>Move the current row down</source>
+        <translation>Die aktuelle Zeile nach unten verschieben</translation>
+    </message>
+    <message>
+        <source>Row %1, %2: %3</source>
+        <translation>Zeile %1, %2: %3</translation>
     </message>
 </context>
 <context>
@@ -888,6 +1106,55 @@ Automatisch gespeichert: %2</translation>
     <message>
         <source>Negation</source>
         <translation>Negation</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::StringPage</name>
+    <message>
+        <source>Characters:</source>
+        <translation>Zeichen:</translation>
+    </message>
+    <message>
+        <source>Length (optional):</source>
+        <translation>Länge (optional):</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::StructPage</name>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <source>Initial value</source>
+        <translation>Initialwert</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Kommentar</translation>
+    </message>
+    <message>
+        <source>Members</source>
+        <translation>Elemente</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::SubrangePage</name>
+    <message>
+        <source>Base type:</source>
+        <translation>Basistyp:</translation>
+    </message>
+    <message>
+        <source>Low:</source>
+        <translation>Unten:</translation>
+    </message>
+    <message>
+        <source>High:</source>
+        <translation>Oben:</translation>
     </message>
 </context>
 <context>

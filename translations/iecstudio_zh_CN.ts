@@ -580,6 +580,32 @@ Autosaved: %2</source>
     </message>
 </context>
 <context>
+    <name>iec::editors::AliasPage</name>
+    <message>
+        <source>Base type:</source>
+        <translation>基本类型：</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::ArrayPage</name>
+    <message>
+        <source>Low</source>
+        <translation>下限</translation>
+    </message>
+    <message>
+        <source>High</source>
+        <translation>上限</translation>
+    </message>
+    <message>
+        <source>Dimensions</source>
+        <translation>维数</translation>
+    </message>
+    <message>
+        <source>Element type:</source>
+        <translation>元素类型：</translation>
+    </message>
+</context>
+<context>
     <name>iec::editors::CodeEditor</name>
     <message>
         <source>Go to Definition</source>
@@ -604,6 +630,159 @@ Autosaved: %2</source>
     <message>
         <source>Unfold All</source>
         <translation>全部展开</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::DataTypeEditor</name>
+    <message>
+        <source>Name:</source>
+        <translation>名称：</translation>
+    </message>
+    <message>
+        <source>Kind:</source>
+        <translation>类别：</translation>
+    </message>
+    <message>
+        <source>Initial value:</source>
+        <translation>初始值：</translation>
+    </message>
+    <message>
+        <source>(the default of the type)</source>
+        <translation>(该类型的默认值)</translation>
+    </message>
+    <message>
+        <source>Structure</source>
+        <translation>结构体</translation>
+    </message>
+    <message>
+        <source>Enumeration</source>
+        <translation>枚举</translation>
+    </message>
+    <message>
+        <source>Array</source>
+        <translation>数组</translation>
+    </message>
+    <message>
+        <source>Subrange</source>
+        <translation>子范围</translation>
+    </message>
+    <message>
+        <source>Alias</source>
+        <translation>别名</translation>
+    </message>
+    <message>
+        <source>String</source>
+        <translation>字符串</translation>
+    </message>
+    <message>
+        <source>IEC text:</source>
+        <translation>IEC 文本：</translation>
+    </message>
+    <message>
+        <source>IEC text as last applied (correct the marked fields to apply):</source>
+        <translation>最近一次应用的 IEC 文本(请更正标记的字段以应用)：</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::DataTypeValidator</name>
+    <message>
+        <source>A POU or data type named &quot;%1&quot; exists already.</source>
+        <translation>名为 &quot;%1&quot; 的 POU 或数据类型已存在。</translation>
+    </message>
+    <message>
+        <source>A structure needs at least one member.</source>
+        <translation>结构体至少需要一个成员。</translation>
+    </message>
+    <message>
+        <source>There is a member named &quot;%1&quot; already.</source>
+        <translation>已有名为 &quot;%1&quot; 的成员。</translation>
+    </message>
+    <message>
+        <source>An enumeration needs at least one value.</source>
+        <translation>枚举至少需要一个值。</translation>
+    </message>
+    <message>
+        <source>The value &quot;%1&quot; is listed already.</source>
+        <translation>值 &quot;%1&quot; 已列出。</translation>
+    </message>
+    <message>
+        <source>Enter a whole number, or leave it empty.</source>
+        <translation>请输入整数，或留空。</translation>
+    </message>
+    <message>
+        <source>An array needs at least one dimension.</source>
+        <translation>数组至少需要一个维。</translation>
+    </message>
+    <message>
+        <source>Enter a length from 1 to 65535, or leave it empty for the default.</source>
+        <translation>请输入 1 到 65535 之间的长度，或留空使用默认值。</translation>
+    </message>
+    <message>
+        <source>Choose an integer type such as INT, DINT or UINT.</source>
+        <translation>请选择整数类型，如 INT、DINT 或 UINT。</translation>
+    </message>
+    <message>
+        <source>The upper bound %1 is less than the lower bound %2.</source>
+        <translation>上限 %1 小于下限 %2。</translation>
+    </message>
+    <message>
+        <source>Enter a bound.</source>
+        <translation>请输入边界。</translation>
+    </message>
+    <message>
+        <source>Enter a whole number or the name of a constant.</source>
+        <translation>请输入整数或常量名称。</translation>
+    </message>
+    <message>
+        <source>Enter a type.</source>
+        <translation>请输入类型。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a type.</source>
+        <translation>&quot;%1&quot; 不是类型。</translation>
+    </message>
+    <message>
+        <source>A type cannot contain itself.</source>
+        <translation>类型不能包含自身。</translation>
+    </message>
+    <message>
+        <source>Unknown type &quot;%1&quot;.</source>
+        <translation>未知类型 &quot;%1&quot;。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a valid initial value.</source>
+        <translation>&quot;%1&quot; 不是有效的初始值。</translation>
+    </message>
+    <message>
+        <source>Enter a name.</source>
+        <translation>请输入名称。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an IEC identifier: use letters, digits and single underscores, starting with a letter or an underscore and not ending with an underscore.</source>
+        <translation>&quot;%1&quot; 不是 IEC 标识符：只能使用字母、数字和单个下划线，以字母或下划线开头，且不能以下划线结尾。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is a reserved word of IEC 61131-3.</source>
+        <translation>&quot;%1&quot; 是 IEC 61131-3 的保留字。</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::EnumPage</name>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Value (optional)</source>
+        <translation>值(可选)</translation>
+    </message>
+    <message>
+        <source>Values</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>Base type (optional):</source>
+        <translation>基本类型(可选)：</translation>
     </message>
 </context>
 <context>
@@ -728,6 +907,45 @@ Autosaved: %2</source>
     <message>
         <source>Programs</source>
         <translation>程序</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::RowTable</name>
+    <message>
+        <source>Add</source>
+        <translation>添加</translation>
+    </message>
+    <message>
+        <source>Add a row below the current one</source>
+        <translation>在当前行下方添加一行</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>删除</translation>
+    </message>
+    <message>
+        <source>Remove the current row</source>
+        <translation>删除当前行</translation>
+    </message>
+    <message>
+        <source>Up</source>
+        <translation>上移</translation>
+    </message>
+    <message>
+        <source>Move the current row up</source>
+        <translation>将当前行上移</translation>
+    </message>
+    <message>
+        <source>Down</source>
+        <translation>下移</translation>
+    </message>
+    <message>
+        <source>Move the current row down</source>
+        <translation>将当前行下移</translation>
+    </message>
+    <message>
+        <source>Row %1, %2: %3</source>
+        <translation>第 %1 行，%2：%3</translation>
     </message>
 </context>
 <context>
@@ -887,6 +1105,55 @@ Autosaved: %2</source>
     <message>
         <source>Negation</source>
         <translation>取反</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::StringPage</name>
+    <message>
+        <source>Characters:</source>
+        <translation>字符：</translation>
+    </message>
+    <message>
+        <source>Length (optional):</source>
+        <translation>长度(可选)：</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::StructPage</name>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>类型</translation>
+    </message>
+    <message>
+        <source>Initial value</source>
+        <translation>初始值</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>注释</translation>
+    </message>
+    <message>
+        <source>Members</source>
+        <translation>成员</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::SubrangePage</name>
+    <message>
+        <source>Base type:</source>
+        <translation>基本类型：</translation>
+    </message>
+    <message>
+        <source>Low:</source>
+        <translation>下限：</translation>
+    </message>
+    <message>
+        <source>High:</source>
+        <translation>上限：</translation>
     </message>
 </context>
 <context>
