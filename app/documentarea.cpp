@@ -1,11 +1,14 @@
 #include "app/documentarea.h"
 
 #include "app/treeicons.h"
+#include "app/undostacks.h"
+#include "editors/declarations/declarationeditor.h"
 #include "editors/text/codeeditor.h"
 #include "editors/text/texteditorwidget.h"
 #include "model/projectmodel.h"
 
 #include <QLabel>
+#include <QSplitter>
 #include <QTextDocument>
 
 namespace iec::app {
@@ -17,11 +20,28 @@ namespace {
 // Each tab's widget carries the body it shows, so no side table can drift from the tabs.
 const char *const kBodyRefProperty = "iecBodyRef";
 
+// The window that holds the tabs owns the undo stacks; a DocumentArea on its own (in a test)
+// keeps stacks of its own.
+UndoStacks *undoStacksOf(QWidget *window, QObject *owner)
+{
+    auto *stacks = window ? window->findChild<UndoStacks *>(QString(), Qt::FindDirectChildrenOnly) : nullptr;
+    return stacks ? stacks : new UndoStacks(owner);
+}
+
+// A tab's text editor: the tab itself (actions, transitions) or the body below the declarations.
+editors::TextEditorWidget *textWidgetIn(QWidget *document)
+{
+    if (auto *textWidget = qobject_cast<editors::TextEditorWidget *>(document))
+        return textWidget;
+    return document ? document->findChild<editors::TextEditorWidget *>() : nullptr;
+}
+
 } // namespace
 
 DocumentArea::DocumentArea(model::ProjectModel &projectModel, QWidget *parent)
     : QTabWidget(parent)
     , m_projectModel(projectModel)
+    , m_undoStacks(undoStacksOf(parent, this))
 {
     setDocumentMode(true);
     setTabsClosable(true);
@@ -67,8 +87,14 @@ QWidget *DocumentArea::documentFor(const BodyRef &ref) const
 
 editors::CodeEditor *DocumentArea::textEditorFor(const BodyRef &ref) const
 {
-    const auto *textWidget = qobject_cast<editors::TextEditorWidget *>(documentFor(ref));
+    const editors::TextEditorWidget *textWidget = textWidgetIn(documentFor(ref));
     return textWidget ? textWidget->editor() : nullptr;
+}
+
+editors::DeclarationEditor *DocumentArea::declarationEditorFor(const BodyRef &ref) const
+{
+    const QWidget *document = documentFor(ref);
+    return document ? document->findChild<editors::DeclarationEditor *>() : nullptr;
 }
 
 std::optional<BodyRef> DocumentArea::bodyAt(int index) const
@@ -103,6 +129,20 @@ QWidget *DocumentArea::openBody(const BodyRef &ref)
 
 QWidget *DocumentArea::createEditor(const BodyRef &ref)
 {
+    QWidget *bodyEditor = createBodyEditor(ref);
+    if (ref.part != BodyRef::Part::Pou)
+        return bodyEditor;
+    auto *splitter = new QSplitter(Qt::Vertical);
+    splitter->setChildrenCollapsible(false);
+    splitter->addWidget(new editors::DeclarationEditor(m_projectModel, ref.pou, m_undoStacks->pouStack(ref.pou)));
+    splitter->addWidget(bodyEditor);
+    splitter->setStretchFactor(0, 1);
+    splitter->setStretchFactor(1, 2);
+    return splitter;
+}
+
+QWidget *DocumentArea::createBodyEditor(const BodyRef &ref)
+{
     const model::Body *body = m_projectModel.body(ref);
     if (body->language() != model::BodyLanguage::ST && body->language() != model::BodyLanguage::IL) {
         auto *placeholder = new QLabel(tr("This body is written in %1. Its editor is not available in this "
@@ -127,7 +167,9 @@ QWidget *DocumentArea::createEditor(const BodyRef &ref)
 void DocumentArea::flushEdits()
 {
     for (int index = 0; index < count(); ++index) {
-        if (auto *textWidget = qobject_cast<editors::TextEditorWidget *>(widget(index)))
+        if (auto *declarations = widget(index)->findChild<editors::DeclarationEditor *>())
+            declarations->flushPendingEdit();
+        if (auto *textWidget = textWidgetIn(widget(index)))
             textWidget->editor()->flushPendingEdit();
     }
 }
@@ -151,7 +193,7 @@ bool DocumentArea::hasUnsavedTyping() const
     if (m_typingInClosedDocuments)
         return true;
     for (int index = 0; index < count(); ++index) {
-        if (const auto *textWidget = qobject_cast<editors::TextEditorWidget *>(widget(index))) {
+        if (const auto *textWidget = textWidgetIn(widget(index))) {
             if (textWidget->editor()->document()->isModified())
                 return true;
         }
@@ -163,7 +205,7 @@ void DocumentArea::markTypingSaved()
 {
     m_typingInClosedDocuments = false;
     for (int index = 0; index < count(); ++index) {
-        if (auto *textWidget = qobject_cast<editors::TextEditorWidget *>(widget(index)))
+        if (auto *textWidget = textWidgetIn(widget(index)))
             textWidget->editor()->document()->setModified(false);
     }
     Q_EMIT typingModifiedChanged();
@@ -172,11 +214,15 @@ void DocumentArea::markTypingSaved()
 void DocumentArea::closeDocument(int index)
 {
     // The typing is in the model by now (flushed), but no undo stack remembers it.
-    if (const auto *textWidget = qobject_cast<editors::TextEditorWidget *>(widget(index))) {
+    if (const auto *textWidget = textWidgetIn(widget(index))) {
         if (textWidget->editor()->document()->isModified())
             m_typingInClosedDocuments = true;
     }
-    delete widget(index);
+    // Out of the tabs first: focus leaving the dying widgets asks for the current document, which
+    // must not find one half destroyed.
+    QWidget *document = widget(index);
+    removeTab(index);
+    delete document;
     Q_EMIT typingModifiedChanged();
 }
 

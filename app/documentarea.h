@@ -11,14 +11,19 @@ struct Project;
 
 namespace iec::editors {
 class CodeEditor;
-}
+class DeclarationEditor;
+} // namespace iec::editors
 
 namespace iec::app {
 
+class UndoStacks;
+
 // The tabs in the middle of the window: one per open POU body, action or transition. Text bodies
 // open in the ST/IL editor, which pushes what the user types into the model (the text document's
-// own undo stays the authority while typing, DESIGN.md). Tabs follow the model: a renamed POU
-// retitles its tabs, a removed one closes them.
+// own undo stays the authority while typing, DESIGN.md). A POU's own body has its declaration
+// editor above it in a splitter (actions and transitions declare nothing); its edits go on the
+// POU's undo stack. Tabs follow the model: a renamed POU retitles its tabs, a removed one closes
+// them.
 class DocumentArea : public QTabWidget
 {
     Q_OBJECT
@@ -30,6 +35,8 @@ public:
     QWidget *openBody(const model::BodyRef &ref);
     [[nodiscard]] QWidget *documentFor(const model::BodyRef &ref) const;
     [[nodiscard]] editors::CodeEditor *textEditorFor(const model::BodyRef &ref) const;
+    // The declaration editor of an open POU body; nullptr for actions, transitions, closed tabs.
+    [[nodiscard]] editors::DeclarationEditor *declarationEditorFor(const model::BodyRef &ref) const;
     [[nodiscard]] std::optional<model::BodyRef> currentBody() const;
     [[nodiscard]] std::optional<model::BodyRef> bodyAt(int index) const;
     // Sends text typed but not yet pushed (the editors wait for a pause) into the model.
@@ -58,9 +65,11 @@ private:
     void updateTextFromModel(const model::BodyRef &ref);
     [[nodiscard]] model::BodyRef refOf(int index) const;
     QWidget *createEditor(const model::BodyRef &ref);
+    QWidget *createBodyEditor(const model::BodyRef &ref);
     void closeDocument(int index);
 
     model::ProjectModel &m_projectModel;
+    UndoStacks *m_undoStacks;
     bool m_typingInClosedDocuments = false;
 };
 

@@ -767,6 +767,102 @@ Automatisch gespeichert: %2</translation>
     </message>
 </context>
 <context>
+    <name>iec::editors::DeclarationEditor</name>
+    <message>
+        <source>Table</source>
+        <translation>Tabelle</translation>
+    </message>
+    <message>
+        <source>Text</source>
+        <translation>Text</translation>
+    </message>
+    <message>
+        <source>Add Variable</source>
+        <translation>Variable hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Move Up</source>
+        <translation>Nach oben</translation>
+    </message>
+    <message>
+        <source>Move Down</source>
+        <translation>Nach unten</translation>
+    </message>
+    <message>
+        <source>Row %1: %2</source>
+        <translation>Zeile %1: %2</translation>
+    </message>
+    <message>
+        <source>Line %1, column %2: %3</source>
+        <translation>Zeile %1, Spalte %2: %3</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::DeclarationRows</name>
+    <message>
+        <source>&quot;%1&quot; is not a variable class.</source>
+        <translation>&quot;%1&quot; ist keine Variablenklasse.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a data type.</source>
+        <translation>&quot;%1&quot; ist kein Datentyp.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an initial value for %2.</source>
+        <translation>&quot;%1&quot; ist kein Initialwert für %2.</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::DeclarationTableModel</name>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Class</source>
+        <translation>Klasse</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <source>Initial Value</source>
+        <translation>Initialwert</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Kommentar</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::DeclarationText</name>
+    <message>
+        <source>VAR_ACCESS and VAR_CONFIG belong in a configuration, not in a POU.</source>
+        <translation>VAR_ACCESS und VAR_CONFIG gehören in eine Konfiguration, nicht in einen Baustein.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a valid name: use letters, digits and single underscores, and no keyword.</source>
+        <translation>&quot;%1&quot; ist kein gültiger Name: verwenden Sie Buchstaben, Ziffern und einzelne Unterstriche, und kein Schlüsselwort.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an address such as %IX0.0, %QW3 or %MD10.</source>
+        <translation>&quot;%1&quot; ist keine Adresse wie %IX0.0, %QW3 oder %MD10.</translation>
+    </message>
+    <message>
+        <source>%1 is declared twice.</source>
+        <translation>%1 ist doppelt deklariert.</translation>
+    </message>
+</context>
+<context>
     <name>iec::editors::EnumPage</name>
     <message>
         <source>Name</source>

@@ -767,6 +767,102 @@ Autosaved: %2</source>
     </message>
 </context>
 <context>
+    <name>iec::editors::DeclarationEditor</name>
+    <message>
+        <source>Table</source>
+        <translation>表格</translation>
+    </message>
+    <message>
+        <source>Text</source>
+        <translation>文本</translation>
+    </message>
+    <message>
+        <source>Add Variable</source>
+        <translation>添加变量</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>删除</translation>
+    </message>
+    <message>
+        <source>Move Up</source>
+        <translation>上移</translation>
+    </message>
+    <message>
+        <source>Move Down</source>
+        <translation>下移</translation>
+    </message>
+    <message>
+        <source>Row %1: %2</source>
+        <translation>第 %1 行：%2</translation>
+    </message>
+    <message>
+        <source>Line %1, column %2: %3</source>
+        <translation>第 %1 行，第 %2 列：%3</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::DeclarationRows</name>
+    <message>
+        <source>&quot;%1&quot; is not a variable class.</source>
+        <translation>&quot;%1&quot; 不是变量类别。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a data type.</source>
+        <translation>&quot;%1&quot; 不是数据类型。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an initial value for %2.</source>
+        <translation>&quot;%1&quot; 不是 %2 的初始值。</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::DeclarationTableModel</name>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Class</source>
+        <translation>类别</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>类型</translation>
+    </message>
+    <message>
+        <source>Initial Value</source>
+        <translation>初始值</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>地址</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>注释</translation>
+    </message>
+</context>
+<context>
+    <name>iec::editors::DeclarationText</name>
+    <message>
+        <source>VAR_ACCESS and VAR_CONFIG belong in a configuration, not in a POU.</source>
+        <translation>VAR_ACCESS 和 VAR_CONFIG 属于配置，而不属于 POU。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a valid name: use letters, digits and single underscores, and no keyword.</source>
+        <translation>&quot;%1&quot; 不是有效的名称：请使用字母、数字和单个下划线，且不能是关键字。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an address such as %IX0.0, %QW3 or %MD10.</source>
+        <translation>&quot;%1&quot; 不是地址(例如 %IX0.0、%QW3 或 %MD10)。</translation>
+    </message>
+    <message>
+        <source>%1 is declared twice.</source>
+        <translation>%1 被声明了两次。</translation>
+    </message>
+</context>
+<context>
     <name>iec::editors::EnumPage</name>
     <message>
         <source>Name</source>

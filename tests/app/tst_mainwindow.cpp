@@ -10,7 +10,10 @@
 #include "app/recoverymanager.h"
 #include "app/settingsdialog.h"
 #include "app/undostacks.h"
+#include "editors/declarations/declarationeditor.h"
+#include "editors/declarations/declarationtablemodel.h"
 #include "editors/text/codeeditor.h"
+#include "editors/text/texteditorwidget.h"
 #include "model/plcopen/reader.h"
 #include "model/projectmodel.h"
 
@@ -21,6 +24,7 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
+#include <QSplitter>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
@@ -53,6 +57,7 @@ private Q_SLOTS:
     void editUndoWorksOnTypingOrOnTheActiveStack();
     void renameKeepsTypingNotYetPushed();
     void windowMenuListsAndCyclesDocuments();
+    void declarationsAreAboveThePouBody();
     void recentFilesKeepOrderAndCap();
     void recentFileThatIsGoneIsRemoved();
     void examplesAreListedAndOpenUntitled();
@@ -723,6 +728,50 @@ void TestMainWindow::recoveryOlderThanItsProjectIsNotOffered()
     QVERIFY(file.setFileTime(QDateTime::currentDateTime().addSecs(60), QFileDevice::FileModificationTime));
     file.close();
     QVERIFY(RecoveryManager::pendingRecoveries().isEmpty());
+}
+
+void TestMainWindow::declarationsAreAboveThePouBody()
+{
+    MainWindow window;
+    QVERIFY(window.openProject(kFirstSteps));
+    const iec::model::PouId main = pouNamed(window, QStringLiteral("Main"));
+    auto *splitter = qobject_cast<QSplitter *>(window.documents().openBody({main, {}, {}}));
+    QVERIFY(splitter);
+    QCOMPARE(splitter->orientation(), Qt::Vertical);
+    auto *declarations = qobject_cast<iec::editors::DeclarationEditor *>(splitter->widget(0));
+    QVERIFY(declarations);
+    QCOMPARE(window.documents().declarationEditorFor({main, {}, {}}), declarations);
+    QVERIFY(qobject_cast<iec::editors::TextEditorWidget *>(splitter->widget(1)));
+
+    iec::editors::DeclarationTableModel *table = declarations->tableModel();
+    QStringList names;
+    for (const iec::editors::DeclarationRow &row : table->rows())
+        names << row.name;
+    QCOMPARE(names, (QStringList {QStringLiteral("Pulse"), QStringLiteral("Blink"), QStringLiteral("Count")}));
+
+    // An edit goes on the POU's stack as one step, and makes the project modified.
+    const iec::model::Project opened = window.projectModel().project();
+    QVERIFY(table->setData(table->index(2, int(iec::editors::DeclarationColumn::InitialValue)), QStringLiteral("3")));
+    QUndoStack &stack = window.undoStacks().pouStack(main);
+    QCOMPARE(stack.count(), 1);
+    QCOMPARE(window.projectModel().findVariable(main, QStringLiteral("Count"))->initialValue,
+        iec::model::Value {iec::model::SimpleValue {QStringLiteral("3")}});
+    QVERIFY(window.hasUnsavedChanges());
+    stack.undo();
+    QVERIFY(window.projectModel().project() == opened);
+    QVERIFY(!window.hasUnsavedChanges());
+
+    // A chart's placeholder has the declarations too; its action declares nothing of its own.
+    ProjectCommands &commands = window.projectCommands();
+    const auto chart = commands.addPou({.name = QStringLiteral("Chart"), .language = iec::model::BodyLanguage::SFC});
+    QVERIFY(chart);
+    const auto action = commands.addPouPart(*chart, {.name = QStringLiteral("Fill")});
+    QVERIFY(action);
+    QVERIFY(qobject_cast<QSplitter *>(window.documents().openBody({*chart, {}, {}})));
+    QVERIFY(window.documents().declarationEditorFor({*chart, {}, {}}));
+    QVERIFY(qobject_cast<iec::editors::TextEditorWidget *>(window.documents().openBody(*action)));
+    QVERIFY(!window.documents().declarationEditorFor(*action));
+    QVERIFY(window.documents().textEditorFor(*action));
 }
 
 QTEST_MAIN(TestMainWindow)
