@@ -57,10 +57,9 @@ bool NameRules::isIdentifier(const QString &name)
 
 std::optional<QString> NameRules::identifierError(const QString &name)
 {
-    static const QRegularExpression identifier(QStringLiteral("^(?:[A-Za-z]|_[A-Za-z0-9])(?:_?[A-Za-z0-9])*$"));
     if (name.isEmpty())
         return tr("Enter a name.");
-    if (!identifier.match(name).hasMatch())
+    if (!interp::hasIdentifierShape(name))
         return tr("\"%1\" is not an IEC identifier: use letters, digits and single underscores, starting with a "
                   "letter or an underscore and not ending with an underscore.")
             .arg(name);

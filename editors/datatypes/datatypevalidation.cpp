@@ -253,11 +253,9 @@ std::vector<FormError> DataTypeValidator::validate(const DataTypeForm &form, con
 
 std::optional<QString> DataTypeValidator::identifierError(const QString &name)
 {
-    // IEC 61131-3: a letter or '_' first, then letters, digits and single underscores, no '_' last.
-    static const QRegularExpression identifier(QStringLiteral("^(?:[A-Za-z]|_[A-Za-z0-9])(?:_?[A-Za-z0-9])*$"));
     if (name.isEmpty())
         return tr("Enter a name.");
-    if (!identifier.match(name).hasMatch())
+    if (!interp::hasIdentifierShape(name))
         return tr("\"%1\" is not an IEC identifier: use letters, digits and single underscores, starting with a "
                   "letter or an underscore and not ending with an underscore.")
             .arg(name);

@@ -252,9 +252,7 @@ bool isValidAddress(const QString &address)
 
 bool isValidIdentifier(const QString &name)
 {
-    static const QRegularExpression pattern(QStringLiteral("^[A-Za-z_][A-Za-z0-9_]*$"));
-    return pattern.match(name).hasMatch() && !name.contains(QStringLiteral("__")) && !interp::isKeyword(name)
-        && !interp::isTypeName(name);
+    return interp::isIecIdentifier(name);
 }
 
 } // namespace iec::editors

@@ -13,27 +13,167 @@ namespace {
 
 // Sorted, upper case. The IL operators are kept apart because ST treats them as names.
 constexpr std::string_view kKeywords[] = {
-    "ACTION", "AND", "ARRAY", "AT", "BY", "CASE", "CONFIGURATION", "CONSTANT", "CONTINUE", "DO", "ELSE", "ELSIF",
-    "END_ACTION", "END_CASE", "END_CONFIGURATION", "END_FOR", "END_FUNCTION", "END_FUNCTION_BLOCK", "END_IF",
-    "END_PROGRAM", "END_REPEAT", "END_RESOURCE", "END_STEP", "END_STRUCT", "END_TRANSITION", "END_TYPE", "END_VAR",
-    "END_WHILE", "EXIT", "FALSE", "FOR", "FROM", "FUNCTION", "FUNCTION_BLOCK", "F_EDGE", "IF", "INITIAL_STEP",
-    "INTERVAL", "MOD", "NON_RETAIN", "NOT", "OF", "ON", "OR", "PERSISTENT", "PRIORITY", "PROGRAM", "READ_ONLY",
-    "READ_WRITE", "REPEAT", "RESOURCE", "RETAIN", "RETURN", "R_EDGE", "SINGLE", "STEP", "STRUCT", "TASK", "THEN",
-    "TO", "TRANSITION", "TRUE", "TYPE", "UNTIL", "VAR", "VAR_ACCESS", "VAR_CONFIG", "VAR_EXTERNAL", "VAR_GLOBAL",
-    "VAR_INPUT", "VAR_IN_OUT", "VAR_OUTPUT", "VAR_TEMP", "WHILE", "WITH", "XOR",
+    "ACTION",
+    "AND",
+    "ARRAY",
+    "AT",
+    "BY",
+    "CASE",
+    "CONFIGURATION",
+    "CONSTANT",
+    "CONTINUE",
+    "DO",
+    "ELSE",
+    "ELSIF",
+    "END_ACTION",
+    "END_CASE",
+    "END_CONFIGURATION",
+    "END_FOR",
+    "END_FUNCTION",
+    "END_FUNCTION_BLOCK",
+    "END_IF",
+    "END_PROGRAM",
+    "END_REPEAT",
+    "END_RESOURCE",
+    "END_STEP",
+    "END_STRUCT",
+    "END_TRANSITION",
+    "END_TYPE",
+    "END_VAR",
+    "END_WHILE",
+    "EXIT",
+    "FALSE",
+    "FOR",
+    "FROM",
+    "FUNCTION",
+    "FUNCTION_BLOCK",
+    "F_EDGE",
+    "IF",
+    "INITIAL_STEP",
+    "INTERVAL",
+    "MOD",
+    "NON_RETAIN",
+    "NOT",
+    "OF",
+    "ON",
+    "OR",
+    "PERSISTENT",
+    "PRIORITY",
+    "PROGRAM",
+    "READ_ONLY",
+    "READ_WRITE",
+    "REPEAT",
+    "RESOURCE",
+    "RETAIN",
+    "RETURN",
+    "R_EDGE",
+    "SINGLE",
+    "STEP",
+    "STRUCT",
+    "TASK",
+    "THEN",
+    "TO",
+    "TRANSITION",
+    "TRUE",
+    "TYPE",
+    "UNTIL",
+    "VAR",
+    "VAR_ACCESS",
+    "VAR_CONFIG",
+    "VAR_EXTERNAL",
+    "VAR_GLOBAL",
+    "VAR_INPUT",
+    "VAR_IN_OUT",
+    "VAR_OUTPUT",
+    "VAR_TEMP",
+    "WHILE",
+    "WITH",
+    "XOR",
 };
 
 constexpr std::string_view kIlOperators[] = {
-    "ADD", "AND", "ANDN", "CAL", "CALC", "CALCN", "DIV", "EQ", "GE", "GT", "JMP", "JMPC", "JMPCN", "LD", "LDN", "LE",
-    "LT", "MOD", "MUL", "NE", "NOT", "OR", "ORN", "R", "RET", "RETC", "RETCN", "S", "ST", "STN", "SUB", "XOR", "XORN",
+    "ADD",
+    "AND",
+    "ANDN",
+    "CAL",
+    "CALC",
+    "CALCN",
+    "DIV",
+    "EQ",
+    "GE",
+    "GT",
+    "JMP",
+    "JMPC",
+    "JMPCN",
+    "LD",
+    "LDN",
+    "LE",
+    "LT",
+    "MOD",
+    "MUL",
+    "NE",
+    "NOT",
+    "OR",
+    "ORN",
+    "R",
+    "RET",
+    "RETC",
+    "RETCN",
+    "S",
+    "ST",
+    "STN",
+    "SUB",
+    "XOR",
+    "XORN",
 };
 
 constexpr std::string_view kTypeNames[] = {
-    "ANY", "ANY_BIT", "ANY_DATE", "ANY_DERIVED", "ANY_ELEMENTARY", "ANY_INT", "ANY_MAGNITUDE", "ANY_NUM", "ANY_REAL",
-    "ANY_STRING", "BOOL", "BYTE", "CHAR", "DATE", "DATE_AND_TIME", "DINT", "DT", "DWORD", "INT", "LDATE",
-    "LDATE_AND_TIME", "LDT", "LINT", "LREAL", "LTIME", "LTIME_OF_DAY", "LTOD", "LWORD", "REAL", "SINT", "STRING",
-    "TIME", "TIME_OF_DAY", "TOD", "UDINT", "UINT", "ULINT", "USINT", "WCHAR", "WORD", "WSTRING", "ANY_SIGNED",
-    "ANY_UNSIGNED", "ANY_DURATION", "ANY_CHAR", "ANY_CHARS",
+    "ANY",
+    "ANY_BIT",
+    "ANY_DATE",
+    "ANY_DERIVED",
+    "ANY_ELEMENTARY",
+    "ANY_INT",
+    "ANY_MAGNITUDE",
+    "ANY_NUM",
+    "ANY_REAL",
+    "ANY_STRING",
+    "BOOL",
+    "BYTE",
+    "CHAR",
+    "DATE",
+    "DATE_AND_TIME",
+    "DINT",
+    "DT",
+    "DWORD",
+    "INT",
+    "LDATE",
+    "LDATE_AND_TIME",
+    "LDT",
+    "LINT",
+    "LREAL",
+    "LTIME",
+    "LTIME_OF_DAY",
+    "LTOD",
+    "LWORD",
+    "REAL",
+    "SINT",
+    "STRING",
+    "TIME",
+    "TIME_OF_DAY",
+    "TOD",
+    "UDINT",
+    "UINT",
+    "ULINT",
+    "USINT",
+    "WCHAR",
+    "WORD",
+    "WSTRING",
+    "ANY_SIGNED",
+    "ANY_UNSIGNED",
+    "ANY_DURATION",
+    "ANY_CHAR",
+    "ANY_CHARS",
 };
 
 // Upper-cases an ASCII word; anything else makes it match no table entry.
@@ -50,8 +190,7 @@ std::string upperAscii(QStringView word)
     return out;
 }
 
-template<size_t N>
-bool inTable(const std::string_view (&table)[N], const std::string &upper)
+template<size_t N> bool inTable(const std::string_view (&table)[N], const std::string &upper)
 {
     return std::find(std::begin(table), std::end(table), upper) != std::end(table);
 }
@@ -80,9 +219,30 @@ bool isSpace(QChar c)
 }
 
 // Operators, longest first so ":=" wins over ":".
-constexpr std::array<std::u16string_view, 23> kOperators{{
-    u":=", u"=>", u"**", u"<>", u"<=", u">=", u"..", u"+", u"-", u"*", u"/", u"=", u"<", u">", u"&", u"(", u")",
-    u"[", u"]", u",", u";", u":", u".",
+constexpr std::array<std::u16string_view, 23> kOperators {{
+    u":=",
+    u"=>",
+    u"**",
+    u"<>",
+    u"<=",
+    u">=",
+    u"..",
+    u"+",
+    u"-",
+    u"*",
+    u"/",
+    u"=",
+    u"<",
+    u">",
+    u"&",
+    u"(",
+    u")",
+    u"[",
+    u"]",
+    u",",
+    u";",
+    u":",
+    u".",
 }};
 
 class Lexer
@@ -91,8 +251,7 @@ public:
     Lexer(QStringView text, LexState &state)
         : m_text(text)
         , m_state(state)
-    {
-    }
+    { }
 
     std::vector<Token> run()
     {
@@ -200,8 +359,7 @@ private:
     }
 
     // Consumes characters while `accept` holds.
-    template<typename Accept>
-    void skipWhile(Accept accept)
+    template<typename Accept> void skipWhile(Accept accept)
     {
         while (m_pos < m_text.size() && accept(m_text[m_pos]))
             ++m_pos;
@@ -232,7 +390,9 @@ private:
             pushChecked(decodeDate(body()).has_value(), TokenKind::DateTimeLiteral, start);
             return;
         case LiteralFamily::TimeOfDay:
-            skipWhile([](QChar c) { return isDigit(c) || c == QLatin1Char('_') || c == QLatin1Char(':') || c == QLatin1Char('.'); });
+            skipWhile([](QChar c) {
+                return isDigit(c) || c == QLatin1Char('_') || c == QLatin1Char(':') || c == QLatin1Char('.');
+            });
             pushChecked(decodeTimeOfDay(body()).has_value(), TokenKind::DateTimeLiteral, start);
             return;
         case LiteralFamily::DateAndTime:
@@ -437,6 +597,33 @@ bool isIlOperator(QStringView word)
 {
     const std::string upper = upperAscii(word);
     return inTable(kIlOperators, upper);
+}
+
+bool hasIdentifierShape(QStringView word)
+{
+    if (word.isEmpty() || word.back() == QLatin1Char('_'))
+        return false;
+    const auto isAsciiLetter = [](QChar c) {
+        return (c >= QLatin1Char('A') && c <= QLatin1Char('Z')) || (c >= QLatin1Char('a') && c <= QLatin1Char('z'));
+    };
+    const auto isAsciiDigit = [](QChar c) { return c >= QLatin1Char('0') && c <= QLatin1Char('9'); };
+    if (!isAsciiLetter(word.front()) && word.front() != QLatin1Char('_'))
+        return false;
+    for (qsizetype i = 1; i < word.size(); ++i) {
+        const QChar c = word[i];
+        if (c == QLatin1Char('_')) {
+            if (word[i - 1] == QLatin1Char('_'))
+                return false;
+        } else if (!isAsciiLetter(c) && !isAsciiDigit(c)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+bool isIecIdentifier(QStringView word)
+{
+    return hasIdentifierShape(word) && !isKeyword(word) && !isTypeName(word);
 }
 
 } // namespace iec::interp

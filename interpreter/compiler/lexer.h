@@ -56,4 +56,10 @@ bool isTypeName(QStringView word);
 // LD, ST, S, R, ADD, JMPC, ...: keywords in IL, but ordinary names (ADD(1, 2), Flipflop.R) in ST.
 bool isIlOperator(QStringView word);
 
+// The shape of an IEC 61131-3 identifier: a letter or '_' first, then letters, digits and single
+// underscores, no '_' last. isIecIdentifier also refuses keywords and elementary type names. The
+// one rule every name check of the IDE (POUs, data types, variables) uses.
+bool hasIdentifierShape(QStringView word);
+bool isIecIdentifier(QStringView word);
+
 } // namespace iec::interp

@@ -44,6 +44,8 @@ class TestLexer : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
+    void identifiers_data();
+    void identifiers();
     void tokens_data();
     void tokens();
     void lineStates_data();
@@ -340,6 +342,32 @@ void TestLexer::wordClasses()
     QVERIFY(isIlOperator(u"ST"));
     QVERIFY(isIlOperator(u"r"));
     QVERIFY(!isIlOperator(u"IF"));
+}
+
+void TestLexer::identifiers_data()
+{
+    QTest::addColumn<QString>("word");
+    QTest::addColumn<bool>("shape");
+    QTest::addColumn<bool>("identifier");
+    QTest::newRow("plain") << QStringLiteral("Motor1") << true << true;
+    QTest::newRow("leading underscore") << QStringLiteral("_x") << true << true;
+    QTest::newRow("single underscores") << QStringLiteral("a_b_c") << true << true;
+    QTest::newRow("double underscore") << QStringLiteral("a__b") << false << false;
+    QTest::newRow("trailing underscore") << QStringLiteral("a_") << false << false;
+    QTest::newRow("digit first") << QStringLiteral("1a") << false << false;
+    QTest::newRow("non-ASCII") << QStringLiteral("Motör") << false << false;
+    QTest::newRow("empty") << QString() << false << false;
+    QTest::newRow("keyword") << QStringLiteral("end_if") << true << false;
+    QTest::newRow("type name") << QStringLiteral("INT") << true << false;
+}
+
+void TestLexer::identifiers()
+{
+    QFETCH(QString, word);
+    QFETCH(bool, shape);
+    QFETCH(bool, identifier);
+    QCOMPARE(iec::interp::hasIdentifierShape(word), shape);
+    QCOMPARE(iec::interp::isIecIdentifier(word), identifier);
 }
 
 QTEST_GUILESS_MAIN(TestLexer)
