@@ -2,6 +2,8 @@
 
 #include "interpreter/compiler/parser.h"
 #include "interpreter/frontend/iecprinter.h"
+#include "interpreter/graphical/graphicallowering.h"
+#include "interpreter/sfc/sfclowering.h"
 
 namespace iec::interp::frontend {
 
@@ -31,22 +33,30 @@ template<typename T> void moveAppend(std::vector<T> &to, std::vector<T> &from)
     to.insert(to.end(), std::make_move_iterator(from.begin()), std::make_move_iterator(from.end()));
 }
 
-ast::Body parseBody(const model::Body &body, const QString &pou, Diagnostics &diagnostics)
+// ST and IL are parsed; LD and FBD are lowered to statements (graphical/). `owner` names the
+// body in diagnostics: the POU, or Pou.Action for an action.
+ast::Body lowerBody(const model::Body &body, ast::Pou &pou, const QString &owner, Diagnostics &diagnostics)
 {
     ast::Body result;
     switch (body.language()) {
     case model::BodyLanguage::ST:
         result.language = ast::Language::ST;
-        result.statements = parseStBody(body.text(), pou, diagnostics);
+        result.statements = parseStBody(body.text(), owner, diagnostics);
         break;
     case model::BodyLanguage::IL:
         result.language = ast::Language::IL;
-        result.il = parseIlBody(body.text(), pou, diagnostics);
+        result.il = parseIlBody(body.text(), owner, diagnostics);
         break;
     case model::BodyLanguage::LD:
-    case model::BodyLanguage::FBD:
+    case model::BodyLanguage::FBD: {
+        result.language = ast::Language::ST;
+        graphical::LoweringContext context {pou, owner, diagnostics};
+        result.statements = graphical::lowerBody(body, context);
+        break;
+    }
     case model::BodyLanguage::SFC:
-        break; // an empty body; reportGraphicalBodies says why
+        result.language = ast::Language::ST; // only a POU body can be a chart; see addPou
+        break;
     }
     return result;
 }
@@ -58,36 +68,23 @@ void addPou(const model::Pou &pou, ast::CompilationUnit &unit, Diagnostics &diag
         return; // the name itself could not be parsed; already reported
     ast::Pou result = std::move(declared.pous.front());
     result.name = pou.name;
-    if (const model::Body *body = pou.body())
-        result.body = parseBody(*body, pou.name, diagnostics);
-    for (const model::PouAction &action : pou.actions) {
-        if (action.body.isGraphical())
-            continue; // actions are not called by the compiler yet; SFC will run them
-        ast::SfcAction parsed;
-        parsed.name = action.name;
-        // Lines count in the action's own text, so its diagnostics name it: Main.Reset:2:5.
-        parsed.body = parseBody(action.body, pou.name + QLatin1Char('.') + action.name, diagnostics);
-        result.actions.push_back(std::move(parsed));
+    const model::Body *body = pou.body();
+    if (body && body->language() == model::BodyLanguage::SFC) {
+        // The chart's lowering runs its actions and transitions itself.
+        result.body.language = ast::Language::ST;
+        sfc::lowerChart(pou, result, diagnostics);
+    } else {
+        if (body)
+            result.body = lowerBody(*body, result, pou.name, diagnostics);
+        for (const model::PouAction &action : pou.actions) {
+            ast::SfcAction parsed;
+            parsed.name = action.name;
+            // Lines count in the action's own text, so its diagnostics name it: Main.Reset:2:5.
+            parsed.body = lowerBody(action.body, result, pou.name + QLatin1Char('.') + action.name, diagnostics);
+            result.actions.push_back(std::move(parsed));
+        }
     }
     unit.pous.push_back(std::move(result));
-}
-
-// One error per POU whose body is LD, FBD or SFC: the compiler cannot lower them yet. Returns
-// their names.
-QStringList reportGraphicalBodies(const model::Project &project, Diagnostics &diagnostics)
-{
-    QStringList names;
-    for (const model::Pou &pou : project.types.pous) {
-        const model::Body *body = pou.body();
-        if (!body || !body->isGraphical())
-            continue;
-        diagnostics.error(pou.name, {},
-            QStringLiteral("%1 is written in %2, which this version cannot run yet.")
-                .arg(pou.name, languageName(body->language())),
-            QStringLiteral("write it in ST or IL to run it now"));
-        names << pou.name;
-    }
-    return names;
 }
 
 // The text of the project (declarations and ST/IL bodies) as the compiler's input.
@@ -116,7 +113,6 @@ ProjectUnit buildUnit(const model::Project &project, Diagnostics &diagnostics)
     ProjectUnit result {parseProjectText(project, parsing), false};
     result.parseErrors = parsing.hasErrors();
     diagnostics.append(parsing);
-    result.notRunnable = reportGraphicalBodies(project, diagnostics);
     return result;
 }
 
@@ -125,14 +121,9 @@ std::shared_ptr<const Module> compileUnit(
 {
     if (unit.parseErrors)
         return nullptr;
-    // A POU that cannot run yet (an error already in `diagnostics`) does not stop the others
-    // from being checked, but nothing runs.
     Diagnostics compiling;
     std::shared_ptr<const Module> module = compile({&unit.unit}, compiling, options);
-    for (const Diagnostic &d : compiling.all()) {
-        if (!unit.notRunnable.contains(d.pou, Qt::CaseInsensitive))
-            add(diagnostics, d, d.pou);
-    }
+    diagnostics.append(compiling);
     return diagnostics.hasErrors() ? nullptr : module;
 }
 

@@ -17,22 +17,20 @@
 //   what `iecstudio-cli convert FILE OUT.st` shows and the declaration editor will show.
 // - ST and IL bodies are parsed with parseStBody / parseIlBody, so their diagnostics carry
 //   (POU, line, column) counted in the body text as the editor shows it.
-// - LD, FBD and SFC bodies cannot run yet: one error per such POU names its language.
+// - LD and FBD bodies are lowered to statements (graphical/graphicallowering.h), SFC charts to
+//   statements and hidden variables (sfc/sfclowering.h); their diagnostics carry (POU, localId).
 namespace iec::interp::frontend {
 
 struct ProjectUnit {
     ast::CompilationUnit unit;
     bool parseErrors = false; // some text did not parse: the unit is not worth type checking
-    QStringList notRunnable; // POUs in LD, FBD or SFC: already reported, their bodies are empty
 };
 
-// Every diagnostic goes to `diagnostics`, including one error per POU in LD, FBD or SFC.
+// Every diagnostic goes to `diagnostics`; lowering errors of graphical bodies count as parse errors.
 ProjectUnit buildUnit(const model::Project &project, Diagnostics &diagnostics);
 
 // Compiles a unit unless it had parse errors (like compileText: one typo gives one message, not
-// a cascade of type errors). A POU that cannot run yet gets its one message from buildUnit and no
-// others (its declarations are checked once its language can be compiled). Returns nullptr when
-// there are errors, all of them in `diagnostics`.
+// a cascade of type errors). Returns nullptr when there are errors, all of them in `diagnostics`.
 std::shared_ptr<const Module> compileUnit(
     const ProjectUnit &unit, Diagnostics &diagnostics, const CompileOptions &options = {});
 

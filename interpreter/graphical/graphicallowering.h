@@ -1,0 +1,38 @@
+#pragma once
+
+#include "interpreter/compiler/ast.h"
+#include "interpreter/compiler/diagnostics.h"
+
+#include "model/body.h"
+#include "model/graphics.h"
+
+#include <optional>
+#include <vector>
+
+// Lowering of LD and FBD/CFC networks to the compiler's statements (ast.h), so graphical POUs
+// run on the same VM as ST. Hidden state the networks need (edge detectors for P/N contacts and
+// coils, instances of ADD-like blocks are not needed, but R_TRIG/F_TRIG are) is declared as extra
+// variables of the POU being lowered; their names start with "__" so they can never clash with
+// a user's identifier.
+//
+// Diagnostics carry (owner, localId): owner is the POU name, or "Pou.Action" / "Pou.Transition"
+// for a body that belongs to an action or a transition.
+namespace iec::interp::graphical {
+
+struct LoweringContext {
+    ast::Pou &pou;          // receives hidden VAR declarations
+    QString owner;          // the name diagnostics are filed under
+    Diagnostics &diagnostics;
+};
+
+// The statements of an LD or FBD body, in execution order (LD: networks top to bottom, left to
+// right; FBD: executionOrderId, else data flow).
+std::vector<ast::Stmt> lowerBody(const model::Body &body, LoweringContext &context);
+
+// The value that flows into `input` inside `body`: used by SFC charts whose transition
+// conditions are wired to FBD/LD elements placed in the chart (Beremiz, CODESYS). nullopt (and a
+// diagnostic) when the input is not connected or its source cannot be lowered.
+std::optional<ast::Expr> lowerInput(const model::Body &body, const model::ConnectionPointIn &input,
+    LoweringContext &context);
+
+} // namespace iec::interp::graphical

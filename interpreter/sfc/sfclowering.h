@@ -1,0 +1,18 @@
+#pragma once
+
+#include "interpreter/compiler/ast.h"
+#include "interpreter/compiler/diagnostics.h"
+
+#include "model/pou.h"
+
+// Lowering of an SFC chart (model::SfcBody of a POU, with its actions and transitions) to the
+// compiler's statements: steps, transitions, action control and the implicit variables become
+// variables and statements of the POU, so a chart runs on the same VM as ST and its state is
+// readable by name (Main.Step1.X, Main.Step1.T). docs/sfc.md describes the cycle order.
+namespace iec::interp::sfc {
+
+// Appends the chart's statements to `result.body.statements` and its hidden variables to
+// `result.sections`. Structural errors are reported on the element (POU, localId).
+void lowerChart(const model::Pou &pou, ast::Pou &result, Diagnostics &diagnostics);
+
+} // namespace iec::interp::sfc

@@ -1,0 +1,52 @@
+#pragma once
+
+#include "model/project.h"
+
+#include <QString>
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace iec::interp {
+class Runtime;
+}
+
+// What the online mode shows of a running chart: which steps and actions are active and how long
+// each active step has been active. Read from the runtime through the chart's implicit variables,
+// so it needs nothing but the symbol table.
+namespace iec::interp::sfc {
+
+struct StepState {
+    QString name;
+    quint64 localId = 0;
+    bool active = false;
+    std::int64_t elapsedNs = 0; // <step>.T; 0 when inactive
+};
+
+struct ActionState {
+    QString name;
+    bool active = false; // <action>.x: the action's body ran (or its variable is TRUE) this cycle
+};
+
+struct TransitionState {
+    quint64 localId = 0;
+    bool condition = false; // the condition was TRUE when last evaluated
+};
+
+struct ChartState {
+    QString instance; // "Main", "Main.Filler" (the instance path of the POU that holds the chart)
+    QString pou;      // the POU type
+    std::vector<StepState> steps;
+    std::vector<ActionState> actions;
+    std::vector<TransitionState> transitions;
+};
+
+// The state of the chart of SFC POU `pou` in instance `instancePath`; nullopt when the runtime
+// has no such instance or the POU is not SFC.
+std::optional<ChartState> chartState(const Runtime &runtime, const model::Pou &pou, const QString &instancePath);
+
+// Every SFC program instance the runtime runs (FB instances are reached by path with chartState).
+std::vector<ChartState> programChartStates(const Runtime &runtime, const model::Project &project);
+
+} // namespace iec::interp::sfc
