@@ -230,6 +230,18 @@ int ProjectModel::dataTypeIndex(const QString &name) const
     return indexByName(m_project.types.dataTypes, name);
 }
 
+// ---- instances ----------------------------------------------------------------------------
+
+bool ProjectModel::setInstances(const Instances &instances)
+{
+    if (m_project.instances == instances)
+        return false;
+    m_project.instances = instances;
+    touch();
+    Q_EMIT instancesChanged();
+    return true;
+}
+
 // ---- declarations -------------------------------------------------------------------------
 
 bool ProjectModel::addVariable(PouId id, VarListKind kind, Variable variable, int index)

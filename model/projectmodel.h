@@ -53,6 +53,11 @@ public:
     bool changeDataType(const QString &name, const DataTypeDecl &type); // may rename too
     [[nodiscard]] int dataTypeIndex(const QString &name) const;
 
+    // ---- configurations, resources, tasks and program instances
+    // Replaces them as a whole (they are few and edited together: a rename of a program changes
+    // the pouInstance typeNames of every task that runs it).
+    bool setInstances(const Instances &instances);
+
     // ---- declarations of a POU
     // Adds to the first var list of that kind (a new list when there is none) at `index`.
     bool addVariable(PouId pou, VarListKind kind, Variable variable, int index = -1);
@@ -89,6 +94,7 @@ Q_SIGNALS:
     void pouRenamed(iec::model::PouId id);
     void pouPartsChanged(iec::model::PouId id); // actions or transitions added, removed, renamed
     void dataTypesChanged();
+    void instancesChanged();
     void variablesChanged(iec::model::PouId id);
     void bodyTextChanged(const iec::model::BodyRef &ref);
     void elementsInserted(const iec::model::BodyRef &ref, const QList<quint64> &localIds);

@@ -1,6 +1,8 @@
 // Calls of functions, function blocks and standard functions.
 #include "interpreter/compiler/codegen.h"
 
+#include <QCoreApplication>
+
 namespace iec::interp::detail {
 
 using namespace ast;
@@ -52,6 +54,8 @@ void Codegen::noteCall(int callee, SourceLocation at)
 Value Codegen::compileCall(const Expr &call, bool asStatement, const Place *destination)
 {
     const Expr &callee = call.operands.front();
+    if (callAction(callee, call.callArgs, call.location, asStatement))
+        return {};
     std::optional<Place> instance;
     if (callee.kind == ExprKind::Member || callee.kind == ExprKind::Index) {
         instance = resolvePlace(callee);
@@ -65,6 +69,46 @@ Value Codegen::compileCall(const Expr &call, bool asStatement, const Place *dest
     return callNamed(callee.text, instance ? &*instance : nullptr, arguments(call.callArgs), call.location, asStatement, destination);
 }
 
+bool Codegen::callAction(const Expr &callee, const std::vector<ast::CallArg> &args, SourceLocation at, bool asStatement)
+{
+    if (!m_pou)
+        return false;
+    int action = -1;
+    Place instance;
+    if (callee.kind == ExprKind::Name) {
+        // Act(); inside the POU: a variable of the same name wins.
+        if (m_pou->kind == PouKind::Function || (m_pou->frame && m_pou->frame->member(callee.text)))
+            return false;
+        action = actionIndex(m_pou->index, callee.text);
+        instance.kind = Place::Kind::Direct;
+        instance.operand = kInstanceRelative; // the instance that is running
+    } else if (callee.kind == ExprKind::Member) {
+        // Inst.Act(); only through names and members, so that looking does not emit code.
+        const Expr *e = &callee.operands.front();
+        while (e->kind == ExprKind::Member)
+            e = &e->operands.front();
+        if (e->kind != ExprKind::Name)
+            return false;
+        instance = resolvePlace(callee.operands.front(), false);
+        if (instance.kind == Place::Kind::Invalid || !instance.type || instance.type->kind != TypeKind::FunctionBlock
+            || instance.type->member(callee.text))
+            return false;
+        action = actionIndex(instance.type->pou, callee.text);
+    }
+    if (action < 0)
+        return false;
+    if (!asStatement) {
+        error(at, QCoreApplication::translate("iec::interp::Compiler", "A function block call is a statement of its own."));
+        return true;
+    }
+    if (!args.empty()) {
+        error(at, QCoreApplication::translate("iec::interp::Compiler", "The action %1 takes no arguments.").arg(m_module->pous[size_t(action)].name));
+        return true;
+    }
+    instr(instance.kind == Place::Kind::Direct ? op::CallFb : op::CallFbPtr, instance.operand, 0, 0, 0, static_cast<std::uint16_t>(action));
+    return true;
+}
+
 Value Codegen::callNamed(const QString &name, const Place *callee, std::vector<Argument> args, SourceLocation at,
                          bool asStatement, const Place *destination)
 {
@@ -72,12 +116,12 @@ Value Codegen::callNamed(const QString &name, const Place *callee, std::vector<A
         if (callee->kind == Place::Kind::Invalid)
             return {};
         if (callee->type->kind != TypeKind::FunctionBlock) {
-            error(at, QStringLiteral("%1 is a %2, not a function block; it cannot be called.").arg(callee->text, typeName(callee->type)));
+            error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 is a %2, not a function block; it cannot be called.").arg(callee->text, typeName(callee->type)));
             return {};
         }
         if (!asStatement) {
-            error(at, QStringLiteral("A function block call is a statement of its own."),
-                  QStringLiteral("call %1(...); then read its outputs, e.g. %1.Q").arg(callee->text));
+            error(at, QCoreApplication::translate("iec::interp::Compiler", "A function block call is a statement of its own."),
+                  QCoreApplication::translate("iec::interp::Compiler", "call %1(...); then read its outputs, e.g. %1.Q").arg(callee->text));
             return {};
         }
         callFunctionBlock(*callee, args, at);
@@ -87,8 +131,8 @@ Value Codegen::callNamed(const QString &name, const Place *callee, std::vector<A
         PouInfo &pou = m_pous[size_t(index)];
         if (pou.kind == PouKind::Function)
             return callUserFunction(pou, args, at, destination);
-        error(at, pou.kind == PouKind::Program ? QStringLiteral("A program cannot be called from another POU; it runs in a task.")
-                                               : QStringLiteral("%1 is a function block type; declare an instance (e.g. inst : %1;) and call that.").arg(name));
+        error(at, pou.kind == PouKind::Program ? QCoreApplication::translate("iec::interp::Compiler", "A program cannot be called from another POU; it runs in a task.")
+                                               : QCoreApplication::translate("iec::interp::Compiler", "%1 is a function block type; declare an instance (e.g. inst : %1;) and call that.").arg(name));
         return {};
     }
     // Standard functions take their arguments as values.
@@ -96,7 +140,7 @@ Value Codegen::callNamed(const QString &name, const Place *callee, std::vector<A
     std::vector<QString> names;
     for (const Argument &a : args) {
         if (a.isOutput) {
-            error(a.location, QStringLiteral("%1 has no outputs to connect with '=>'.").arg(name));
+            error(a.location, QCoreApplication::translate("iec::interp::Compiler", "%1 has no outputs to connect with '=>'.").arg(name));
             return {};
         }
         values.push_back(a.value ? *a.value : compileExpr(*a.expr));
@@ -106,7 +150,7 @@ Value Codegen::callNamed(const QString &name, const Place *callee, std::vector<A
     }
     if (auto result = standardFunction(name.toUpper(), values, names, at, destination))
         return *result;
-    error(at, QStringLiteral("Unknown function '%1'.").arg(name));
+    error(at, QCoreApplication::translate("iec::interp::Compiler", "Unknown function '%1'.").arg(name));
     return {};
 }
 
@@ -148,33 +192,33 @@ void Codegen::callFunctionBlock(const Place &instance, const std::vector<Argumen
             if (next < positional.size())
                 m = positional[next++];
             else {
-                error(a.location, QStringLiteral("%1 takes only %2 input(s).").arg(typeName(fbType)).arg(positional.size()));
+                error(a.location, QCoreApplication::translate("iec::interp::Compiler", "%1 takes only %2 input(s).").arg(typeName(fbType)).arg(positional.size()));
                 return;
             }
         } else {
             m = fbType->member(a.name);
             if (!m || m->kind == VarKind::Local || m->kind == VarKind::Temp) {
-                error(a.location, QStringLiteral("%1 has no input or output called %2.").arg(typeName(fbType), a.name));
+                error(a.location, QCoreApplication::translate("iec::interp::Compiler", "%1 has no input or output called %2.").arg(typeName(fbType), a.name));
                 continue;
             }
         }
         if (a.isOutput) {
             if (m->kind != VarKind::Output) {
-                error(a.location, QStringLiteral("%1 is not an output of %2; connect inputs with ':='.").arg(m->name, typeName(fbType)));
+                error(a.location, QCoreApplication::translate("iec::interp::Compiler", "%1 is not an output of %2; connect inputs with ':='.").arg(m->name, typeName(fbType)));
                 continue;
             }
             outputs.push_back({m, &a});
             continue;
         }
         if (m->kind == VarKind::Output) {
-            error(a.location, QStringLiteral("%1 is an output of %2; connect it with '=>'.").arg(m->name, typeName(fbType)),
-                  QStringLiteral("write %1 => variable").arg(m->name));
+            error(a.location, QCoreApplication::translate("iec::interp::Compiler", "%1 is an output of %2; connect it with '=>'.").arg(m->name, typeName(fbType)),
+                  QCoreApplication::translate("iec::interp::Compiler", "write %1 => variable").arg(m->name));
             continue;
         }
         if (m->kind == VarKind::InOut) {
             const Place target = resolvePlace(*a.expr);
             if (target.kind != Place::Kind::Direct && target.kind != Place::Kind::Indirect) {
-                error(a.location, QStringLiteral("VAR_IN_OUT %1 needs a variable.").arg(m->name));
+                error(a.location, QCoreApplication::translate("iec::interp::Compiler", "VAR_IN_OUT %1 needs a variable.").arg(m->name));
                 continue;
             }
             Member slot = *m;
@@ -232,7 +276,7 @@ Value Codegen::callUserFunction(PouInfo &fn, const std::vector<Argument> &args, 
         const Member *m = nullptr;
         if (a.name.isEmpty()) {
             if (next >= fn.parameters.size()) {
-                error(a.location, QStringLiteral("%1 takes only %2 argument(s).").arg(fn.name).arg(fn.parameters.size()));
+                error(a.location, QCoreApplication::translate("iec::interp::Compiler", "%1 takes only %2 argument(s).").arg(fn.name).arg(fn.parameters.size()));
                 return {};
             }
             m = fn.parameters[next++];
@@ -240,13 +284,13 @@ Value Codegen::callUserFunction(PouInfo &fn, const std::vector<Argument> &args, 
             m = fn.frame->member(a.name);
             if (!m || (m->kind != VarKind::Input && m->kind != VarKind::InOut && m->kind != VarKind::Output)
                 || m->name.compare(fn.name, Qt::CaseInsensitive) == 0) {
-                error(a.location, QStringLiteral("%1 has no parameter called %2.").arg(fn.name, a.name));
+                error(a.location, QCoreApplication::translate("iec::interp::Compiler", "%1 has no parameter called %2.").arg(fn.name, a.name));
                 continue;
             }
         }
         if (a.isOutput || m->kind == VarKind::Output) {
             if (!a.isOutput || m->kind != VarKind::Output) {
-                error(a.location, QStringLiteral("Connect inputs of %1 with ':=' and outputs with '=>'.").arg(fn.name));
+                error(a.location, QCoreApplication::translate("iec::interp::Compiler", "Connect inputs of %1 with ':=' and outputs with '=>'.").arg(fn.name));
                 continue;
             }
             outputs.push_back({m, &a});
@@ -259,7 +303,7 @@ Value Codegen::callUserFunction(PouInfo &fn, const std::vector<Argument> &args, 
         if (m->kind == VarKind::InOut) {
             const Place target = a.expr ? resolvePlace(*a.expr) : Place{};
             if (target.kind != Place::Kind::Direct && target.kind != Place::Kind::Indirect) {
-                error(a.location, QStringLiteral("VAR_IN_OUT %1 needs a variable.").arg(m->name));
+                error(a.location, QCoreApplication::translate("iec::interp::Compiler", "VAR_IN_OUT %1 needs a variable.").arg(m->name));
                 continue;
             }
             std::uint32_t address = target.operand;
@@ -278,7 +322,7 @@ Value Codegen::callUserFunction(PouInfo &fn, const std::vector<Argument> &args, 
             continue;
         const Member *m = fn.parameters[k];
         if (m->kind == VarKind::InOut) {
-            error(at, QStringLiteral("%1 needs a variable for its VAR_IN_OUT %2.").arg(fn.name, m->name));
+            error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 needs a variable for its VAR_IN_OUT %2.").arg(fn.name, m->name));
             return {};
         }
         emitMove(fn.frameBase + m->offset, fn.templateOffset + m->offset, m->type);

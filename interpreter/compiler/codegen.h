@@ -120,6 +120,8 @@ public:
     Value read(const Place &place);
     std::optional<std::uint16_t> fusedIndexOp(const Place &place, bool load) const;
     void store(const Place &place, Value value, SourceLocation at);
+    // A value assigned to a subrange type: a constant is checked now, anything else at run time.
+    bool checkSubrange(const Value &value, const Type *type, SourceLocation at);
     Value coerce(Value value, const Type *to, SourceLocation at, const QString &context = {});
     Value convertExplicit(Value value, const Type *to, SourceLocation at, bool truncate = false);
     std::uint32_t materialize(const Value &value);
@@ -153,6 +155,9 @@ public:
     void callFunctionBlock(const Place &instance, const std::vector<Argument> &args, SourceLocation at);
     Value callUserFunction(PouInfo &fn, const std::vector<Argument> &args, SourceLocation at, const Place *destination);
     void noteCall(int callee, SourceLocation at);
+    // CODESYS actions: `Act();` inside the POU, `Inst.Act();` on an instance (ST, and CAL in IL).
+    // False when `callee` names no action; then it is an ordinary call.
+    bool callAction(const ast::Expr &callee, const std::vector<ast::CallArg> &args, SourceLocation at, bool asStatement);
     std::optional<NativeBlock> nativeBlock(const Type *fbType) const;
 
     // ---- stdfunctions.cpp ----
@@ -185,6 +190,8 @@ public:
     // becomes one fused compare-and-jump. Returns the instruction whose target may be patched.
     std::uint32_t branchIf(const Value &condition, bool when, std::uint32_t target = 0);
     bool lastWrites(std::uint32_t operand) const;
+    // A loop's test that is one Br* right after `i := i + s` ending the body: one IncBr*.
+    void fuseStepIntoBranch(std::uint32_t top, std::uint32_t test);
     void error(SourceLocation at, const QString &message, const QString &hint = {});
     void warning(SourceLocation at, const QString &message, const QString &hint = {});
 
@@ -222,7 +229,13 @@ public:
     std::uint32_t m_returnJump = 0;
 
     void compilePouBody(PouInfo &pou);
+    void compileActionBody(PouInfo &pou, const ast::SfcAction &action, int moduleIndex);
+    // Actions of POUs: "<POU index>:<upper-case action name>" -> index in Module::pous.
+    QHash<QString, int> m_actions;
+    int actionIndex(int pou, const QString &name) const;
+    int m_lineOwner = -1; // an action being compiled: its index in Module::pous, for the line table
     void finishTemporaries();
+    void packRungs();
     Value lookupName(const QString &name, SourceLocation at);
     Place namePlace(const ast::Expr &expr, bool reportUnknown);
 };

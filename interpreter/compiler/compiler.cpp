@@ -5,6 +5,7 @@
 #include "interpreter/compiler/codegen.h"
 #include "interpreter/compiler/parser.h"
 
+#include <QCoreApplication>
 #include <QSet>
 
 #include <functional>
@@ -36,9 +37,9 @@ void Codegen::markLine(SourceLocation at)
         return;
     m_lastLine = at.line;
     if (!m_module->lines.empty() && m_module->lines.back().pc == here())
-        m_module->lines.back() = {here(), m_pou->index, at.line};
+        m_module->lines.back() = {here(), m_lineOwner >= 0 ? m_lineOwner : m_pou->index, at.line};
     else
-        m_module->lines.push_back({here(), m_pou->index, at.line});
+        m_module->lines.push_back({here(), m_lineOwner >= 0 ? m_lineOwner : m_pou->index, at.line});
 }
 
 bool Codegen::lastWrites(std::uint32_t operand) const
@@ -47,6 +48,42 @@ bool Codegen::lastWrites(std::uint32_t operand) const
     // never across a jump target: merging would move the target past the merged instruction.
     return !m_module->code.empty() && m_module->code.back().a == operand && (operand & kInstanceRelative) == 0
         && (operand & kTempMarker) != 0 && m_module->code.size() > m_pouCodeStart && m_lastTarget != here();
+}
+
+void Codegen::fuseStepIntoBranch(std::uint32_t top, std::uint32_t test)
+{
+    std::vector<Instr> &code = m_module->code;
+    // The test is the one branch at `test`, nothing jumps to it, and the body ends just before it.
+    if (code.size() != size_t(test) + 1 || test == 0 || test - 1 < top || test - 1 < m_pouCodeStart || m_lastTarget >= test)
+        return;
+    const Instr branch = code[test];
+    const Instr add = code[test - 1];
+    struct Pair {
+        std::uint16_t branch, step;
+    };
+    static constexpr Pair pairs[] = {{op::BrLe, op::IncBrLe}, {op::BrLt, op::IncBrLt}, {op::BrGe, op::IncBrGe}, {op::BrGt, op::IncBrGt}};
+    for (const Pair &pair : pairs) {
+        const int vt = int(branch.op) - int(pair.branch);
+        if (vt < 0 || vt >= kVtCount)
+            continue;
+        const std::uint32_t counter = add.a;
+        if (vt == int(VT::F32) || vt == int(VT::F64) || add.op != op::Add + vt || branch.a != top || branch.b != counter
+            || branch.c == counter)
+            return;
+        const std::uint32_t step = add.b == counter ? add.c : add.c == counter ? add.b : counter;
+        if (step == counter)
+            return;
+        code.pop_back();
+        code.back() = {static_cast<std::uint16_t>(pair.step + vt), 0, counter, step, branch.c, top};
+        // The fused instruction counts the rounds, so an endless loop is still reported at its test.
+        std::vector<LineEntry> &lines = m_module->lines;
+        if (!lines.empty() && lines.back().pc == test) {
+            lines.back().pc = test - 1;
+            if (lines.size() >= 2 && lines[lines.size() - 2].pc == test - 1)
+                lines.erase(lines.end() - 2);
+        }
+        return;
+    }
 }
 
 std::uint32_t Codegen::branchIf(const Value &condition, bool when, std::uint32_t target)
@@ -87,6 +124,39 @@ void Codegen::warning(SourceLocation at, const QString &message, const QString &
     m_diagnostics.warning(m_pouName, at, message, hint);
 }
 
+void Codegen::packRungs()
+{
+    // Runs of rungs on the instance's own variables become one RungBlock over packed records. The
+    // instructions stay where they are (jumps into the run still work); the block skips them.
+    std::vector<Instr> &code = m_module->code;
+    const auto packable = [&](const Instr &i) {
+        if (i.op != op::BoolAndNotOrAndRel)
+            return false;
+        for (const std::uint32_t x : {i.b, i.c, i.d, i.e}) {
+            const std::int64_t delta = std::int64_t(x) - std::int64_t(i.a);
+            if (delta < INT16_MIN || delta > INT16_MAX)
+                return false;
+        }
+        return true;
+    };
+    constexpr std::uint32_t kMinRun = 8;
+    for (std::uint32_t pc = m_pouCodeStart; pc < here();) {
+        std::uint32_t end = pc;
+        while (end < here() && packable(code[end]))
+            ++end;
+        if (end - pc >= kMinRun) {
+            const auto first = static_cast<std::uint32_t>(m_module->rungs.size());
+            for (std::uint32_t k = pc; k < end; ++k) {
+                const Instr &i = code[k];
+                const auto delta = [&](std::uint32_t x) { return static_cast<std::int16_t>(std::int64_t(x) - std::int64_t(i.a)); };
+                m_module->rungs.push_back({i.a, delta(i.b), delta(i.c), delta(i.d), delta(i.e)});
+            }
+            code[pc] = {op::RungBlock, 0, 0, first, end - pc, 0};
+        }
+        pc = std::max(end, pc + 1);
+    }
+}
+
 void Codegen::finishTemporaries()
 {
     // Temporaries were numbered from 0 with kTempMarker; now that their size is known they get
@@ -94,7 +164,7 @@ void Codegen::finishTemporaries()
     const std::uint32_t base = allocate(std::max<std::uint32_t>(m_tempMax, 1), 8);
     for (std::uint32_t pc = m_pouCodeStart; pc < here(); ++pc) {
         Instr &i = m_module->code[pc];
-        for (std::uint32_t *operand : {&i.a, &i.b, &i.c, &i.d}) {
+        for (std::uint32_t *operand : {&i.a, &i.b, &i.c, &i.d, &i.e}) {
             if ((*operand & kInstanceRelative) == 0 && (*operand & kTempMarker) != 0)
                 *operand = base + (*operand & ~kTempMarker);
         }
@@ -123,8 +193,8 @@ void Codegen::compilePouBody(PouInfo &pou)
             const GlobalVar g = m_globals.value(key(v.name));
             const Type *declared = resolveType(v.type);
             if (!g.type) {
-                error(v.location, QStringLiteral("There is no global variable %1 for this VAR_EXTERNAL.").arg(v.name),
-                      QStringLiteral("declare it in VAR_GLOBAL"));
+                error(v.location, QCoreApplication::translate("iec::interp::Compiler", "There is no global variable %1 for this VAR_EXTERNAL.").arg(v.name),
+                      QCoreApplication::translate("iec::interp::Compiler", "declare it in VAR_GLOBAL"));
                 // Declared here, so that its uses do not each report it again.
                 if (declared) {
                     GlobalVar placeholder;
@@ -135,7 +205,7 @@ void Codegen::compilePouBody(PouInfo &pou)
                 }
             }
             else if (declared && declared != g.type && !(declared->kind == TypeKind::Elementary && g.type->kind == TypeKind::Elementary && declared->elem == g.type->elem))
-                error(v.location, QStringLiteral("%1 is declared as %2 here but as %3 in VAR_GLOBAL.").arg(v.name, typeName(declared), typeName(g.type)));
+                error(v.location, QCoreApplication::translate("iec::interp::Compiler", "%1 is declared as %2 here but as %3 in VAR_GLOBAL.").arg(v.name, typeName(declared), typeName(g.type)));
         }
     }
     switch (pou.ast->body.language) {
@@ -146,13 +216,41 @@ void Codegen::compilePouBody(PouInfo &pou)
         compileIl(pou.ast->body.il);
         break;
     case Language::SFC:
-        warning(pou.ast->location, QStringLiteral("%1 is a sequential function chart; charts run with the next version of the interpreter.").arg(pou.name));
+        warning(pou.ast->location, QCoreApplication::translate("iec::interp::Compiler", "%1 is a sequential function chart; charts run with the next version of the interpreter.").arg(pou.name));
         break;
     case Language::None:
         break;
     }
     instr(op::Ret);
     finishTemporaries();
+    packRungs();
+    m_pou = nullptr;
+}
+
+int Codegen::actionIndex(int pou, const QString &name) const
+{
+    return m_actions.value(QString::number(pou) + QLatin1Char(':') + key(name), -1);
+}
+
+void Codegen::compileActionBody(PouInfo &pou, const SfcAction &action, int moduleIndex)
+{
+    if (moduleIndex < 0)
+        return;
+    m_pou = &pou;
+    m_lineOwner = moduleIndex;
+    m_pouName = m_module->pous[size_t(moduleIndex)].name;
+    m_tempTop = m_tempMax = 0;
+    m_lastLine = -1;
+    m_pouCodeStart = here();
+    m_module->pous[size_t(moduleIndex)].entry = here();
+    markLine(action.location);
+    if (action.body.language == Language::ST)
+        compileStatements(action.body.statements);
+    else if (action.body.language == Language::IL)
+        compileIl(action.body.il);
+    instr(op::Ret);
+    finishTemporaries();
+    m_lineOwner = -1;
     m_pou = nullptr;
 }
 
@@ -170,6 +268,15 @@ std::shared_ptr<Module> Codegen::run(const std::vector<const CompilationUnit *> 
         layoutPou(p);
     for (const PouInfo &p : m_pous)
         m_module->pous.push_back({p.name, p.kind, 0, p.frame});
+    // Actions run on their POU's instance: entries after the POUs, named Main.Reset.
+    for (const PouInfo &p : m_pous) {
+        if (!p.ast || p.kind == PouKind::Function)
+            continue;
+        for (const SfcAction &action : p.ast->actions) {
+            m_actions.insert(QString::number(p.index) + QLatin1Char(':') + key(action.name), static_cast<int>(m_module->pous.size()));
+            m_module->pous.push_back({p.name + QLatin1Char('.') + action.name, p.kind, 0, p.frame});
+        }
+    }
 
     m_pouName.clear();
     for (const CompilationUnit *u : units)
@@ -180,7 +287,7 @@ std::shared_ptr<Module> Codegen::run(const std::vector<const CompilationUnit *> 
             if (!config)
                 config = &c;
             else
-                warning(c.location, QStringLiteral("Only the first configuration (%1) runs.").arg(config->name));
+                warning(c.location, QCoreApplication::translate("iec::interp::Compiler", "Only the first configuration (%1) runs.").arg(config->name));
         }
     }
     if (config) {
@@ -235,14 +342,14 @@ std::shared_ptr<Module> Codegen::run(const std::vector<const CompilationUnit *> 
                     if (p.kind == Place::Kind::Direct && p.type == boolType())
                         task.singleOffset = static_cast<std::int32_t>(p.operand);
                     else if (p.kind != Place::Kind::Invalid)
-                        error(t.single->location, QStringLiteral("SINGLE needs a global BOOL variable."));
+                        error(t.single->location, QCoreApplication::translate("iec::interp::Compiler", "SINGLE needs a global BOOL variable."));
                 }
                 m_module->tasks.push_back(task);
             }
             for (const ProgramConfig &pc : r.programs) {
                 const int pou = m_pouIndex.value(key(pc.type), -1);
                 if (pou < 0 || m_pous[size_t(pou)].kind != PouKind::Program) {
-                    error(pc.location, QStringLiteral("There is no PROGRAM called %1.").arg(pc.type));
+                    error(pc.location, QCoreApplication::translate("iec::interp::Compiler", "There is no PROGRAM called %1.").arg(pc.type));
                     continue;
                 }
                 int task = -1;
@@ -252,7 +359,7 @@ std::shared_ptr<Module> Codegen::run(const std::vector<const CompilationUnit *> 
                             task = static_cast<int>(t);
                     }
                     if (task < 0) {
-                        error(pc.location, QStringLiteral("There is no task called %1.").arg(pc.task));
+                        error(pc.location, QCoreApplication::translate("iec::interp::Compiler", "There is no task called %1.").arg(pc.task));
                         continue;
                     }
                 }
@@ -270,7 +377,7 @@ std::shared_ptr<Module> Codegen::run(const std::vector<const CompilationUnit *> 
             chosen = m_pouIndex.value(key(m_options.program), -1);
             if (chosen < 0 || m_pous[size_t(chosen)].kind != PouKind::Program) {
                 m_pouName.clear();
-                error({}, QStringLiteral("There is no PROGRAM called %1.").arg(m_options.program));
+                error({}, QCoreApplication::translate("iec::interp::Compiler", "There is no PROGRAM called %1.").arg(m_options.program));
                 chosen = -1;
             }
         } else if (programs.size() == 1) {
@@ -339,6 +446,12 @@ std::shared_ptr<Module> Codegen::run(const std::vector<const CompilationUnit *> 
         if (p.frame)
             compilePouBody(p);
     }
+    for (PouInfo &p : m_pous) {
+        if (!p.frame || !p.ast || p.kind == PouKind::Function)
+            continue;
+        for (const SfcAction &action : p.ast->actions)
+            compileActionBody(p, action, actionIndex(p.index, action.name));
+    }
 
     // Recursion: a cycle in the graph of calls (functions) and instances (function blocks).
     std::vector<int> state(m_pous.size(), 0); // 0 new, 1 on the path, 2 done
@@ -357,7 +470,7 @@ std::shared_ptr<Module> Codegen::run(const std::vector<const CompilationUnit *> 
                 }
                 names << m_pous[size_t(callee)].name;
                 m_pouName = m_pous[size_t(pou)].name;
-                error(at, QStringLiteral("Recursion is not allowed in IEC 61131-3: %1 calls itself (%2).")
+                error(at, QCoreApplication::translate("iec::interp::Compiler", "Recursion is not allowed in IEC 61131-3: %1 calls itself (%2).")
                               .arg(m_pous[size_t(callee)].name, names.join(QStringLiteral(" -> "))));
             } else if (state[size_t(callee)] == 0) {
                 visit(callee);

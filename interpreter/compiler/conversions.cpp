@@ -2,6 +2,7 @@
 #include "interpreter/compiler/codegen.h"
 #include "interpreter/compiler/typeutil.h"
 
+#include <QCoreApplication>
 #include <cmath>
 
 namespace iec::interp::detail {
@@ -16,7 +17,7 @@ Value Codegen::coerce(Value v, const Type *to, SourceLocation at, const QString 
     const Type *from = v.type;
     const QString where = context.isEmpty() ? QString() : QStringLiteral(" ") + context;
     const auto mismatch = [&]() {
-        error(at, QStringLiteral("A value of type %1 cannot be used as %2%3 without a conversion.")
+        error(at, QCoreApplication::translate("iec::interp::Compiler", "A value of type %1 cannot be used as %2%3 without a conversion.")
                       .arg(v.untyped ? (isReal(from) ? QStringLiteral("ANY_REAL") : QStringLiteral("ANY_INT")) : typeName(from), typeName(to), where),
               v.untyped ? QString() : conversionHint(from, to));
         return Value{};
@@ -32,7 +33,7 @@ Value Codegen::coerce(Value v, const Type *to, SourceLocation at, const QString 
             if (v.constant.kind == ConstValue::Kind::Int && (isIntegral(to) || isBits(to))) {
                 if (!fits(v.constant, to->elem)) {
                     const IntRange r = rangeOf(to->elem);
-                    error(at, QStringLiteral("The value %1 does not fit into %2 (%3 to %4).")
+                    error(at, QCoreApplication::translate("iec::interp::Compiler", "The value %1 does not fit into %2 (%3 to %4).")
                                   .arg(constText(v.constant), typeName(to)).arg(r.low).arg(r.high));
                     return {};
                 }
@@ -50,7 +51,7 @@ Value Codegen::coerce(Value v, const Type *to, SourceLocation at, const QString 
         }
         if (from->kind == TypeKind::String && to->kind == TypeKind::String && from->wide == to->wide) {
             if (v.constant.s.size() > qsizetype(to->capacity)) {
-                error(at, QStringLiteral("The text has %1 characters but %2 holds only %3.")
+                error(at, QCoreApplication::translate("iec::interp::Compiler", "The text has %1 characters but %2 holds only %3.")
                               .arg(v.constant.s.size()).arg(context.isEmpty() ? typeName(to) : context).arg(to->capacity));
                 return {};
             }
@@ -146,7 +147,7 @@ Value Codegen::convertExplicit(Value v, const Type *to, SourceLocation at, bool 
         }
         if (to->kind == TypeKind::String) {
             if (!from->isElementary()) {
-                error(at, QStringLiteral("A %1 cannot be converted to text.").arg(typeName(from)));
+                error(at, QCoreApplication::translate("iec::interp::Compiler", "A %1 cannot be converted to text.").arg(typeName(from)));
                 return {};
             }
             const Type *result = m_types->string(to->wide, 80);
@@ -156,7 +157,7 @@ Value Codegen::convertExplicit(Value v, const Type *to, SourceLocation at, bool 
             return operandValue(out, result);
         }
         if (!to->isElementary()) {
-            error(at, QStringLiteral("Text cannot be converted to %1.").arg(typeName(to)));
+            error(at, QCoreApplication::translate("iec::interp::Compiler", "Text cannot be converted to %1.").arg(typeName(to)));
             return {};
         }
         const std::uint32_t out = temp(to);
@@ -165,7 +166,7 @@ Value Codegen::convertExplicit(Value v, const Type *to, SourceLocation at, bool 
         return operandValue(out, to);
     }
     if (from->kind != TypeKind::Elementary || to->kind != TypeKind::Elementary) {
-        error(at, QStringLiteral("A %1 cannot be converted to %2.").arg(typeName(from), typeName(to)));
+        error(at, QCoreApplication::translate("iec::interp::Compiler", "A %1 cannot be converted to %2.").arg(typeName(from), typeName(to)));
         return {};
     }
     if (from->elem == to->elem) {
@@ -203,7 +204,7 @@ Value Codegen::convertExplicit(Value v, const Type *to, SourceLocation at, bool 
         const std::int64_t factor = scale(toTime ? to->elem : from->elem);
         const Type *numberType = toTime ? from : to;
         if (!isNumeric(numberType) && !isBits(numberType)) {
-            error(at, QStringLiteral("A %1 cannot be converted to %2.").arg(typeName(from), typeName(to)));
+            error(at, QCoreApplication::translate("iec::interp::Compiler", "A %1 cannot be converted to %2.").arg(typeName(from), typeName(to)));
             return {};
         }
         const Type *work = isReal(numberType) ? elem(Elem::LReal) : elem(Elem::LInt);

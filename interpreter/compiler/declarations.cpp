@@ -2,6 +2,7 @@
 #include "interpreter/compiler/codegen.h"
 #include "interpreter/compiler/literals.h"
 
+#include <QCoreApplication>
 #include <QSet>
 
 #include <cstring>
@@ -28,7 +29,7 @@ void Codegen::collectTypes(const CompilationUnit &unit, bool library)
         const QString k = key(decl.name);
         if (m_typeDecls.contains(k)) {
             if (!library)
-                error(decl.location, QStringLiteral("The type %1 is declared twice.").arg(decl.name));
+                error(decl.location, QCoreApplication::translate("iec::interp::Compiler", "The type %1 is declared twice.").arg(decl.name));
             continue;
         }
         m_typeDecls.insert(k, &decl);
@@ -43,13 +44,13 @@ void Codegen::collectPous(const CompilationUnit &unit, bool library)
             // A user POU with a standard FB's name replaces the library one.
             if (!library && !m_pous[size_t(m_pouIndex.value(k))].fromLibrary) {
                 m_pouName = p.name;
-                error(p.location, QStringLiteral("There are two POUs called %1.").arg(p.name));
+                error(p.location, QCoreApplication::translate("iec::interp::Compiler", "There are two POUs called %1.").arg(p.name));
             }
             continue;
         }
         if (m_typeDecls.contains(k) || elemByName(p.name)) {
             m_pouName = p.name;
-            error(p.location, QStringLiteral("%1 is already the name of a type.").arg(p.name));
+            error(p.location, QCoreApplication::translate("iec::interp::Compiler", "%1 is already the name of a type.").arg(p.name));
             continue;
         }
         PouInfo info;
@@ -76,7 +77,7 @@ const Type *Codegen::namedType(const QString &name, SourceLocation at, bool repo
         return t;
     if (const TypeDecl *decl = m_typeDecls.value(k)) {
         if (m_typesInProgress.value(k)) {
-            error(decl->location, QStringLiteral("The type %1 is defined in terms of itself.").arg(decl->name));
+            error(decl->location, QCoreApplication::translate("iec::interp::Compiler", "The type %1 is defined in terms of itself.").arg(decl->name));
             return nullptr;
         }
         m_typesInProgress.insert(k, true);
@@ -108,12 +109,12 @@ const Type *Codegen::namedType(const QString &name, SourceLocation at, bool repo
             return pou.frame;
         }
         if (report)
-            error(at, QStringLiteral("%1 is a %2, not a type; only function blocks can be instantiated.")
+            error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 is a %2, not a type; only function blocks can be instantiated.")
                           .arg(name, pou.kind == PouKind::Program ? QStringLiteral("program") : QStringLiteral("function")));
         return nullptr;
     }
     if (report)
-        error(at, QStringLiteral("Unknown type '%1'.").arg(name));
+        error(at, QCoreApplication::translate("iec::interp::Compiler", "Unknown type '%1'.").arg(name));
     return nullptr;
 }
 
@@ -131,7 +132,7 @@ const Type *Codegen::resolveType(const TypeSpec &spec, const QString &name)
             capacity = *n;
         }
         if (capacity < 1 || capacity > 65535) {
-            error(spec.location, QStringLiteral("A string holds 1 to 65535 characters, not %1.").arg(capacity));
+            error(spec.location, QCoreApplication::translate("iec::interp::Compiler", "A string holds 1 to 65535 characters, not %1.").arg(capacity));
             return nullptr;
         }
         return m_types->string(spec.wide, static_cast<std::uint32_t>(capacity));
@@ -147,7 +148,7 @@ const Type *Codegen::resolveType(const TypeSpec &spec, const QString &name)
             if (!low || !high)
                 return nullptr;
             if (*high < *low) {
-                error(r.low.location, QStringLiteral("The array range %1..%2 is empty; the upper bound must not be below the lower one.").arg(*low).arg(*high));
+                error(r.low.location, QCoreApplication::translate("iec::interp::Compiler", "The array range %1..%2 is empty; the upper bound must not be below the lower one.").arg(*low).arg(*high));
                 return nullptr;
             }
             t->dims.push_back({*low, *high});
@@ -157,7 +158,7 @@ const Type *Codegen::resolveType(const TypeSpec &spec, const QString &name)
         for (const Dimension &d : t->dims)
             bytes *= static_cast<std::uint64_t>(d.count());
         if (bytes > 256u * 1024 * 1024) {
-            error(spec.location, QStringLiteral("This array needs %1 MB; an array may use at most 256 MB.").arg(bytes / (1024 * 1024)));
+            error(spec.location, QCoreApplication::translate("iec::interp::Compiler", "This array needs %1 MB; an array may use at most 256 MB.").arg(bytes / (1024 * 1024)));
             return nullptr;
         }
         TypeTable::finishArray(*t);
@@ -168,7 +169,7 @@ const Type *Codegen::resolveType(const TypeSpec &spec, const QString &name)
         if (!base)
             return nullptr;
         if (base->kind != TypeKind::Elementary || !info(base->elem).isInt) {
-            error(spec.location, QStringLiteral("A subrange needs an integer type, not %1.").arg(typeName(base)));
+            error(spec.location, QCoreApplication::translate("iec::interp::Compiler", "A subrange needs an integer type, not %1.").arg(typeName(base)));
             return nullptr;
         }
         const auto low = evalConstInt(spec.ranges[0].low), high = evalConstInt(spec.ranges[0].high);
@@ -219,7 +220,7 @@ const Type *Codegen::resolveType(const TypeSpec &spec, const QString &name)
             if (!m.type)
                 return nullptr;
             if (t->member(v.name)) {
-                error(v.location, QStringLiteral("The structure has two members called %1.").arg(v.name));
+                error(v.location, QCoreApplication::translate("iec::interp::Compiler", "The structure has two members called %1.").arg(v.name));
                 continue;
             }
             t->members.push_back(m);
@@ -238,7 +239,7 @@ bool Codegen::layoutPou(PouInfo &pou)
     const QString savedPou = m_pouName;
     m_pouName = pou.name;
     if (pou.layoutInProgress) {
-        error(pou.ast->location, QStringLiteral("%1 contains an instance of itself, which would never end.").arg(pou.name));
+        error(pou.ast->location, QCoreApplication::translate("iec::interp::Compiler", "%1 contains an instance of itself, which would never end.").arg(pou.name));
         m_pouName = savedPou;
         return false;
     }
@@ -263,7 +264,7 @@ bool Codegen::layoutPou(PouInfo &pou)
                 continue;
             for (const VarDecl &v : section.vars) {
                 if (declared.contains(key(v.name))) {
-                    error(v.location, QStringLiteral("%1 is declared twice.").arg(v.name));
+                    error(v.location, QCoreApplication::translate("iec::interp::Compiler", "%1 is declared twice.").arg(v.name));
                     continue;
                 }
                 declared.insert(key(v.name));
@@ -282,7 +283,7 @@ bool Codegen::layoutPou(PouInfo &pou)
                     continue;
                 }
                 if (m.type->kind == TypeKind::FunctionBlock && pou.kind == PouKind::Function) {
-                    error(v.location, QStringLiteral("A function cannot hold a function block instance (%1); use a function block instead.").arg(v.name));
+                    error(v.location, QCoreApplication::translate("iec::interp::Compiler", "A function cannot hold a function block instance (%1); use a function block instead.").arg(v.name));
                     ok = false;
                     continue;
                 }
@@ -328,7 +329,7 @@ std::uint32_t Codegen::allocate(std::uint32_t size, std::uint32_t align)
     if (end >= kTempMarker) {
         // Operands address at most 1 GB (bit 30 marks temporaries while a POU is compiled).
         if (!m_tooLarge)
-            error({}, QStringLiteral("The program needs more than 1 GB of memory for its variables."));
+            error({}, QCoreApplication::translate("iec::interp::Compiler", "The program needs more than 1 GB of memory for its variables."));
         m_tooLarge = true;
         return 0;
     }
@@ -343,7 +344,7 @@ void Codegen::declareGlobals(const std::vector<VarSection> &sections)
         for (const VarDecl &v : section.vars) {
             const QString k = key(v.name);
             if (m_globals.contains(k)) {
-                error(v.location, QStringLiteral("The global variable %1 is declared twice.").arg(v.name));
+                error(v.location, QCoreApplication::translate("iec::interp::Compiler", "The global variable %1 is declared twice.").arg(v.name));
                 continue;
             }
             const Type *type = resolveType(v.type);
@@ -401,7 +402,7 @@ void Codegen::locate(const QString &address, std::uint32_t offset, const Type *t
         located.size = bytes;
     }
     if (!ok || bit > 7 || (bit >= 0 && type->size != 1) || (bit < 0 && type->size != located.size && type->isElementary())) {
-        error(at, QStringLiteral("The address %1 does not fit a variable of type %2.").arg(address, typeName(type)));
+        error(at, QCoreApplication::translate("iec::interp::Compiler", "The address %1 does not fit a variable of type %2.").arg(address, typeName(type)));
         return;
     }
     located.byte = byteIndex;
@@ -447,7 +448,7 @@ void Codegen::writeInitial(std::uint32_t offset, const Type *type, const Initial
                     writeConstant(offset, type, typed.constant, init->location);
             }
         } else if (init) {
-            error(init->location, QStringLiteral("A %1 is initialised with a single value.").arg(typeName(type)));
+            error(init->location, QCoreApplication::translate("iec::interp::Compiler", "A %1 is initialised with a single value.").arg(typeName(type)));
         } else if (type->subrange && (type->subrange->first > 0 || type->subrange->second < 0)) {
             ConstValue low;
             low.kind = ConstValue::Kind::Int;
@@ -481,7 +482,7 @@ void Codegen::writeInitial(std::uint32_t offset, const Type *type, const Initial
                 const Initializer *item = init->items[i].kind == Initializer::Kind::None ? nullptr : &init->items[i];
                 for (std::int64_t r = 0; r < repeat; ++r) {
                     if (index >= count) {
-                        error(init->location, QStringLiteral("There are more initial values than the array's %1 elements.").arg(count));
+                        error(init->location, QCoreApplication::translate("iec::interp::Compiler", "There are more initial values than the array's %1 elements.").arg(count));
                         return;
                     }
                     writeInitial(offset + index++ * type->element->size, type->element, item);
@@ -489,7 +490,7 @@ void Codegen::writeInitial(std::uint32_t offset, const Type *type, const Initial
             }
         } else if (init && init->kind == Initializer::Kind::Expression && count > 0) {
             // ARRAY[..] OF INT := 5 is not IEC, but a single value for every element is what is meant.
-            error(init->location, QStringLiteral("An array is initialised with a list in brackets, e.g. [1, 2, 3] or [10(0)]."));
+            error(init->location, QCoreApplication::translate("iec::interp::Compiler", "An array is initialised with a list in brackets, e.g. [1, 2, 3] or [10(0)]."));
             return;
         }
         for (; index < count; ++index)
@@ -513,10 +514,10 @@ void Codegen::writeInitial(std::uint32_t offset, const Type *type, const Initial
         if (init && init->kind == Initializer::Kind::Struct) {
             for (qsizetype i = 0; i < init->memberNames.size(); ++i) {
                 if (!type->member(init->memberNames[i]))
-                    error(init->location, QStringLiteral("%1 has no member %2.").arg(typeName(type), init->memberNames[i]));
+                    error(init->location, QCoreApplication::translate("iec::interp::Compiler", "%1 has no member %2.").arg(typeName(type), init->memberNames[i]));
             }
         } else if (init && init->kind != Initializer::Kind::None) {
-            error(init->location, QStringLiteral("A structure is initialised with (member := value, ...)."));
+            error(init->location, QCoreApplication::translate("iec::interp::Compiler", "A structure is initialised with (member := value, ...)."));
         }
         return;
     }
@@ -553,7 +554,7 @@ bool Codegen::writeConstant(std::uint32_t offset, const Type *type, const ConstV
         if (type->kind != TypeKind::String)
             return false;
         if (value.s.size() > qsizetype(type->capacity)) {
-            error(at, QStringLiteral("The text has %1 characters but the string holds only %2.").arg(value.s.size()).arg(type->capacity));
+            error(at, QCoreApplication::translate("iec::interp::Compiler", "The text has %1 characters but the string holds only %2.").arg(value.s.size()).arg(type->capacity));
             return false;
         }
         const std::uint16_t capacity = static_cast<std::uint16_t>(type->capacity);
@@ -689,7 +690,7 @@ std::optional<Value> Codegen::evalConst(const Expr &expr, bool report)
     if (v.kind == Value::Kind::Constant && !emitted)
         return v;
     if (report && v.kind != Value::Kind::Invalid && m_diagnostics.all().size() == diagnosticsBefore)
-        error(expr.location, QStringLiteral("This must be a constant: a literal, a CONSTANT or an expression of them."));
+        error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "This must be a constant: a literal, a CONSTANT or an expression of them."));
     return std::nullopt;
 }
 
@@ -701,7 +702,7 @@ std::optional<std::int64_t> Codegen::evalConstInt(const Expr &expr)
         || !v.type || !(v.untyped || info(v.type->elem).isInt || v.type->kind == TypeKind::Enum)) {
         m_module->code.resize(before);
         if (v.kind != Value::Kind::Invalid)
-            error(expr.location, QStringLiteral("This must be a constant integer."));
+            error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "This must be a constant integer."));
         return std::nullopt;
     }
     return v.constant.i;

@@ -2,6 +2,7 @@
 #include "interpreter/compiler/codegen.h"
 #include "interpreter/compiler/typeutil.h"
 
+#include <QCoreApplication>
 #include <cmath>
 #include <cstring>
 
@@ -117,6 +118,14 @@ void Codegen::emitMove(std::uint32_t to, std::uint32_t from, const Type *type)
 {
     if (!type || to == from)
         return;
+    // Q%1 := T%1.Q right after the timer ran with its inputs: the timer's instruction copies Q.
+    if (type->kind == TypeKind::Elementary && type->size == 1 && here() > m_pouCodeStart && m_lastTarget != here()) {
+        Instr &last = m_module->code.back();
+        if (last.op == op::NativeFbArgs && last.e == 0 && (last.a & kOffsetMask) + 16 <= kOffsetMask && from == last.a + 16) {
+            last.e = to; // Q is at offset 16 of TON, TOF and TP (nativeblocks.h)
+            return;
+        }
+    }
     if (type->kind == TypeKind::String) {
         instr(op::StrMov, to, from, 0, 0, type->wide ? 3 : 0);
         return;
@@ -139,13 +148,13 @@ Place Codegen::memberPlace(const Place &base, const Member &member, const QStrin
     p.text = text;
     p.fbPou = member.type->kind == TypeKind::FunctionBlock ? member.type->pou : -1;
     p.readOnly = base.readOnly || member.constant;
-    p.readOnlyReason = base.readOnly ? base.readOnlyReason : QStringLiteral("%1 is a constant and cannot be changed.").arg(text);
+    p.readOnlyReason = base.readOnly ? base.readOnlyReason : QCoreApplication::translate("iec::interp::Compiler", "%1 is a constant and cannot be changed.").arg(text);
     if (base.fbPou >= 0 && !p.readOnly && member.kind != VarKind::Input) {
         // From outside, an FB's inputs may be set; its outputs and internals only read.
         p.readOnly = true;
         p.readOnlyReason = member.kind == VarKind::Output
-            ? QStringLiteral("%1 is an output of the function block and can only be read.").arg(text)
-            : QStringLiteral("%1 is internal to the function block.").arg(text);
+            ? QCoreApplication::translate("iec::interp::Compiler", "%1 is an output of the function block and can only be read.").arg(text)
+            : QCoreApplication::translate("iec::interp::Compiler", "%1 is internal to the function block.").arg(text);
     }
     std::uint32_t slot = 0;
     bool slotIsPointer = false; // slot holds the address of the member (not the member itself)
@@ -189,7 +198,7 @@ Place Codegen::namePlace(const Expr &expr, bool reportUnknown)
                 i = k;
         }
         if (i < 0) {
-            error(expr.location, QStringLiteral("%1 has no value %2.").arg(typeName(t), name.mid(hash + 1)));
+            error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "%1 has no value %2.").arg(typeName(t), name.mid(hash + 1)));
             return {};
         }
         p.kind = Place::Kind::Constant;
@@ -249,13 +258,13 @@ Place Codegen::namePlace(const Expr &expr, bool reportUnknown)
             p.operand = it->offset;
         }
         p.readOnly = it->constant;
-        p.readOnlyReason = QStringLiteral("%1 is a constant and cannot be changed.").arg(name);
+        p.readOnlyReason = QCoreApplication::translate("iec::interp::Compiler", "%1 is a constant and cannot be changed.").arg(name);
         return p;
     }
     if (const auto it = m_enumValues.constFind(key(name)); it != m_enumValues.constEnd()) {
         if (it->ambiguous) {
-            error(expr.location, QStringLiteral("%1 is a value of several enumerations.").arg(name),
-                  QStringLiteral("write the type in front, e.g. Type#%1").arg(name));
+            error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "%1 is a value of several enumerations.").arg(name),
+                  QCoreApplication::translate("iec::interp::Compiler", "write the type in front, e.g. Type#%1").arg(name));
             return {};
         }
         p.kind = Place::Kind::Constant;
@@ -266,10 +275,10 @@ Place Codegen::namePlace(const Expr &expr, bool reportUnknown)
     }
     if (reportUnknown) {
         if (m_pouIndex.contains(key(name)))
-            error(expr.location, QStringLiteral("%1 is a POU, not a variable.").arg(name));
+            error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "%1 is a POU, not a variable.").arg(name));
         else
-            error(expr.location, QStringLiteral("Unknown variable '%1'.").arg(name),
-                  QStringLiteral("declare it in a VAR section"));
+            error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "Unknown variable '%1'.").arg(name),
+                  QCoreApplication::translate("iec::interp::Compiler", "declare it in a VAR section"));
     }
     return {};
 }
@@ -302,12 +311,12 @@ Place Codegen::resolvePlace(const Expr &expr, bool reportUnknown)
             return {};
         const QString text = base.text + QLatin1Char('.') + expr.text;
         if (base.type->kind != TypeKind::Struct && base.type->kind != TypeKind::FunctionBlock) {
-            error(expr.location, QStringLiteral("%1 is a %2 and has no members.").arg(base.text, typeName(base.type)));
+            error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "%1 is a %2 and has no members.").arg(base.text, typeName(base.type)));
             return {};
         }
         const Member *m = base.type->member(expr.text);
         if (!m) {
-            error(expr.location, QStringLiteral("%1 has no member %2.").arg(base.text, expr.text));
+            error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "%1 has no member %2.").arg(base.text, expr.text));
             return {};
         }
         if (base.kind == Place::Kind::Constant)
@@ -321,7 +330,7 @@ Place Codegen::resolvePlace(const Expr &expr, bool reportUnknown)
         const int bit = expr.text.toInt();
         if (base.type->kind != TypeKind::Elementary || !(info(base.type->elem).isBit || info(base.type->elem).isInt)
             || base.type->elem == Elem::Bool || bit >= int(base.type->size * 8)) {
-            error(expr.location, QStringLiteral("%1 has no bit %2.").arg(base.text).arg(bit));
+            error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "%1 has no bit %2.").arg(base.text).arg(bit));
             return {};
         }
         if (base.kind == Place::Kind::Constant) {
@@ -344,12 +353,12 @@ Place Codegen::resolvePlace(const Expr &expr, bool reportUnknown)
             return {};
         const Type *array = base.type;
         if (array->kind != TypeKind::Array) {
-            error(expr.location, QStringLiteral("%1 is not an array.").arg(base.text));
+            error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "%1 is not an array.").arg(base.text));
             return {};
         }
         const size_t count = expr.operands.size() - 1;
         if (count != array->dims.size()) {
-            error(expr.location, QStringLiteral("%1 has %2 dimension(s) but %3 index(es) are given.").arg(base.text).arg(array->dims.size()).arg(count));
+            error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "%1 has %2 dimension(s) but %3 index(es) are given.").arg(base.text).arg(array->dims.size()).arg(count));
             return {};
         }
         // Stride of each dimension: the product of the later dimensions times the element size.
@@ -370,7 +379,7 @@ Place Codegen::resolvePlace(const Expr &expr, bool reportUnknown)
             if (index.kind == Value::Kind::Constant && index.constant.kind == ConstValue::Kind::Int) {
                 const std::int64_t i = index.constant.i;
                 if (i < dim.low || i > dim.high) {
-                    error(indexExpr.location, QStringLiteral("The index %1 is outside the range %2..%3 of %4.").arg(i).arg(dim.low).arg(dim.high).arg(base.text));
+                    error(indexExpr.location, QCoreApplication::translate("iec::interp::Compiler", "The index %1 is outside the range %2..%3 of %4.").arg(i).arg(dim.low).arg(dim.high).arg(base.text));
                     return {};
                 }
                 const std::uint32_t offset = static_cast<std::uint32_t>(i - dim.low) * strides[d];
@@ -385,7 +394,7 @@ Place Codegen::resolvePlace(const Expr &expr, bool reportUnknown)
                 continue;
             }
             if (!isIntegral(index.type) && index.type->kind != TypeKind::Enum) {
-                error(indexExpr.location, QStringLiteral("An array index must be an integer, not %1.").arg(typeName(index.type)));
+                error(indexExpr.location, QCoreApplication::translate("iec::interp::Compiler", "An array index must be an integer, not %1.").arg(typeName(index.type)));
                 return {};
             }
             IndexDescriptor descriptor;
@@ -409,7 +418,7 @@ Place Codegen::resolvePlace(const Expr &expr, bool reportUnknown)
         return p;
     }
     default:
-        error(expr.location, QStringLiteral("This is not a variable."));
+        error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "This is not a variable."));
         return {};
     }
 }
@@ -442,7 +451,23 @@ Value Codegen::read(const Place &p)
     case Place::Kind::Indirect: {
         const std::uint32_t t = temp(p.type);
         if (const auto fused = fusedIndexOp(p, true)) {
-            Instr &index = m_module->code.back();
+            std::vector<Instr> &code = m_module->code;
+            Instr &index = code.back();
+            // a[i * n + k]: the index computed by a MulAdd just before joins the load.
+            const auto at = static_cast<std::uint32_t>(code.size() - 1);
+            const VT indexType = m_module->indexDescriptors[index.aux].indexType;
+            if (at >= m_pouCodeStart + 1 && m_lastTarget != at && (indexType == VT::I16 || indexType == VT::I32 || indexType == VT::I64)) {
+                const Instr &mulAdd = code[at - 1];
+                if (mulAdd.op == typedOp(op::MulAdd, indexType) && mulAdd.a == index.c && (mulAdd.a & kInstanceRelative) == 0
+                    && (mulAdd.a & kTempMarker) != 0) {
+                    const std::uint16_t ma = static_cast<std::uint16_t>(op::LoadIdxMA1 + (*fused - op::LoadIdx1));
+                    Instr joined{ma, index.aux, t, index.b, mulAdd.b, mulAdd.c};
+                    joined.e = mulAdd.d;
+                    code.pop_back();
+                    code.back() = joined;
+                    return operandValue(t, p.type);
+                }
+            }
             index = {*fused, index.aux, t, index.b, index.c, 0};
             return operandValue(t, p.type);
         }
@@ -466,21 +491,44 @@ Value Codegen::read(const Place &p)
     return {};
 }
 
+bool Codegen::checkSubrange(const Value &v, const Type *type, SourceLocation at)
+{
+    if (!type || !type->subrange)
+        return true;
+    const auto [low, high] = *type->subrange;
+    if (v.kind == Value::Kind::Constant) {
+        if (v.constant.kind == ConstValue::Kind::Int && (v.constant.i < low || v.constant.i > high)) {
+            error(at, QCoreApplication::translate("iec::interp::Compiler", "The value %1 is outside the range %2..%3 of %4.")
+                          .arg(v.constant.i).arg(low).arg(high).arg(typeName(type)));
+            return false;
+        }
+        return true;
+    }
+    // Checked at run time like an array index: the same descriptor, and a fault with POU and line.
+    IndexDescriptor descriptor;
+    descriptor.low = low;
+    descriptor.count = high - low + 1;
+    descriptor.indexType = vtOf(*type) == VT::U64 ? VT::I64 : vtOf(*type);
+    m_module->indexDescriptors.push_back(descriptor);
+    instr(op::CheckRange, 0, materialize(v), 0, 0, static_cast<std::uint16_t>(m_module->indexDescriptors.size() - 1));
+    return true;
+}
+
 void Codegen::store(const Place &p, Value value, SourceLocation at)
 {
     if (p.kind == Place::Kind::Invalid || !value.valid())
         return;
     if (p.kind == Place::Kind::Constant || p.readOnly) {
-        error(at, p.readOnlyReason.isEmpty() ? QStringLiteral("%1 is a constant and cannot be changed.").arg(p.text) : p.readOnlyReason);
+        error(at, p.readOnlyReason.isEmpty() ? QCoreApplication::translate("iec::interp::Compiler", "%1 is a constant and cannot be changed.").arg(p.text) : p.readOnlyReason);
         return;
     }
     if (p.type->kind == TypeKind::FunctionBlock) {
-        error(at, QStringLiteral("A function block instance cannot be assigned; call it instead."));
+        error(at, QCoreApplication::translate("iec::interp::Compiler", "A function block instance cannot be assigned; call it instead."));
         return;
     }
     const bool bit = p.kind == Place::Kind::Bit || p.kind == Place::Kind::IndirectBit;
     const Value v = coerce(value, bit ? boolType() : p.type, at, p.text);
-    if (!v.valid())
+    if (!v.valid() || (!bit && !checkSubrange(v, p.type, at)))
         return;
     if (p.kind == Place::Kind::Direct) {
         if (v.kind == Value::Kind::Operand && v.operand == p.operand)
@@ -555,7 +603,7 @@ Value Codegen::binary(const QString &opText, Value left, Value right, SourceLoca
     // Exponentiation: the result is REAL or LREAL, the exponent any number.
     if (opText == QLatin1String("**")) {
         if (!isNumeric(left.type) || !isNumeric(right.type)) {
-            error(at, QStringLiteral("'**' needs numbers, not %1 and %2.").arg(typeName(left.type), typeName(right.type)));
+            error(at, QCoreApplication::translate("iec::interp::Compiler", "'**' needs numbers, not %1 and %2.").arg(typeName(left.type), typeName(right.type)));
             return {};
         }
         if (left.kind == Value::Kind::Constant && right.kind == Value::Kind::Constant) {
@@ -614,7 +662,7 @@ Value Codegen::binary(const QString &opText, Value left, Value right, SourceLoca
                     return sum;
                 }
             }
-            error(at, QStringLiteral("'%1' cannot combine %2 and %3.").arg(opText, typeName(left.type), typeName(right.type)));
+            error(at, QCoreApplication::translate("iec::interp::Compiler", "'%1' cannot combine %2 and %3.").arg(opText, typeName(left.type), typeName(right.type)));
             return {};
         }
     }
@@ -634,7 +682,7 @@ Value Codegen::binary(const QString &opText, Value left, Value right, SourceLoca
         type = commonType(left.type, right.type);
     }
     if (!type) {
-        error(at, QStringLiteral("'%1' cannot combine %2 and %3.").arg(opText, typeName(left.type), typeName(right.type)),
+        error(at, QCoreApplication::translate("iec::interp::Compiler", "'%1' cannot combine %2 and %3.").arg(opText, typeName(left.type), typeName(right.type)),
               conversionHint(right.type, left.type));
         return {};
     }
@@ -654,8 +702,10 @@ Value Codegen::binary(const QString &opText, Value left, Value right, SourceLoca
     else
         allowed = type->isElementary() || isString(type);
     if (!allowed) {
-        const char *kind = logic ? "BOOL or a bit string (BYTE, WORD, ...)" : oi->family == op::Mod ? "integers" : "numbers";
-        error(at, QStringLiteral("'%1' needs %2, not %3.").arg(opText, QLatin1String(kind), typeName(type)));
+        const QString kind = logic ? QCoreApplication::translate("iec::interp::Compiler", "BOOL or a bit string (BYTE, WORD, ...)")
+                             : oi->family == op::Mod ? QCoreApplication::translate("iec::interp::Compiler", "integers")
+                                                     : QCoreApplication::translate("iec::interp::Compiler", "numbers");
+        error(at, QCoreApplication::translate("iec::interp::Compiler", "'%1' needs %2, not %3.").arg(opText, kind, typeName(type)));
         return {};
     }
     const Type *resultType = oi->comparison ? boolType() : type;
@@ -693,7 +743,7 @@ Value Codegen::binary(const QString &opText, Value left, Value right, SourceLoca
             const bool isUnsigned = type->kind == TypeKind::Elementary && info(type->elem).isUnsigned;
             const auto ux = static_cast<std::uint64_t>(x), uy = static_cast<std::uint64_t>(y);
             if ((oi->family == op::Div || oi->family == op::Mod) && y == 0) {
-                error(at, QStringLiteral("Division by zero."));
+                error(at, QCoreApplication::translate("iec::interp::Compiler", "Division by zero."));
                 return {};
             }
             switch (oi->family) {
@@ -762,7 +812,36 @@ Value Codegen::binary(const QString &opText, Value left, Value right, SourceLoca
                 && !(other.kind == Value::Kind::Operand && other.operand == joined.operand)) {
                 const Instr last = m_module->code.back();
                 m_module->code.pop_back();
+                // (a AND NOT b) OR (c AND d), the classic rung: one instruction.
+                if (oi->family == op::Or && other.kind == Value::Kind::Operand && lastWrites(other.operand)
+                    && m_module->code.back().op == op::BoolAndNot && last.b != other.operand && last.c != other.operand) {
+                    const Instr andNot = m_module->code.back();
+                    m_module->code.pop_back();
+                    instr(op::BoolAndNotOrAnd, out, andNot.b, andNot.c, last.b);
+                    Instr &fused = m_module->code.back();
+                    fused.e = last.c;
+                    if ((fused.a & fused.b & fused.c & fused.d & fused.e & kInstanceRelative) != 0) {
+                        fused.op = op::BoolAndNotOrAndRel;
+                        for (std::uint32_t *x : {&fused.a, &fused.b, &fused.c, &fused.d, &fused.e})
+                            *x &= kOffsetMask;
+                    }
+                    return operandValue(out, resultType);
+                }
                 instr(oi->family == op::Or ? op::BoolAndOr : op::BoolOrAnd, out, last.b, last.c, materialize(other));
+                return operandValue(out, resultType);
+            }
+        }
+    }
+    // b * c + d, an element's index i * n + j or a sum of products: one MulAdd.
+    if (oi->family == op::Add && type->kind == TypeKind::Elementary && (isIntegral(type) || isReal(type))) {
+        for (const bool rightProduct : {true, false}) {
+            const Value &product = rightProduct ? b : a;
+            const Value &other = rightProduct ? a : b;
+            if (product.kind == Value::Kind::Operand && lastWrites(product.operand) && m_module->code.back().op == typedOp(op::Mul, vt)
+                && !(other.kind == Value::Kind::Operand && other.operand == product.operand)) {
+                const Instr last = m_module->code.back();
+                m_module->code.pop_back();
+                instr(typedOp(op::MulAdd, vt), out, last.b, last.c, materialize(other));
                 return operandValue(out, resultType);
             }
         }
@@ -782,7 +861,7 @@ Value Codegen::unary(const QString &opText, Value v, SourceLocation at, const Pl
     if (negate) {
         const bool signedNumber = (isIntegral(t) && !info(t->elem).isUnsigned) || isReal(t) || (isTimeLike(t) && shortForm(t->elem) == Elem::Time);
         if (!v.untyped && !signedNumber) {
-            error(at, QStringLiteral("A %1 cannot be negated.").arg(typeName(t)));
+            error(at, QCoreApplication::translate("iec::interp::Compiler", "A %1 cannot be negated.").arg(typeName(t)));
             return {};
         }
         if (v.kind == Value::Kind::Constant) {
@@ -800,7 +879,7 @@ Value Codegen::unary(const QString &opText, Value v, SourceLocation at, const Pl
     }
     // NOT
     if (!isBits(t)) {
-        error(at, QStringLiteral("NOT needs BOOL or a bit string (BYTE, WORD, ...), not %1.").arg(v.untyped ? QStringLiteral("an integer literal") : typeName(t)));
+        error(at, QCoreApplication::translate("iec::interp::Compiler", "NOT needs BOOL or a bit string (BYTE, WORD, ...), not %1.").arg(v.untyped ? QCoreApplication::translate("iec::interp::Compiler", "an integer literal") : typeName(t)));
         return {};
     }
     if (v.kind == Value::Kind::Constant) {
@@ -826,7 +905,7 @@ Value Codegen::compileExpr(const Expr &expr, const Place *destination)
         bool untyped = false;
         const auto value = literalValue(expr, &type, &untyped);
         if (!value || !type) {
-            error(expr.location, QStringLiteral("'%1' is not a valid literal.").arg(expr.text));
+            error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "'%1' is not a valid literal.").arg(expr.text));
             return {};
         }
         return constantValue(type, *value, untyped);

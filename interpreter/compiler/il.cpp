@@ -3,6 +3,7 @@
 // current result; ")" pops them and applies the operator to the result inside the brackets.
 #include "interpreter/compiler/codegen.h"
 
+#include <QCoreApplication>
 #include <QScopeGuard>
 
 namespace iec::interp::detail {
@@ -53,13 +54,13 @@ void Codegen::compileIl(const std::vector<IlInstruction> &list)
         if (current.valid())
             return true;
         if (!quiet)
-            error(ins.location, QStringLiteral("%1 needs a current result; load one first with LD.").arg(ins.op));
+            error(ins.location, QCoreApplication::translate("iec::interp::Compiler", "%1 needs a current result; load one first with LD.").arg(ins.op));
         quiet = true;
         return false;
     };
     const auto operandValue = [&](const IlInstruction &ins, bool negate) -> Value {
         if (!ins.operand) {
-            error(ins.location, QStringLiteral("%1 needs an operand.").arg(ins.op));
+            error(ins.location, QCoreApplication::translate("iec::interp::Compiler", "%1 needs an operand.").arg(ins.op));
             return {};
         }
         Value v = compileExpr(*ins.operand);
@@ -67,7 +68,7 @@ void Codegen::compileIl(const std::vector<IlInstruction> &list)
     };
     const auto operandPlace = [&](const IlInstruction &ins) -> Place {
         if (!ins.operand) {
-            error(ins.location, QStringLiteral("%1 needs an operand.").arg(ins.op));
+            error(ins.location, QCoreApplication::translate("iec::interp::Compiler", "%1 needs an operand.").arg(ins.op));
             return {};
         }
         return resolvePlace(*ins.operand);
@@ -80,7 +81,7 @@ void Codegen::compileIl(const std::vector<IlInstruction> &list)
             return std::nullopt;
         if (!needCurrent(ins))
             return std::nullopt;
-        const Value c = coerce(current, boolType(), ins.location, QStringLiteral("(the condition of %1)").arg(ins.op));
+        const Value c = coerce(current, boolType(), ins.location, QCoreApplication::translate("iec::interp::Compiler", "(the condition of %1)").arg(ins.op));
         if (!c.valid())
             return std::nullopt;
         const bool jumpWhenTrue = (base == QLatin1String("JMP")) == (modifier == QLatin1String("C"));
@@ -98,7 +99,7 @@ void Codegen::compileIl(const std::vector<IlInstruction> &list)
         });
         if (!ins.label.isEmpty()) {
             if (labels.contains(key(ins.label)))
-                error(ins.location, QStringLiteral("The label %1 is defined twice.").arg(ins.label));
+                error(ins.location, QCoreApplication::translate("iec::interp::Compiler", "The label %1 is defined twice.").arg(ins.label));
             labels.insert(key(ins.label), here());
             markTarget(here());
         }
@@ -121,7 +122,7 @@ void Codegen::compileIl(const std::vector<IlInstruction> &list)
         } else if (op == QLatin1String("S") || op == QLatin1String("R")) {
             if (!needCurrent(ins))
                 continue;
-            const Value c = coerce(current, boolType(), ins.location, QStringLiteral("(the condition of %1)").arg(op));
+            const Value c = coerce(current, boolType(), ins.location, QCoreApplication::translate("iec::interp::Compiler", "(the condition of %1)").arg(op));
             const Place target = operandPlace(ins);
             if (!c.valid() || target.kind == Place::Kind::Invalid)
                 continue;
@@ -149,7 +150,7 @@ void Codegen::compileIl(const std::vector<IlInstruction> &list)
             current = binary(QLatin1String(stOp), current, operandValue(ins, negated), ins.location);
         } else if (op == QLatin1String(")")) {
             if (stack.empty()) {
-                error(ins.location, QStringLiteral("This ')' has no matching operator with '('."));
+                error(ins.location, QCoreApplication::translate("iec::interp::Compiler", "This ')' has no matching operator with '('."));
                 continue;
             }
             const Deferred d = stack.back();
@@ -162,7 +163,7 @@ void Codegen::compileIl(const std::vector<IlInstruction> &list)
         } else if (op == QLatin1String("JMP") || op == QLatin1String("JMPC") || op == QLatin1String("JMPCN")) {
             const auto skip = conditionalSkip(ins, QStringLiteral("JMP"));
             if (!ins.operand || ins.operand->kind != ExprKind::Name) {
-                error(ins.location, QStringLiteral("%1 needs a label to jump to.").arg(op));
+                error(ins.location, QCoreApplication::translate("iec::interp::Compiler", "%1 needs a label to jump to.").arg(op));
                 continue;
             }
             if (skip) {
@@ -172,9 +173,11 @@ void Codegen::compileIl(const std::vector<IlInstruction> &list)
             }
         } else if (op == QLatin1String("CAL") || op == QLatin1String("CALC") || op == QLatin1String("CALCN")) {
             const auto skip = conditionalSkip(ins, QStringLiteral("CAL"));
-            const Place instance = operandPlace(ins);
-            if (instance.kind != Place::Kind::Invalid)
-                callNamed(ins.operand->text, &instance, arguments(ins.callArgs), ins.location, true, nullptr);
+            if (!ins.operand || !callAction(*ins.operand, ins.callArgs, ins.location, true)) {
+                const Place instance = operandPlace(ins);
+                if (instance.kind != Place::Kind::Invalid)
+                    callNamed(ins.operand->text, &instance, arguments(ins.callArgs), ins.location, true, nullptr);
+            }
             if (skip)
                 patchJump(*skip, here());
         } else if (op == QLatin1String("RET") || op == QLatin1String("RETC") || op == QLatin1String("RETCN")) {
@@ -189,7 +192,7 @@ void Codegen::compileIl(const std::vector<IlInstruction> &list)
             if (instance.kind == Place::Kind::Invalid)
                 continue;
             if (instance.type->kind != TypeKind::FunctionBlock || !instance.type->member(op)) {
-                error(ins.location, QStringLiteral("%1 is not a function block with an input %2.").arg(instance.text, op));
+                error(ins.location, QCoreApplication::translate("iec::interp::Compiler", "%1 is not a function block with an input %2.").arg(instance.text, op));
                 continue;
             }
             Argument input;
@@ -218,11 +221,11 @@ void Codegen::compileIl(const std::vector<IlInstruction> &list)
         }
     }
     if (!stack.empty())
-        error(stack.back().location, QStringLiteral("This '(' is never closed with ')'."));
+        error(stack.back().location, QCoreApplication::translate("iec::interp::Compiler", "This '(' is never closed with ')'."));
     for (const auto &[at, ins] : jumps) {
         const auto it = labels.constFind(key(ins->operand->text));
         if (it == labels.constEnd()) {
-            error(ins->location, QStringLiteral("There is no label %1 to jump to.").arg(ins->operand->text));
+            error(ins->location, QCoreApplication::translate("iec::interp::Compiler", "There is no label %1 to jump to.").arg(ins->operand->text));
             continue;
         }
         patchJump(at, *it);

@@ -1,5 +1,6 @@
 #include "interpreter/compiler/parser.h"
 
+#include <QCoreApplication>
 #include <algorithm>
 #include <array>
 #include <string_view>
@@ -73,7 +74,7 @@ public:
     {
         auto body = statements();
         if (!atEnd())
-            unexpected(QStringLiteral("a statement"));
+            unexpected(QCoreApplication::translate("iec::interp::Compiler", "a statement"));
         return body;
     }
     std::vector<IlInstruction> ilBody() { return ilInstructions(); }
@@ -84,7 +85,7 @@ public:
             if (isVarSectionStart())
                 sections.push_back(varSection());
             else {
-                unexpected(QStringLiteral("VAR ... END_VAR"));
+                unexpected(QCoreApplication::translate("iec::interp::Compiler", "VAR ... END_VAR"));
                 ++m_pos;
             }
         }
@@ -176,24 +177,24 @@ private:
     QString describeCurrent() const
     {
         if (atEnd())
-            return QStringLiteral("the end of the text");
+            return QCoreApplication::translate("iec::interp::Compiler", "the end of the text");
         return QLatin1Char('\'') + text().toString() + QLatin1Char('\'');
     }
     void unexpected(const QString &expected)
     {
         if (!atEnd() && tok().kind == TokenKind::Error) {
-            error(here(), QStringLiteral("'%1' is not valid IEC 61131-3 text.").arg(text().toString()),
+            error(here(), QCoreApplication::translate("iec::interp::Compiler", "'%1' is not valid IEC 61131-3 text.").arg(text().toString()),
                   badTokenHint(text()));
             return;
         }
-        error(here(), QStringLiteral("Expected %1 but found %2.").arg(expected, describeCurrent()));
+        error(here(), QCoreApplication::translate("iec::interp::Compiler", "Expected %1 but found %2.").arg(expected, describeCurrent()));
     }
     static QString badTokenHint(QStringView bad)
     {
         if (bad.startsWith(QLatin1Char('\'')) || bad.startsWith(QLatin1Char('"')))
-            return QStringLiteral("close the string on the same line, and write $$ for a dollar sign");
+            return QCoreApplication::translate("iec::interp::Compiler", "close the string on the same line, and write $$ for a dollar sign");
         if (bad.contains(QLatin1Char('#')))
-            return QStringLiteral("check the digits and units of the literal, e.g. 16#FF or T#1s500ms");
+            return QCoreApplication::translate("iec::interp::Compiler", "check the digits and units of the literal, e.g. 16#FF or T#1s500ms");
         return {};
     }
     bool expectOp(std::u16string_view op, const QString &what)
@@ -335,7 +336,7 @@ CompilationUnit Parser::unit()
         } else if (isVarSectionStart()) {
             unit.globals.push_back(varSection());
         } else {
-            unexpected(QStringLiteral("PROGRAM, FUNCTION_BLOCK, FUNCTION, TYPE or CONFIGURATION"));
+            unexpected(QCoreApplication::translate("iec::interp::Compiler", "PROGRAM, FUNCTION_BLOCK, FUNCTION, TYPE or CONFIGURATION"));
             ++m_pos;
             while (!atEnd() && !isPouStart() && !isVarSectionStart())
                 ++m_pos;
@@ -361,14 +362,14 @@ void Parser::pou(CompilationUnit &unit)
         p.kind = PouKind::Function;
         end = "END_FUNCTION";
     }
-    p.name = expectName(QStringLiteral("the name of the POU"));
+    p.name = expectName(QCoreApplication::translate("iec::interp::Compiler", "the name of the POU"));
     m_pou = p.name;
     if (p.kind == PouKind::Function) {
         if (acceptOp(u":"))
             p.returnType = typeSpec();
         else
-            error(here(), QStringLiteral("A FUNCTION needs a result type after its name."),
-                  QStringLiteral("write e.g. FUNCTION %1 : INT").arg(p.name));
+            error(here(), QCoreApplication::translate("iec::interp::Compiler", "A FUNCTION needs a result type after its name."),
+                  QCoreApplication::translate("iec::interp::Compiler", "write e.g. FUNCTION %1 : INT").arg(p.name));
     }
     while (isVarSectionStart())
         p.sections.push_back(varSection());
@@ -378,7 +379,7 @@ void Parser::pou(CompilationUnit &unit)
         SfcAction action;
         action.location = here();
         ++m_pos;
-        action.name = expectName(QStringLiteral("the name of the action"));
+        action.name = expectName(QCoreApplication::translate("iec::interp::Compiler", "the name of the action"));
         acceptOp(u":");
         action.body = body({"END_ACTION"});
         expectWord("END_ACTION");
@@ -390,8 +391,8 @@ void Parser::pou(CompilationUnit &unit)
         p.actions.clear();
     }
     if (!acceptWord(end)) {
-        error(p.location, QStringLiteral("%1 has no %2.").arg(p.name, QString::fromLatin1(end.data(), qsizetype(end.size()))),
-              QStringLiteral("add %1 after its last statement").arg(QString::fromLatin1(end.data(), qsizetype(end.size()))));
+        error(p.location, QCoreApplication::translate("iec::interp::Compiler", "%1 has no %2.").arg(p.name, QString::fromLatin1(end.data(), qsizetype(end.size()))),
+              QCoreApplication::translate("iec::interp::Compiler", "add %1 after its last statement").arg(QString::fromLatin1(end.data(), qsizetype(end.size()))));
         while (!atEnd() && !isPouStart())
             ++m_pos;
         m_recovering = false;
@@ -406,8 +407,8 @@ void Parser::typeBlock(CompilationUnit &unit)
         const size_t before = m_pos;
         TypeDecl decl;
         decl.location = here();
-        decl.name = expectName(QStringLiteral("the name of a type"));
-        if (decl.name.isEmpty() || !expectOp(u":", QStringLiteral("':' after the type name"))) {
+        decl.name = expectName(QCoreApplication::translate("iec::interp::Compiler", "the name of a type"));
+        if (decl.name.isEmpty() || !expectOp(u":", QCoreApplication::translate("iec::interp::Compiler", "':' after the type name"))) {
             synchronize(false);
             skipIfStuck(before);
             continue;
@@ -416,7 +417,7 @@ void Parser::typeBlock(CompilationUnit &unit)
         if (acceptOp(u":="))
             decl.init = initializer();
         if (!acceptOp(u";")) {
-            error(afterPrevious(), QStringLiteral("Missing ';' after the declaration of type %1.").arg(decl.name));
+            error(afterPrevious(), QCoreApplication::translate("iec::interp::Compiler", "Missing ';' after the declaration of type %1.").arg(decl.name));
             synchronize(false);
         }
         m_recovering = false;
@@ -431,7 +432,7 @@ void Parser::configuration(CompilationUnit &unit)
     ConfigurationDecl config;
     config.location = here();
     ++m_pos;
-    config.name = expectName(QStringLiteral("the name of the configuration"));
+    config.name = expectName(QCoreApplication::translate("iec::interp::Compiler", "the name of the configuration"));
     m_pou = config.name;
     while (isVarSectionStart())
         config.globals.push_back(varSection());
@@ -439,9 +440,9 @@ void Parser::configuration(CompilationUnit &unit)
         while (acceptWord("RESOURCE")) {
             ResourceDecl resource;
             resource.location = here();
-            resource.name = expectName(QStringLiteral("the name of the resource"));
+            resource.name = expectName(QCoreApplication::translate("iec::interp::Compiler", "the name of the resource"));
             if (acceptWord("ON"))
-                resource.on = expectName(QStringLiteral("the processor type after ON"));
+                resource.on = expectName(QCoreApplication::translate("iec::interp::Compiler", "the processor type after ON"));
             resourceContents(resource, "END_RESOURCE");
             expectWord("END_RESOURCE");
             config.resources.push_back(std::move(resource));
@@ -465,12 +466,12 @@ void Parser::resourceContents(ResourceDecl &resource, std::string_view end)
         } else if (acceptWord("TASK")) {
             TaskDecl task;
             task.location = here();
-            task.name = expectName(QStringLiteral("the name of the task"));
-            if (expectOp(u"(", QStringLiteral("'(' with the task's INTERVAL and PRIORITY"))) {
+            task.name = expectName(QCoreApplication::translate("iec::interp::Compiler", "the name of the task"));
+            if (expectOp(u"(", QCoreApplication::translate("iec::interp::Compiler", "'(' with the task's INTERVAL and PRIORITY"))) {
                 while (!atEnd() && !isOp(u")")) {
                     const bool single = isWord("SINGLE"), interval = isWord("INTERVAL"), priority = isWord("PRIORITY");
                     if (!single && !interval && !priority) {
-                        unexpected(QStringLiteral("SINGLE, INTERVAL or PRIORITY"));
+                        unexpected(QCoreApplication::translate("iec::interp::Compiler", "SINGLE, INTERVAL or PRIORITY"));
                         break;
                     }
                     ++m_pos;
@@ -489,18 +490,18 @@ void Parser::resourceContents(ResourceDecl &resource, std::string_view end)
             program.location = here();
             program.retain = acceptWord("RETAIN");
             acceptWord("NON_RETAIN");
-            program.instance = expectName(QStringLiteral("the name of the program instance"));
+            program.instance = expectName(QCoreApplication::translate("iec::interp::Compiler", "the name of the program instance"));
             if (acceptWord("WITH"))
-                program.task = expectName(QStringLiteral("the task name after WITH"));
-            expectOp(u":", QStringLiteral("':' and the program type"));
-            program.type = expectName(QStringLiteral("the program type"));
+                program.task = expectName(QCoreApplication::translate("iec::interp::Compiler", "the task name after WITH"));
+            expectOp(u":", QCoreApplication::translate("iec::interp::Compiler", "':' and the program type"));
+            program.type = expectName(QCoreApplication::translate("iec::interp::Compiler", "the program type"));
             if (acceptOp(u"("))
                 program.args = callArguments();
             endStatement();
             resource.programs.push_back(std::move(program));
         } else {
             const size_t before = m_pos;
-            unexpected(QStringLiteral("TASK, PROGRAM or %1").arg(QString::fromLatin1(end.data(), qsizetype(end.size()))));
+            unexpected(QCoreApplication::translate("iec::interp::Compiler", "TASK, PROGRAM or %1").arg(QString::fromLatin1(end.data(), qsizetype(end.size()))));
             synchronize(false);
             skipIfStuck(before);
         }
@@ -537,8 +538,8 @@ VarSection Parser::varSection()
     }
     varDeclarations(section.vars, "END_VAR");
     if (!acceptWord("END_VAR"))
-        error(section.location, QStringLiteral("This variable section has no END_VAR."),
-              QStringLiteral("add END_VAR after its last declaration"));
+        error(section.location, QCoreApplication::translate("iec::interp::Compiler", "This variable section has no END_VAR."),
+              QCoreApplication::translate("iec::interp::Compiler", "add END_VAR after its last declaration"));
     m_recovering = false;
     return section;
 }
@@ -552,7 +553,7 @@ void Parser::varDeclarations(std::vector<VarDecl> &out, std::string_view end)
         std::vector<VarDecl> names;
         do {
             if (!isName()) {
-                unexpected(QStringLiteral("a variable name"));
+                unexpected(QCoreApplication::translate("iec::interp::Compiler", "a variable name"));
                 break;
             }
             VarDecl decl;
@@ -565,9 +566,9 @@ void Parser::varDeclarations(std::vector<VarDecl> &out, std::string_view end)
             if (!atEnd() && tok().kind == TokenKind::DirectAddress)
                 address = takeName();
             else
-                unexpected(QStringLiteral("an address such as %IX0.0 after AT"));
+                unexpected(QCoreApplication::translate("iec::interp::Compiler", "an address such as %IX0.0 after AT"));
         }
-        if (names.empty() || !expectOp(u":", QStringLiteral("':' and a type"))) {
+        if (names.empty() || !expectOp(u":", QCoreApplication::translate("iec::interp::Compiler", "':' and a type"))) {
             synchronize(false);
             continue;
         }
@@ -576,10 +577,10 @@ void Parser::varDeclarations(std::vector<VarDecl> &out, std::string_view end)
         if (acceptOp(u":="))
             init = initializer();
         else if (isOp(u"="))
-            error(here(), QStringLiteral("An initial value is given with ':=', not '='."),
-                  QStringLiteral("write %1 : ... := value;").arg(names.front().name));
+            error(here(), QCoreApplication::translate("iec::interp::Compiler", "An initial value is given with ':=', not '='."),
+                  QCoreApplication::translate("iec::interp::Compiler", "write %1 : ... := value;").arg(names.front().name));
         if (!acceptOp(u";")) {
-            error(afterPrevious(), QStringLiteral("Missing ';' after the declaration of %1.").arg(names.front().name));
+            error(afterPrevious(), QCoreApplication::translate("iec::interp::Compiler", "Missing ';' after the declaration of %1.").arg(names.front().name));
             synchronize(false);
         }
         m_recovering = false;
@@ -598,11 +599,11 @@ TypeSpec Parser::typeSpec()
     spec.location = here();
     if (acceptWord("ARRAY")) {
         spec.kind = TypeSpec::Kind::Array;
-        if (expectOp(u"[", QStringLiteral("'[' and the index range, e.g. ARRAY[1..10]"))) {
+        if (expectOp(u"[", QCoreApplication::translate("iec::interp::Compiler", "'[' and the index range, e.g. ARRAY[1..10]"))) {
             do {
                 Range range;
                 range.low = expression();
-                if (expectOp(u"..", QStringLiteral("'..' between the bounds")))
+                if (expectOp(u"..", QCoreApplication::translate("iec::interp::Compiler", "'..' between the bounds")))
                     range.high = expression();
                 spec.ranges.push_back(std::move(range));
             } while (acceptOp(u","));
@@ -616,19 +617,19 @@ TypeSpec Parser::typeSpec()
         spec.kind = TypeSpec::Kind::Struct;
         varDeclarations(spec.members, "END_STRUCT");
         if (!acceptWord("END_STRUCT"))
-            error(spec.location, QStringLiteral("This STRUCT has no END_STRUCT."));
+            error(spec.location, QCoreApplication::translate("iec::interp::Compiler", "This STRUCT has no END_STRUCT."));
         return spec;
     }
     if (acceptOp(u"(")) {
         spec.kind = TypeSpec::Kind::Enum;
         do {
-            spec.enumValues << expectName(QStringLiteral("an enumeration value"));
+            spec.enumValues << expectName(QCoreApplication::translate("iec::interp::Compiler", "an enumeration value"));
             std::optional<Expr> value;
             if (acceptOp(u":="))
                 value = expression();
             spec.enumExplicit.push_back(std::move(value));
         } while (acceptOp(u","));
-        expectOp(u")", QStringLiteral("')' after the enumeration values"));
+        expectOp(u")", QCoreApplication::translate("iec::interp::Compiler", "')' after the enumeration values"));
         if (!atEnd() && (tok().kind == TokenKind::TypeName))
             spec.name = takeName(); // CODESYS: (a, b) INT
         return spec;
@@ -640,12 +641,12 @@ TypeSpec Parser::typeSpec()
         const bool square = acceptOp(u"[");
         if (square || acceptOp(u"(")) {
             spec.length = expression();
-            expectOp(square ? u"]" : u")", QStringLiteral("the closing bracket of the string length"));
+            expectOp(square ? u"]" : u")", QCoreApplication::translate("iec::interp::Compiler", "the closing bracket of the string length"));
         }
         return spec;
     }
     if (atEnd() || !(tok().kind == TokenKind::TypeName || isName())) {
-        unexpected(QStringLiteral("a type"));
+        unexpected(QCoreApplication::translate("iec::interp::Compiler", "a type"));
         return spec;
     }
     spec.name = takeName();
@@ -653,7 +654,7 @@ TypeSpec Parser::typeSpec()
         spec.kind = TypeSpec::Kind::Subrange;
         Range range;
         range.low = expression();
-        expectOp(u"..", QStringLiteral("'..' between the bounds"));
+        expectOp(u"..", QCoreApplication::translate("iec::interp::Compiler", "'..' between the bounds"));
         range.high = expression();
         spec.ranges.push_back(std::move(range));
         expectOp(u")", QStringLiteral("')'"));
@@ -677,25 +678,25 @@ Initializer Parser::initializer()
                 Initializer item;
                 if (!isOp(u")"))
                     item = initializer();
-                expectOp(u")", QStringLiteral("')' after the repeated value"));
+                expectOp(u")", QCoreApplication::translate("iec::interp::Compiler", "')' after the repeated value"));
                 init.items.push_back(std::move(item));
             } else {
                 init.items.push_back(initializer());
             }
             init.repeats.push_back(std::move(repeat));
         } while (acceptOp(u","));
-        expectOp(u"]", QStringLiteral("']' at the end of the array's initial values"));
+        expectOp(u"]", QCoreApplication::translate("iec::interp::Compiler", "']' at the end of the array's initial values"));
         return init;
     }
     if (isOp(u"(") && isName(1) && isOp(u":=", 2)) {
         ++m_pos;
         init.kind = Initializer::Kind::Struct;
         do {
-            init.memberNames << expectName(QStringLiteral("a member name"));
+            init.memberNames << expectName(QCoreApplication::translate("iec::interp::Compiler", "a member name"));
             expectOp(u":=", QStringLiteral("':='"));
             init.items.push_back(initializer());
         } while (acceptOp(u","));
-        expectOp(u")", QStringLiteral("')' at the end of the structure's initial values"));
+        expectOp(u")", QCoreApplication::translate("iec::interp::Compiler", "')' at the end of the structure's initial values"));
         return init;
     }
     init.kind = Initializer::Kind::Expression;
@@ -719,7 +720,7 @@ Body Parser::body(std::initializer_list<std::string_view> ends)
         b.language = Language::ST;
         b.statements = statements();
         if (!isEnd(ends) && !atEnd()) {
-            unexpected(QStringLiteral("a statement"));
+            unexpected(QCoreApplication::translate("iec::interp::Compiler", "a statement"));
             while (!isEnd(ends) && !isPouStart())
                 ++m_pos;
             m_recovering = false;
@@ -761,13 +762,13 @@ void Parser::sfc(SfcChart &chart, std::initializer_list<std::string_view> ends)
             SfcAction action;
             action.location = here();
             ++m_pos;
-            action.name = expectName(QStringLiteral("the name of the action"));
+            action.name = expectName(QCoreApplication::translate("iec::interp::Compiler", "the name of the action"));
             acceptOp(u":");
             action.body = body({"END_ACTION"});
             expectWord("END_ACTION");
             chart.actions.push_back(std::move(action));
         } else {
-            unexpected(QStringLiteral("INITIAL_STEP, STEP, TRANSITION or ACTION"));
+            unexpected(QCoreApplication::translate("iec::interp::Compiler", "INITIAL_STEP, STEP, TRANSITION or ACTION"));
             ++m_pos;
             while (!isEnd(ends) && !isWord("STEP") && !isWord("INITIAL_STEP") && !isWord("TRANSITION") && !isWord("ACTION"))
                 ++m_pos;
@@ -781,18 +782,18 @@ void Parser::sfcStep(SfcChart &chart, bool initial)
     SfcStep step;
     step.location = here();
     step.initial = initial;
-    step.name = expectName(QStringLiteral("the name of the step"));
-    expectOp(u":", QStringLiteral("':' after the step name"));
+    step.name = expectName(QCoreApplication::translate("iec::interp::Compiler", "the name of the step"));
+    expectOp(u":", QCoreApplication::translate("iec::interp::Compiler", "':' after the step name"));
     while (!atEnd() && !isWord("END_STEP") && !isBlockWord() && !isWord("STEP") && !isWord("TRANSITION")) {
         SfcActionAssociation assoc;
         assoc.location = here();
-        assoc.action = expectName(QStringLiteral("an action name"));
+        assoc.action = expectName(QCoreApplication::translate("iec::interp::Compiler", "an action name"));
         if (acceptOp(u"(")) {
             if (!isOp(u")") && !isOp(u",")) {
                 if (!atEnd() && (isWordToken(tok())))
                     assoc.qualifier = takeName().toUpper();
                 else
-                    unexpected(QStringLiteral("an action qualifier such as N, S, R, L or D"));
+                    unexpected(QCoreApplication::translate("iec::interp::Compiler", "an action qualifier such as N, S, R, L or D"));
             }
             while (acceptOp(u",")) {
                 if (!atEnd() && tok().kind == TokenKind::TimeLiteral)
@@ -800,18 +801,18 @@ void Parser::sfcStep(SfcChart &chart, bool initial)
                 else if (isName())
                     assoc.indicator = takeName();
                 else
-                    unexpected(QStringLiteral("a duration or an indicator variable"));
+                    unexpected(QCoreApplication::translate("iec::interp::Compiler", "a duration or an indicator variable"));
             }
             expectOp(u")", QStringLiteral("')'"));
         }
         if (!acceptOp(u";"))
-            error(afterPrevious(), QStringLiteral("Missing ';' after the action association."));
+            error(afterPrevious(), QCoreApplication::translate("iec::interp::Compiler", "Missing ';' after the action association."));
         if (m_recovering)
             synchronize(false);
         step.actions.push_back(std::move(assoc));
     }
     if (!acceptWord("END_STEP"))
-        error(step.location, QStringLiteral("Step %1 has no END_STEP.").arg(step.name));
+        error(step.location, QCoreApplication::translate("iec::interp::Compiler", "Step %1 has no END_STEP.").arg(step.name));
     m_recovering = false;
     chart.steps.push_back(std::move(step));
 }
@@ -821,11 +822,11 @@ QStringList Parser::stepList()
     QStringList steps;
     if (acceptOp(u"(")) {
         do
-            steps << expectName(QStringLiteral("a step name"));
+            steps << expectName(QCoreApplication::translate("iec::interp::Compiler", "a step name"));
         while (acceptOp(u","));
-        expectOp(u")", QStringLiteral("')' after the step names"));
+        expectOp(u")", QCoreApplication::translate("iec::interp::Compiler", "')' after the step names"));
     } else {
-        steps << expectName(QStringLiteral("a step name"));
+        steps << expectName(QCoreApplication::translate("iec::interp::Compiler", "a step name"));
     }
     return steps;
 }
@@ -853,10 +854,10 @@ void Parser::sfcTransition(SfcChart &chart)
     } else if (acceptOp(u":")) {
         t.ilCondition = ilInstructions({"END_TRANSITION"});
     } else {
-        unexpected(QStringLiteral("':=' and the transition condition"));
+        unexpected(QCoreApplication::translate("iec::interp::Compiler", "':=' and the transition condition"));
     }
     if (!acceptWord("END_TRANSITION")) {
-        error(t.location, QStringLiteral("This TRANSITION has no END_TRANSITION."));
+        error(t.location, QCoreApplication::translate("iec::interp::Compiler", "This TRANSITION has no END_TRANSITION."));
         while (!atEnd() && !isBlockWord() && !isWord("STEP") && !isWord("TRANSITION"))
             ++m_pos;
     }
@@ -890,8 +891,8 @@ void Parser::endStatement()
 {
     if (acceptOp(u";"))
         return;
-    error(afterPrevious(), QStringLiteral("Missing ';' at the end of the statement."),
-          QStringLiteral("every ST statement ends with ';'"));
+    error(afterPrevious(), QCoreApplication::translate("iec::interp::Compiler", "Missing ';' at the end of the statement."),
+          QCoreApplication::translate("iec::interp::Compiler", "every ST statement ends with ';'"));
     // Carry on with the next statement when it clearly starts here, so one missing ';' gives
     // one message and the rest of the body is still checked.
     if (isStatementListEnd() || isStatementKeyword() || isName())
@@ -925,7 +926,7 @@ Stmt Parser::statement()
         return s;
     }
     if (!isName() && !(!atEnd() && tok().kind == TokenKind::DirectAddress)) {
-        unexpected(QStringLiteral("a statement"));
+        unexpected(QCoreApplication::translate("iec::interp::Compiler", "a statement"));
         return s;
     }
     Expr target = postfix(primary());
@@ -938,8 +939,8 @@ Stmt Parser::statement()
         s.target = std::move(target);
     } else if (isOp(u"=")) {
         ++m_pos;
-        error(s.location, QStringLiteral("'=' compares two values; to assign a value write ':='."),
-              QStringLiteral("write %1 := ...;").arg(target.text));
+        error(s.location, QCoreApplication::translate("iec::interp::Compiler", "'=' compares two values; to assign a value write ':='."),
+              QCoreApplication::translate("iec::interp::Compiler", "write %1 := ...;").arg(target.text));
         s.kind = StmtKind::Assign;
         s.target = std::move(target);
         s.value = expression();
@@ -948,7 +949,7 @@ Stmt Parser::statement()
         return s;
     } else {
         if (!m_recovering)
-            error(here(), QStringLiteral("Expected ':=' or a call after '%1'.").arg(target.text));
+            error(here(), QCoreApplication::translate("iec::interp::Compiler", "Expected ':=' or a call after '%1'.").arg(target.text));
         return s;
     }
     endStatement();
@@ -963,8 +964,8 @@ void Parser::closeBlock(std::string_view endWord, const char *blockName, SourceL
     }
     const QString end = QString::fromLatin1(endWord.data(), static_cast<qsizetype>(endWord.size()));
     // Reported where the block starts: that is where the student has to look.
-    error(opened, QStringLiteral("This %1 has no matching %2.").arg(QLatin1String(blockName), end),
-          QStringLiteral("add %1; after the last statement that belongs to it").arg(end));
+    error(opened, QCoreApplication::translate("iec::interp::Compiler", "This %1 has no matching %2.").arg(QLatin1String(blockName), end),
+          QCoreApplication::translate("iec::interp::Compiler", "add %1; after the last statement that belongs to it").arg(end));
     m_recovering = false;
 }
 
@@ -981,7 +982,7 @@ Stmt Parser::ifStatement()
         branch.condition = expression();
         if (!acceptWord("THEN")) {
             if (isOp(u":="))
-                error(here(), QStringLiteral("A condition compares with '=', not ':='."));
+                error(here(), QCoreApplication::translate("iec::interp::Compiler", "A condition compares with '=', not ':='."));
             else
                 unexpected(QStringLiteral("THEN"));
             synchronize(true);
@@ -1029,7 +1030,7 @@ Stmt Parser::caseStatement()
     while (!atEnd() && !isWord("END_CASE") && !isWord("ELSE") && !isBlockWord()) {
         if (!isCaseLabelStart()) {
             const size_t before = m_pos;
-            unexpected(QStringLiteral("a case label such as 1:, 2, 3: or 10..20:"));
+            unexpected(QCoreApplication::translate("iec::interp::Compiler", "a case label such as 1:, 2, 3: or 10..20:"));
             synchronize(true);
             skipIfStuck(before);
             continue;
@@ -1042,7 +1043,7 @@ Stmt Parser::caseStatement()
                 label.high = expression();
             branch.labels.push_back(std::move(label));
         } while (acceptOp(u","));
-        expectOp(u":", QStringLiteral("':' after the case label"));
+        expectOp(u":", QCoreApplication::translate("iec::interp::Compiler", "':' after the case label"));
         while (!atEnd() && !isCaseLabelStart() && !isStatementListEnd()) {
             const size_t before = m_pos;
             branch.body.push_back(statement());
@@ -1068,11 +1069,11 @@ Stmt Parser::forStatement()
     s.location = here();
     ++m_pos;
     if (!isName()) {
-        unexpected(QStringLiteral("the control variable of the FOR loop"));
+        unexpected(QCoreApplication::translate("iec::interp::Compiler", "the control variable of the FOR loop"));
     } else {
         s.target = primary();
     }
-    expectOp(u":=", QStringLiteral("':=' and the start value"));
+    expectOp(u":=", QCoreApplication::translate("iec::interp::Compiler", "':=' and the start value"));
     s.value = expression();
     expectWord("TO");
     s.to = expression();
@@ -1114,7 +1115,7 @@ Stmt Parser::repeatStatement()
         s.value = expression();
         acceptOp(u";"); // CODESYS allows "UNTIL x;"? no: but be lenient
     } else {
-        error(s.location, QStringLiteral("This REPEAT has no UNTIL condition."));
+        error(s.location, QCoreApplication::translate("iec::interp::Compiler", "This REPEAT has no UNTIL condition."));
     }
     closeBlock("END_REPEAT", "REPEAT", s.location);
     return s;
@@ -1184,7 +1185,7 @@ Expr Parser::primary()
     Expr e;
     e.location = here();
     if (atEnd()) {
-        unexpected(QStringLiteral("a value"));
+        unexpected(QCoreApplication::translate("iec::interp::Compiler", "a value"));
         return e;
     }
     const Token &t = tok();
@@ -1227,7 +1228,7 @@ Expr Parser::primary()
     if (t.kind == TokenKind::Error)
         unexpected(QString());
     else
-        unexpected(QStringLiteral("a value, a variable or a function call"));
+        unexpected(QCoreApplication::translate("iec::interp::Compiler", "a value, a variable or a function call"));
     return e;
 }
 
@@ -1247,7 +1248,7 @@ Expr Parser::postfix(Expr base)
                 e.kind = ExprKind::Member;
                 e.text = takeName();
             } else {
-                unexpected(QStringLiteral("a member name or a bit number after '.'"));
+                unexpected(QCoreApplication::translate("iec::interp::Compiler", "a member name or a bit number after '.'"));
                 return base;
             }
             e.operands.push_back(std::move(base));
@@ -1302,7 +1303,7 @@ std::vector<CallArg> Parser::callArguments()
         arg.value = expression();
         args.push_back(std::move(arg));
     } while (acceptOp(u","));
-    expectOp(u")", QStringLiteral("')' or ',' in the argument list"));
+    expectOp(u")", QCoreApplication::translate("iec::interp::Compiler", "')' or ',' in the argument list"));
     return args;
 }
 
@@ -1337,7 +1338,7 @@ std::vector<IlInstruction> Parser::ilInstructions(std::initializer_list<std::str
         } else if (isWordToken(opToken)) {
             ins.op = takeName().toUpper();
         } else {
-            unexpected(QStringLiteral("an IL operator such as LD, ST, ADD or JMP"));
+            unexpected(QCoreApplication::translate("iec::interp::Compiler", "an IL operator such as LD, ST, ADD or JMP"));
             while (!atEnd() && lineOf(tok()) == lineOf(opToken))
                 ++m_pos;
             m_recovering = false;
@@ -1371,8 +1372,8 @@ std::vector<IlInstruction> Parser::ilInstructions(std::initializer_list<std::str
             }
         }
         if (ilOperandFollows(opToken) && !m_recovering) {
-            error(here(), QStringLiteral("An IL instruction takes one operand; %1 is left over.").arg(describeCurrent()),
-                  QStringLiteral("put each instruction on its own line"));
+            error(here(), QCoreApplication::translate("iec::interp::Compiler", "An IL instruction takes one operand; %1 is left over.").arg(describeCurrent()),
+                  QCoreApplication::translate("iec::interp::Compiler", "put each instruction on its own line"));
         }
         while (!atEnd() && lineOf(tok()) == lineOf(opToken))
             ++m_pos;

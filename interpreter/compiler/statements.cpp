@@ -1,6 +1,8 @@
 // ST statements.
 #include "interpreter/compiler/codegen.h"
 
+#include <QCoreApplication>
+
 namespace iec::interp::detail {
 
 using namespace ast;
@@ -11,8 +13,8 @@ Value Codegen::condition(const Expr &expr)
     if (!v.valid())
         return {};
     if (v.type->kind != TypeKind::Elementary || v.type->elem != Elem::Bool) {
-        error(expr.location, QStringLiteral("A condition must be BOOL, not %1.").arg(typeName(v.type)),
-              expr.kind == ExprKind::Binary ? QString() : QStringLiteral("compare it, e.g. x <> 0"));
+        error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "A condition must be BOOL, not %1.").arg(typeName(v.type)),
+              expr.kind == ExprKind::Binary ? QString() : QCoreApplication::translate("iec::interp::Compiler", "compare it, e.g. x <> 0"));
         return {};
     }
     return v;
@@ -46,7 +48,8 @@ void Codegen::compileStatement(const Stmt &s)
         if (target.kind == Place::Kind::Invalid)
             break;
         // The last operation of the expression may write straight into the variable.
-        const Place *destination = target.kind == Place::Kind::Direct && !target.readOnly ? &target : nullptr;
+        // Not for a subrange: the value is checked before it is stored.
+        const Place *destination = target.kind == Place::Kind::Direct && !target.readOnly && !target.type->subrange ? &target : nullptr;
         const Value value = compileExpr(s.value, destination);
         store(target, value, s.location);
         break;
@@ -82,7 +85,7 @@ void Codegen::compileStatement(const Stmt &s)
         if (!selector.valid())
             break;
         if (selector.type->kind != TypeKind::Enum && !(selector.type->kind == TypeKind::Elementary && (info(selector.type->elem).isInt || info(selector.type->elem).isBit))) {
-            error(s.target.location, QStringLiteral("CASE needs an integer or an enumeration, not %1.").arg(typeName(selector.type)));
+            error(s.target.location, QCoreApplication::translate("iec::interp::Compiler", "CASE needs an integer or an enumeration, not %1.").arg(typeName(selector.type)));
             break;
         }
         std::vector<std::uint32_t> toEnd;
@@ -121,14 +124,14 @@ void Codegen::compileStatement(const Stmt &s)
         if (counter.kind == Place::Kind::Invalid)
             break;
         if (counter.kind != Place::Kind::Direct || counter.type->kind != TypeKind::Elementary || !info(counter.type->elem).isInt) {
-            error(s.target.location, QStringLiteral("The FOR loop needs an integer variable as its counter."));
+            error(s.target.location, QCoreApplication::translate("iec::interp::Compiler", "The FOR loop needs an integer variable as its counter."));
             break;
         }
         store(counter, compileExpr(s.value), s.value.location);
         const Type *type = counter.type;
         // The end and the step are evaluated once, before the loop.
-        Value end = coerce(compileExpr(*s.to), type, s.to->location, QStringLiteral("(the end value)"));
-        Value step = s.by ? coerce(compileExpr(*s.by), type, s.by->location, QStringLiteral("(the step)")) : Value{};
+        Value end = coerce(compileExpr(*s.to), type, s.to->location, QCoreApplication::translate("iec::interp::Compiler", "(the end value)"));
+        Value step = s.by ? coerce(compileExpr(*s.by), type, s.by->location, QCoreApplication::translate("iec::interp::Compiler", "(the step)")) : Value{};
         if (!end.valid() || (s.by && !step.valid()))
             break;
         if (end.kind == Value::Kind::Operand) {
@@ -147,7 +150,7 @@ void Codegen::compileStatement(const Stmt &s)
             step = operandValue(copy, type);
         }
         if (step.kind == Value::Kind::Constant && step.constant.i == 0) {
-            error(s.by->location, QStringLiteral("A FOR loop with step 0 never ends."));
+            error(s.by->location, QCoreApplication::translate("iec::interp::Compiler", "A FOR loop with step 0 never ends."));
             break;
         }
         if (step.kind == Value::Kind::Constant) {
@@ -196,20 +199,34 @@ void Codegen::compileStatement(const Stmt &s)
         break;
     }
     case StmtKind::While: {
-        // Rotated: jump to the test, the body, then the test jumps back while it holds.
-        const std::uint32_t toTest = instr(op::Jmp);
+        // Rotated: a guard skips the loop when the condition does not hold at first, then the
+        // body, then the test jumps back while it holds (one jump per round). The test is no jump
+        // target, so `i := i + s` at the end of the body and a test `i <= n` become one IncBr.
+        markLine(s.location);
+        const Value first = condition(s.value);
+        std::uint32_t guard = UINT32_MAX;
+        if (first.kind == Value::Kind::Operand)
+            guard = branchIf(first, false);
+        else if (first.kind == Value::Kind::Constant && first.constant.i == 0)
+            guard = instr(op::Jmp);
+        m_tempTop = tempMark;
         const std::uint32_t top = here();
+        markTarget(top);
         m_loops.emplace_back();
         compileStatements(s.body);
         const std::uint32_t test = here();
-        patchJump(toTest, test);
         markLine(s.location); // an endless loop is reported at its WHILE
         m_tempTop = tempMark;
         const Value c = condition(s.value);
-        if (c.kind == Value::Kind::Operand)
-            branchIf(c, true, top);
-        else if (c.kind == Value::Kind::Constant && c.constant.i != 0)
+        if (c.kind == Value::Kind::Operand) {
+            const std::uint32_t back = branchIf(c, true, top);
+            if (m_loops.back().continues.empty())
+                fuseStepIntoBranch(top, back);
+        } else if (c.kind == Value::Kind::Constant && c.constant.i != 0) {
             instr(op::Jmp, top);
+        }
+        if (guard != UINT32_MAX)
+            patchJump(guard, here());
         for (const std::uint32_t j : m_loops.back().exits)
             patchJump(j, here());
         for (const std::uint32_t j : m_loops.back().continues)
@@ -239,7 +256,7 @@ void Codegen::compileStatement(const Stmt &s)
     case StmtKind::Exit:
     case StmtKind::Continue:
         if (m_loops.empty()) {
-            error(s.location, QStringLiteral("%1 is only allowed inside a FOR, WHILE or REPEAT loop.").arg(s.kind == StmtKind::Exit ? QStringLiteral("EXIT") : QStringLiteral("CONTINUE")));
+            error(s.location, QCoreApplication::translate("iec::interp::Compiler", "%1 is only allowed inside a FOR, WHILE or REPEAT loop.").arg(s.kind == StmtKind::Exit ? QStringLiteral("EXIT") : QStringLiteral("CONTINUE")));
             break;
         }
         (s.kind == StmtKind::Exit ? m_loops.back().exits : m_loops.back().continues).push_back(instr(op::Jmp));

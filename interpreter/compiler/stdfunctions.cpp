@@ -3,6 +3,7 @@
 #include "interpreter/compiler/codegen.h"
 #include "interpreter/compiler/typeutil.h"
 
+#include <QCoreApplication>
 #include <QRegularExpression>
 
 #include <cmath>
@@ -57,7 +58,7 @@ Value mathFunction(Codegen &g, const MathEntry &m, Value v, SourceLocation at)
 {
     const Type *type = realTypeFor(g, v);
     if (!type) {
-        g.error(at, QStringLiteral("%1 needs a REAL or LREAL, not %2.").arg(QLatin1String(m.name), typeName(v.type)));
+        g.error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 needs a REAL or LREAL, not %2.").arg(QLatin1String(m.name), typeName(v.type)));
         return {};
     }
     v = g.coerce(v, type, at);
@@ -85,7 +86,7 @@ const Type *commonOf(Codegen &g, const std::vector<Value> &values, size_t from, 
         allUntyped = false;
         type = type ? g.commonType(type, values[i].type) : values[i].type;
         if (!type) {
-            g.error(at, QStringLiteral("The inputs of %1 have types that do not go together (%2).").arg(QLatin1String(name), typeName(values[i].type)));
+            g.error(at, QCoreApplication::translate("iec::interp::Compiler", "The inputs of %1 have types that do not go together (%2).").arg(QLatin1String(name), typeName(values[i].type)));
             return nullptr;
         }
     }
@@ -137,7 +138,7 @@ Value minMax(Codegen &g, bool max, std::vector<Value> &args, SourceLocation at)
     if (!type)
         return {};
     if (!type->isElementary() || type->kind == TypeKind::Enum) {
-        g.error(at, QStringLiteral("%1 needs numbers, times or bit strings.").arg(max ? QStringLiteral("MAX") : QStringLiteral("MIN")));
+        g.error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 needs numbers, times or bit strings.").arg(max ? QStringLiteral("MAX") : QStringLiteral("MIN")));
         return {};
     }
     Value acc = g.coerce(args[0], type, at);
@@ -172,7 +173,7 @@ Value select(Codegen &g, const Value &selector, std::vector<Value> inputs, const
     if (selector.kind == Value::Kind::Constant) {
         const std::int64_t k = selector.constant.i;
         if (k < 0 || k >= std::int64_t(inputs.size())) {
-            g.error(at, QStringLiteral("%1 has no input %2.").arg(QLatin1String(name)).arg(k));
+            g.error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 has no input %2.").arg(QLatin1String(name)).arg(k));
             return {};
         }
         return inputs[size_t(k)];
@@ -202,8 +203,8 @@ Value shift(Codegen &g, std::uint16_t family, const char *name, std::vector<Valu
     if (!in.valid())
         return {};
     if (!isBits(in.type) || in.type->elem == Elem::Bool) {
-        g.error(at, QStringLiteral("%1 needs a bit string (BYTE, WORD, DWORD, LWORD), not %2.").arg(QLatin1String(name), typeName(in.type)),
-                isIntegral(in.type) ? QStringLiteral("convert it first, e.g. %1_TO_%2").arg(info(in.type->elem).name, info(Elem(int(Elem::Byte) + (in.type->size == 1 ? 0 : in.type->size == 2 ? 1 : in.type->size == 4 ? 2 : 3))).name) : QString());
+        g.error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 needs a bit string (BYTE, WORD, DWORD, LWORD), not %2.").arg(QLatin1String(name), typeName(in.type)),
+                isIntegral(in.type) ? QCoreApplication::translate("iec::interp::Compiler", "convert it first, e.g. %1_TO_%2").arg(info(in.type->elem).name, info(Elem(int(Elem::Byte) + (in.type->size == 1 ? 0 : in.type->size == 2 ? 1 : in.type->size == 4 ? 2 : 3))).name) : QString());
         return {};
     }
     const Value n = g.convertExplicit(args[1], g.elem(Elem::ULInt), at);
@@ -219,7 +220,7 @@ Value toDint(Codegen &g, const Value &v, SourceLocation at)
     if (!v.valid())
         return {};
     if (!v.untyped && !isIntegral(v.type)) {
-        g.error(at, QStringLiteral("A length or position must be an integer, not %1.").arg(typeName(v.type)));
+        g.error(at, QCoreApplication::translate("iec::interp::Compiler", "A length or position must be an integer, not %1.").arg(typeName(v.type)));
         return {};
     }
     return v.untyped ? g.coerce(v, g.elem(Elem::DInt), at) : g.convertExplicit(v, g.elem(Elem::DInt), at);
@@ -229,7 +230,7 @@ bool needString(Codegen &g, const Value &v, const char *name, SourceLocation at)
 {
     if (isString(v.type))
         return true;
-    g.error(at, QStringLiteral("%1 needs a STRING or WSTRING, not %2.").arg(QLatin1String(name), typeName(v.type)));
+    g.error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 needs a STRING or WSTRING, not %2.").arg(QLatin1String(name), typeName(v.type)));
     return false;
 }
 
@@ -254,7 +255,7 @@ Value timeFunction(Codegen &g, const char *op, Elem left, Elem right, std::vecto
             return true;
         if (v.type->kind == TypeKind::Elementary && (v.type->elem == e || (e == Elem::LInt && (isIntegral(v.type) || isReal(v.type)))))
             return true;
-        g.error(at, QStringLiteral("This time function needs a %1, not %2.").arg(QLatin1String(info(e).name), typeName(v.type)));
+        g.error(at, QCoreApplication::translate("iec::interp::Compiler", "This time function needs a %1, not %2.").arg(QLatin1String(info(e).name), typeName(v.type)));
         return false;
     };
     if (!check(args[0], left) || !check(args[1], right))
@@ -278,7 +279,7 @@ const std::vector<StdFunction> &table()
                              return negative.valid() && negative.constant.i ? g.unary(QStringLiteral("-"), v, at) : v;
                          }
                          if (!isIntegral(v.type) && !isReal(v.type)) {
-                             g.error(at, QStringLiteral("ABS needs a number, not %1.").arg(typeName(v.type)));
+                             g.error(at, QCoreApplication::translate("iec::interp::Compiler", "ABS needs a number, not %1.").arg(typeName(v.type)));
                              return {};
                          }
                          const std::uint32_t out = g.temp(v.type);
@@ -287,7 +288,7 @@ const std::vector<StdFunction> &table()
                      }});
         t.push_back({"TRUNC", {"IN"}, false, [](Codegen &g, std::vector<Value> &a, SourceLocation at, const Place *) {
                          if (!a[0].untyped && !isReal(a[0].type)) {
-                             g.error(at, QStringLiteral("TRUNC needs a REAL or LREAL, not %1.").arg(typeName(a[0].type)));
+                             g.error(at, QCoreApplication::translate("iec::interp::Compiler", "TRUNC needs a REAL or LREAL, not %1.").arg(typeName(a[0].type)));
                              return Value{};
                          }
                          return g.convertExplicit(a[0], g.elem(Elem::DInt), at, true);
@@ -322,14 +323,14 @@ const std::vector<StdFunction> &table()
                          }});
         }
         t.push_back({"SEL", {"G", "IN0", "IN1"}, false, [](Codegen &g, std::vector<Value> &a, SourceLocation at, const Place *) {
-                         const Value selector = g.coerce(a[0], g.boolType(), at, QStringLiteral("(the G input of SEL)"));
+                         const Value selector = g.coerce(a[0], g.boolType(), at, QCoreApplication::translate("iec::interp::Compiler", "(the G input of SEL)"));
                          if (!selector.valid())
                              return Value{};
                          return select(g, selector, {a[1], a[2]}, "SEL", at);
                      }});
         t.push_back({"MUX", {"K", "IN"}, true, [](Codegen &g, std::vector<Value> &a, SourceLocation at, const Place *) {
                          if (!a[0].untyped && !isIntegral(a[0].type)) {
-                             g.error(at, QStringLiteral("The selector K of MUX must be an integer."));
+                             g.error(at, QCoreApplication::translate("iec::interp::Compiler", "The selector K of MUX must be an integer."));
                              return Value{};
                          }
                          return select(g, a[0], std::vector<Value>(a.begin() + 1, a.end()), "MUX", at);
@@ -467,7 +468,7 @@ const std::vector<StdFunction> &table()
                      }});
         t.push_back({"CONCAT_DATE_TOD", {"IN1", "IN2"}, false, [](Codegen &g, std::vector<Value> &a, SourceLocation at, const Place *) {
                          if (a[0].type->elem != Elem::Date || a[1].type->elem != Elem::Tod || a[0].type->kind != TypeKind::Elementary) {
-                             g.error(at, QStringLiteral("CONCAT_DATE_TOD needs a DATE and a TIME_OF_DAY."));
+                             g.error(at, QCoreApplication::translate("iec::interp::Compiler", "CONCAT_DATE_TOD needs a DATE and a TIME_OF_DAY."));
                              return Value{};
                          }
                          Value d = a[0], tod = a[1];
@@ -491,7 +492,7 @@ std::optional<Value> Codegen::standardFunction(const QString &name, std::vector<
     static const QRegularExpression legacyBcd(QStringLiteral("^([A-Z]+)_TO_BCD$"));
     const auto single = [&](const char *what) {
         if (args.size() != 1) {
-            error(at, QStringLiteral("%1 takes one argument.").arg(QLatin1String(what)));
+            error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 takes one argument.").arg(QLatin1String(what)));
             return false;
         }
         return true;
@@ -528,14 +529,14 @@ std::optional<Value> Codegen::standardFunction(const QString &name, std::vector<
                 const bool exact = v.type == from || (v.type->kind == TypeKind::Elementary && from->kind == TypeKind::Elementary && v.type->elem == from->elem)
                     || (v.type->kind == TypeKind::String && from->kind == TypeKind::String && v.type->wide == from->wide);
                 if (!exact) {
-                    v = coerce(v, from, at, QStringLiteral("(the input of %1)").arg(name));
+                    v = coerce(v, from, at, QCoreApplication::translate("iec::interp::Compiler", "(the input of %1)").arg(name));
                     if (!v.valid())
                         return Value{};
                 }
             }
             if (kind == QLatin1String("BCD_TO")) {
                 if (!isBits(v.type) || v.type->elem == Elem::Bool) {
-                    error(at, QStringLiteral("%1 needs a bit string holding BCD digits.").arg(name));
+                    error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 needs a bit string holding BCD digits.").arg(name));
                     return Value{};
                 }
                 return bcd(v, to, true);
@@ -571,7 +572,7 @@ std::optional<Value> Codegen::standardFunction(const QString &name, std::vector<
                         position = base == QLatin1String("IN") && QLatin1String(f.parameters.back()) == QLatin1String("IN") ? n + 1 : n - 1;
                 }
                 if (position < 0 || size_t(position) >= ordered.size() || set[size_t(position)]) {
-                    error(at, QStringLiteral("%1 has no parameter called %2.").arg(name, names[i]));
+                    error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 has no parameter called %2.").arg(name, names[i]));
                     return Value{};
                 }
                 ordered[size_t(position)] = args[i];
@@ -580,12 +581,12 @@ std::optional<Value> Codegen::standardFunction(const QString &name, std::vector<
             args = ordered;
         }
         if (args.size() < fixed || (!f.extensible && args.size() > fixed)) {
-            error(at, QStringLiteral("%1 takes %2%3 argument(s), not %4.").arg(name, f.extensible ? QStringLiteral("at least ") : QString()).arg(fixed).arg(args.size()));
+            error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 takes %2%3 argument(s), not %4.").arg(name, f.extensible ? QCoreApplication::translate("iec::interp::Compiler", "at least ") : QString()).arg(fixed).arg(args.size()));
             return Value{};
         }
         for (const Value &v : args) {
             if (!v.valid()) {
-                error(at, QStringLiteral("An argument of %1 is missing.").arg(name));
+                error(at, QCoreApplication::translate("iec::interp::Compiler", "An argument of %1 is missing.").arg(name));
                 return Value{};
             }
         }

@@ -4,6 +4,8 @@
 
 #include "interpreter/compiler/codegen.h"
 
+#include <QCoreApplication>
+
 namespace iec::interp::detail {
 
 inline bool isNumeric(const Type *t)
@@ -116,7 +118,7 @@ inline QString conversionHint(const Type *from, const Type *to)
 {
     if (from && to && from->isElementary() && to->isElementary() && from->kind == TypeKind::Elementary
         && to->kind == TypeKind::Elementary)
-        return QStringLiteral("convert it explicitly, e.g. %1_TO_%2(...)").arg(info(from->elem).name, info(to->elem).name);
+        return QCoreApplication::translate("iec::interp::Compiler", "convert it explicitly, e.g. %1_TO_%2(...)").arg(info(from->elem).name, info(to->elem).name);
     return {};
 }
 

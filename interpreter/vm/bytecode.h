@@ -34,7 +34,9 @@ constexpr std::uint32_t kOffsetMask = 0x7fffffffu;
     X(FromStr)                                            /* a = value of the STRING b; aux as ToStr */    \
     X(Bcd)                                                /* a = BCD of b (aux 0) or binary of BCD b (1) */ \
     X(BrEq) X(BrNe) X(BrLt) X(BrLe) X(BrGt) X(BrGe)       /* if b op c: pc = a (fused compare and jump) */ \
-    X(IncBrLe) X(IncBrGe)                                 /* FOR: a += b; if a <= c (>= c): pc = d */
+    X(IncBrLe) X(IncBrGe)                                 /* FOR: a += b; if a <= c (>= c): pc = d */     \
+    X(IncBrLt) X(IncBrGt)                                 /* WHILE i < n DO ... i := i + s: the same */    \
+    X(MulAdd)                                             /* a = b * c + d (wraps like Mul then Add) */
 
 #define IEC_PLAIN_OPS(X)                                                                                    \
     X(Nop)                                                                                                   \
@@ -56,13 +58,24 @@ constexpr std::uint32_t kOffsetMask = 0x7fffffffu;
     X(Store1) X(Store2) X(Store4) X(Store8) X(StoreN)    /* bytes at the address in a = b (d bytes) */     \
     X(LoadIdx1) X(LoadIdx2) X(LoadIdx4) X(LoadIdx8)       /* a = element c of the array at b (Index+Load) */\
     X(StoreIdx1) X(StoreIdx2) X(StoreIdx4) X(StoreIdx8)   /* element c of the array at a = d (Index+Store)*/\
+    X(LoadIdxMA1) X(LoadIdxMA2) X(LoadIdxMA4) X(LoadIdxMA8) /* a = element c * d + e of the array at b   \
+                                                              (MulAdd+Index+Load: a[i * 24 + k]) */        \
     X(BoolAndNot)                                         /* a = b AND NOT c (BOOL) */                      \
     X(BoolAndOr)                                          /* a = (b AND c) OR d (BOOL): contacts in series, \
                                                               parallel to a branch */                         \
     X(BoolOrAnd)                                          /* a = (b OR c) AND d (BOOL) */                   \
     X(NativeFb)                                           /* standard FB aux (NativeBlock) on instance a */ \
     X(NativeFbPtr)                                        /* ... with the instance at the address in a */  \
-    X(NativeFbArgs)                                       /* IN := b, PT := c, then NativeFb on a */       \
+    X(NativeFbArgs)                                       /* IN := b, PT := c, then NativeFb on a; then  \
+                                                              e := Q unless e is 0 */                       \
+    X(BoolAndNotOrAnd)                                    /* a = (b AND NOT c) OR (d AND e) (BOOL): a rung \
+                                                              with a normally closed contact and a branch */\
+    X(BoolAndNotOrAndRel)                                 /* the same, all five operands instance-relative \
+                                                              offsets without kInstanceRelative (rungs on \
+                                                              a program's own variables: no select) */      \
+    X(RungBlock)                                          /* the run of c BoolAndNotOrAndRel starting here, \
+                                                              from Module::rungs[b...] (packed), then skips \
+                                                              them; a jump into the run runs the rest */    \
     X(StrMov)                                             /* string a = string b (checks the capacity);     \
                                                               aux bit 0: a is wide, bit 1: b is wide */      \
     X(StrConcat)                                          /* a = b & c */                                   \
@@ -75,6 +88,8 @@ constexpr std::uint32_t kOffsetMask = 0x7fffffffu;
     X(StrReplace)                                         /* a = REPLACE(b, c, DINT d = L, DINT d+4 = P) */ \
     X(StrFind)                                            /* a (DINT) = FIND(b, c) */                       \
     X(Now)                                                /* a (LTIME) = the virtual clock */               \
+    X(CheckRange)                                         /* fault unless b lies in descriptor aux's range \
+                                                              (an assignment to a subrange type) */         \
     X(Fault)                                              /* stop with the fault kind in aux */
 
 namespace op {
@@ -115,6 +130,15 @@ struct Instr {
     std::uint16_t op = op::Nop;
     std::uint16_t aux = 0;
     std::uint32_t a = 0, b = 0, c = 0, d = 0;
+    std::uint32_t e = 0; // the fifth operand of a few superinstructions (24 bytes in all)
+};
+
+// One rung of op::RungBlock: out = (in[b] AND NOT in[c]) OR (in[d] AND in[e]), every byte at
+// instance + a + delta. Half the size of the instruction it stands for, so long runs of rungs
+// stream through the cache faster.
+struct RungRecord {
+    std::uint32_t a = 0;
+    std::int16_t b = 0, c = 0, d = 0, e = 0;
 };
 
 // Bounds of one array dimension for op::Index.
@@ -134,6 +158,7 @@ enum class FaultKind : std::uint16_t {
     BudgetExceeded,
     CallDepthExceeded,
     InvalidProgram,
+    OutOfSubrange,
 };
 QString faultMessage(FaultKind kind);
 
@@ -194,6 +219,7 @@ struct Module {
     std::shared_ptr<TypeTable> types;
     std::vector<Instr> code;
     std::vector<IndexDescriptor> indexDescriptors;
+    std::vector<RungRecord> rungs;
     std::vector<std::uint8_t> initialImage;
     std::vector<CompiledPou> pous;
     std::vector<ProgramInstance> programs;

@@ -50,6 +50,10 @@ QString disassemble(const Module &module, std::uint32_t from, std::uint32_t to)
                     .arg(operand(i.a), operand(i.b), operand(i.c))
                     .arg(i.d)
                     .arg(i.aux);
+        if (i.e != 0) {
+            text.chop(1);
+            text += QStringLiteral(" e=%1\n").arg(operand(i.e));
+        }
     }
     return text;
 }

@@ -5,6 +5,8 @@
 #include "interpreter/compiler/literals.h"
 #include "interpreter/runtime/valueformat.h"
 
+#include <QCoreApplication>
+
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -18,13 +20,15 @@ QString faultMessage(FaultKind kind)
 {
     switch (kind) {
     case FaultKind::None: return {};
-    case FaultKind::DivisionByZero: return QStringLiteral("Integer division by zero.");
-    case FaultKind::IndexOutOfRange: return QStringLiteral("Array index out of range.");
-    case FaultKind::StringOverflow: return QStringLiteral("The text does not fit into the string variable.");
+    case FaultKind::DivisionByZero: return QCoreApplication::translate("iec::interp::Runtime", "Integer division by zero.");
+    case FaultKind::IndexOutOfRange: return QCoreApplication::translate("iec::interp::Runtime", "Array index out of range.");
+    case FaultKind::StringOverflow: return QCoreApplication::translate("iec::interp::Runtime", "The text does not fit into the string variable.");
     case FaultKind::BudgetExceeded:
-        return QStringLiteral("The program ran too long in one cycle; is there an endless loop?");
-    case FaultKind::CallDepthExceeded: return QStringLiteral("Calls are nested too deeply.");
-    case FaultKind::InvalidProgram: return QStringLiteral("The program cannot run (it did not compile).");
+        return QCoreApplication::translate("iec::interp::Runtime", "The program ran too long in one cycle; is there an endless loop?");
+    case FaultKind::CallDepthExceeded: return QCoreApplication::translate("iec::interp::Runtime", "Calls are nested too deeply.");
+    case FaultKind::InvalidProgram: return QCoreApplication::translate("iec::interp::Runtime", "The program cannot run (it did not compile).");
+    case FaultKind::OutOfSubrange:
+        return QCoreApplication::translate("iec::interp::Runtime", "A value outside the subrange of its type was assigned.");
     }
     return {};
 }
@@ -366,6 +370,23 @@ T bcd(T v, bool toBinary)
         return v;
 }
 
+// The index c * d + e of op::LoadIdxMA, wrapped like the index expression's type.
+template<typename T>
+std::int64_t mulAddOf(const std::uint8_t *c, const std::uint8_t *d, const std::uint8_t *e)
+{
+    // In 64-bit unsigned: 16-bit operands would be promoted to int, whose overflow is undefined.
+    using W = std::uint64_t;
+    return static_cast<T>(static_cast<W>(load<T>(c)) * static_cast<W>(load<T>(d)) + static_cast<W>(load<T>(e)));
+}
+std::int64_t mulAddIndex(VT vt, const std::uint8_t *c, const std::uint8_t *d, const std::uint8_t *e)
+{
+    if (vt == VT::I32)
+        return mulAddOf<std::int32_t>(c, d, e);
+    if (vt == VT::I16)
+        return mulAddOf<std::int16_t>(c, d, e);
+    return mulAddOf<std::int64_t>(c, d, e);
+}
+
 std::int64_t readIndex(const IndexDescriptor &dsc, const std::uint8_t *p)
 {
     // DINT and INT indices first, as plain (well predicted) branches; the rest through a table.
@@ -405,7 +426,7 @@ Vm::Vm(const Module &module)
 FaultKind Vm::run(std::uint32_t entry)
 {
     struct Frame {
-        std::uint32_t pc;
+        const Instr *ip; // where to go on
         std::uint8_t *base;
     };
     std::array<Frame, 256> frames;
@@ -416,13 +437,17 @@ FaultKind Vm::run(std::uint32_t entry)
     std::uint8_t *inst = mem;
     const Instr *const code = m_module.code.data();
     const IndexDescriptor *const descriptors = m_module.indexDescriptors.data();
-    std::uint32_t pc = entry;
+    const RungRecord *const rungs = m_module.rungs.data();
+    if (entry >= m_module.code.size()) {
+        m_faultPc = entry;
+        return FaultKind::InvalidProgram;
+    }
     std::uint64_t budget = budgetPerRun;
 
 #define P(operand) (((operand) & kInstanceRelative ? inst : mem) + ((operand) & kOffsetMask))
 #define FAULT(kind)                                                                                                \
     do {                                                                                                           \
-        m_faultPc = pc;                                                                                            \
+        m_faultPc = static_cast<std::uint32_t>(ip - code);                                                         \
         return (kind);                                                                                             \
     } while (false)
     // Macros, not lambdas: a lambda would capture `inst` as it was, or take its address.
@@ -469,15 +494,22 @@ FaultKind Vm::run(std::uint32_t entry)
         IEC_PLAIN_OPS(IEC_PLAIN_LABEL)
 #undef IEC_PLAIN_LABEL
     };
-    const Instr *ip = code + pc;
-#define DISPATCH()                                                                                                 \
-    do {                                                                                                           \
-        ip = code + pc;                                                                                            \
-        goto *dispatch[ip->op];                                                                                    \
-    } while (false)
+    // The instruction pointer is the one piece of state: the next instruction is ip + 1, a jump
+    // sets it from the target's index, and the pc of a fault is ip - code.
+    const Instr *ip = code + entry;
+#define DISPATCH() goto *dispatch[ip->op]
 #define NEXT()                                                                                                     \
     do {                                                                                                           \
-        ++pc;                                                                                                      \
+        ++ip;                                                                                                      \
+        DISPATCH();                                                                                                \
+    } while (false)
+    // A jump to `target`; backward jumps count against the budget, so an endless loop stops.
+#define JUMP(target)                                                                                               \
+    do {                                                                                                           \
+        const Instr *const to = code + (target);                                                                   \
+        if (to <= ip && --budget == 0)                                                                             \
+            FAULT(FaultKind::BudgetExceeded);                                                                      \
+        ip = to;                                                                                                   \
         DISPATCH();                                                                                                \
     } while (false)
     if (ip->op >= op::Count)
@@ -527,12 +559,8 @@ FaultKind Vm::run(std::uint32_t entry)
             IEC_ALL_VT(Max, { const Ty b = B, c = C; SET(c > b ? c : b); })
 #define IEC_BRANCH(family, cmp)                                                                                    \
     IEC_ALL_VT(family, {                                                                                           \
-        if (B cmp C) {                                                                                             \
-            if (ip->a <= pc && --budget == 0)                                                                        \
-                FAULT(FaultKind::BudgetExceeded);                                                                  \
-            pc = ip->a;                                                                                              \
-            DISPATCH();                                                                                              \
-        }                                                                                                          \
+        if (B cmp C)                                                                                               \
+            JUMP(ip->a);                                                                                           \
     })
             IEC_BRANCH(BrEq, ==)
             IEC_BRANCH(BrNe, !=)
@@ -548,12 +576,15 @@ FaultKind Vm::run(std::uint32_t entry)
         if (next cmp C) {                                                                                          \
             if (--budget == 0)                                                                                     \
                 FAULT(FaultKind::BudgetExceeded);                                                                  \
-            pc = ip->d;                                                                                            \
+            ip = code + ip->d;                                                                                     \
             DISPATCH();                                                                                            \
         }                                                                                                          \
     })
             IEC_STEP(IncBrLe, <=)
             IEC_STEP(IncBrGe, >=)
+            IEC_STEP(IncBrLt, <)
+            IEC_STEP(IncBrGt, >)
+            IEC_ALL_VT(MulAdd, SET(wrapAdd<Ty>(wrapMul<Ty>(B, C), load<Ty>(P(ip->d))));)
 #undef IEC_STEP
             IEC_ALL_VT(Eq, SETBOOL(B == C);)
             IEC_ALL_VT(Ne, SETBOOL(B != C);)
@@ -634,18 +665,14 @@ FaultKind Vm::run(std::uint32_t entry)
         L_MovN: std::memmove(P(ip->a), P(ip->b), ip->d); NEXT();
         L_BoolNot: *P(ip->a) = *P(ip->b) ^ 1u; NEXT();
         L_Jmp:
-            if (ip->a <= pc && --budget == 0)
-                FAULT(FaultKind::BudgetExceeded);
-            pc = ip->a;
-            DISPATCH();
+            JUMP(ip->a);
         L_Jz:
+            if (*P(ip->b) == 0)
+                JUMP(ip->a);
+            NEXT();
         L_Jnz:
-            if ((*P(ip->b) != 0) == (ip->op == op::Jnz)) {
-                if (ip->a <= pc && --budget == 0)
-                    FAULT(FaultKind::BudgetExceeded);
-                pc = ip->a;
-                DISPATCH();
-            }
+            if (*P(ip->b) != 0)
+                JUMP(ip->a);
             NEXT();
         L_CallFb:
         L_CallFbPtr:
@@ -654,19 +681,19 @@ FaultKind Vm::run(std::uint32_t entry)
                 FAULT(FaultKind::CallDepthExceeded);
             if (--budget == 0)
                 FAULT(FaultKind::BudgetExceeded);
-            frames[depth++] = {pc + 1, inst};
+            frames[depth++] = {ip + 1, inst};
             if (ip->op == op::CallFb)
                 inst = P(ip->a);
             else if (ip->op == op::CallFbPtr)
                 inst = mem + load<std::uint32_t>(P(ip->a));
-            pc = m_module.pous[ip->aux].entry;
+            ip = code + m_module.pous[ip->aux].entry;
             DISPATCH();
         }
         L_Ret:
             if (depth == 0)
                 return FaultKind::None;
             --depth;
-            pc = frames[depth].pc;
+            ip = frames[depth].ip;
             inst = frames[depth].base;
             DISPATCH();
         L_Halt:
@@ -709,6 +736,20 @@ FaultKind Vm::run(std::uint32_t entry)
             IEC_INDEXED(4)
             IEC_INDEXED(8)
 #undef IEC_INDEXED
+#define IEC_INDEXED_MA(size)                                                                                       \
+    L_LoadIdxMA##size: {                                                                                           \
+        const IndexDescriptor &dsc = descriptors[ip->aux];                                                          \
+        const std::int64_t index = mulAddIndex(dsc.indexType, P(ip->c), P(ip->d), P(ip->e)) - dsc.low;              \
+        if (index < 0 || index >= dsc.count)                                                                       \
+            FAULT(FaultKind::IndexOutOfRange);                                                                     \
+        std::memcpy(P(ip->a), P(ip->b) + static_cast<std::uint32_t>(index) * dsc.stride, size);                    \
+        NEXT();                                                                                                     \
+    }
+            IEC_INDEXED_MA(1)
+            IEC_INDEXED_MA(2)
+            IEC_INDEXED_MA(4)
+            IEC_INDEXED_MA(8)
+#undef IEC_INDEXED_MA
         L_BoolAndNot:
             *P(ip->a) = static_cast<std::uint8_t>(*P(ip->b) & (*P(ip->c) ^ 1u));
             NEXT();
@@ -726,7 +767,30 @@ FaultKind Vm::run(std::uint32_t entry)
             instance[0] = *P(ip->b);
             std::memcpy(instance + 8, P(ip->c), 8);
             runNativeBlock(static_cast<NativeBlock>(ip->aux), instance, clockNs);
+            if (ip->e != 0)
+                *P(ip->e) = instance[16]; // Q, see nativeblocks.h
             NEXT();
+        }
+        L_BoolAndNotOrAnd:
+            *P(ip->a) = static_cast<std::uint8_t>((*P(ip->b) & (*P(ip->c) ^ 1u)) | (*P(ip->d) & *P(ip->e)));
+            NEXT();
+        L_BoolAndNotOrAndRel:
+            // Rungs come in runs: a local loop over them replaces an indirect jump per rung by a
+            // well-predicted branch.
+            do {
+                inst[ip->a] = static_cast<std::uint8_t>((inst[ip->b] & (inst[ip->c] ^ 1u)) | (inst[ip->d] & inst[ip->e]));
+                ++ip;
+            } while (ip->op == op::BoolAndNotOrAndRel);
+            DISPATCH();
+        L_RungBlock: {
+            const RungRecord *r = rungs + ip->b;
+            const RungRecord *const end = r + ip->c;
+            for (; r != end; ++r) {
+                std::uint8_t *const out = inst + r->a;
+                *out = static_cast<std::uint8_t>((out[r->b] & (out[r->c] ^ 1u)) | (out[r->d] & out[r->e]));
+            }
+            ip += ip->c;
+            DISPATCH();
         }
         L_NativeFbPtr:
             runNativeBlock(static_cast<NativeBlock>(ip->aux), mem + load<std::uint32_t>(P(ip->a)), clockNs);
@@ -842,6 +906,13 @@ FaultKind Vm::run(std::uint32_t entry)
         L_Now:
             store<std::int64_t>(P(ip->a), clockNs);
             NEXT();
+        L_CheckRange: {
+            const IndexDescriptor &dsc = descriptors[ip->aux];
+            const std::int64_t offset = readIndex(dsc, P(ip->b)) - dsc.low;
+            if (offset < 0 || offset >= dsc.count)
+                FAULT(FaultKind::OutOfSubrange);
+            NEXT();
+        }
         L_Fault:
             FAULT(static_cast<FaultKind>(ip->aux));
     }

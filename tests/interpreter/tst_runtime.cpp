@@ -58,6 +58,18 @@ void TestRuntime::faults_data()
                                      << 5 << QStringLiteral("Main:3: The text does not fit into the string variable. (cycle 3)");
     QTest::newRow("endless loop") << QStringLiteral("PROGRAM Main\nVAR i : INT; END_VAR\nWHILE TRUE DO\n  i := i + 1;\nEND_WHILE;\nEND_PROGRAM")
                                   << 1 << QStringLiteral("Main:3: The program ran too long in one cycle; is there an endless loop? (cycle 1)");
+    QTest::newRow("endless loop with a counted test")
+        << QStringLiteral("PROGRAM Main\nVAR i : INT; END_VAR\nWHILE i >= 0 DO\n  i := i + 0;\nEND_WHILE;\nEND_PROGRAM")
+        << 1 << QStringLiteral("Main:3: The program ran too long in one cycle; is there an endless loop? (cycle 1)");
+    QTest::newRow("index out of range from a computed index")
+        << QStringLiteral("PROGRAM Main\nVAR a : ARRAY[0..3] OF DINT; i : DINT; x : DINT; END_VAR\ni := i + 1;\nx := a[i * 2 + 1];\nEND_PROGRAM")
+        << 5 << QStringLiteral("Main:4: Array index out of range. (cycle 2)");
+    QTest::newRow("subrange") << QStringLiteral("TYPE Percent : INT (0..100); END_TYPE\nPROGRAM Main\nVAR p : Percent; END_VAR\np := p + 40;\nEND_PROGRAM")
+                              << 5 << QStringLiteral("Main:4: A value outside the subrange of its type was assigned. (cycle 3)");
+    QTest::newRow("subrange below") << QStringLiteral("TYPE Small : DINT (-2..2); END_TYPE\nPROGRAM Main\nVAR s : Small; a : ARRAY[0..3] OF Small; k : DINT; END_VAR\nk := k - 1;\na[1] := k;\nEND_PROGRAM")
+                                    << 5 << QStringLiteral("Main:5: A value outside the subrange of its type was assigned. (cycle 3)");
+    QTest::newRow("fault in an action") << QStringLiteral("PROGRAM Main\nVAR a : INT; END_VAR\nDivide();\nACTION Divide:\n\na := 1 / a;\nEND_ACTION\nEND_PROGRAM")
+                                        << 1 << QStringLiteral("Main.Divide:6: Integer division by zero. (cycle 1)");
     QTest::newRow("endless IL loop") << QStringLiteral("PROGRAM Main\nVAR i : INT; END_VAR\nL: LD i\nADD 1\nST i\nJMP L\nEND_PROGRAM")
                                      << 1 << QStringLiteral("Main:6: The program ran too long in one cycle; is there an endless loop? (cycle 1)");
 }

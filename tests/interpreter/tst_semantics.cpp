@@ -83,6 +83,10 @@ void TestSemantics::diagnostics_data()
         "Main:2:14: error: There is no global variable limit for this VAR_EXTERNAL. (hint: declare it in VAR_GLOBAL)");
     row("negating unsigned", "PROGRAM Main\nVAR u : UINT; END_VAR\nu := -u;\nEND_PROGRAM",
         "Main:3:6: error: A UINT cannot be negated.");
+    row("constant outside a subrange", "TYPE Percent : INT (0..100); END_TYPE\nPROGRAM Main\nVAR p : Percent; END_VAR\np := 101;\nEND_PROGRAM",
+        "Main:4:1: error: The value 101 is outside the range 0..100 of Percent.");
+    row("action with arguments", "PROGRAM Main\nVAR n : INT; END_VAR\nReset(1);\nACTION Reset:\nn := 0;\nEND_ACTION\nEND_PROGRAM",
+        "Main:3:1: error: The action Main.Reset takes no arguments.");
     row("program selection", "PROGRAM A\nEND_PROGRAM\nPROGRAM B\nEND_PROGRAM\nCONFIGURATION C\nTASK T(INTERVAL := T#10ms);\nPROGRAM P WITH T : Nope;\nEND_CONFIGURATION",
         "C:7:9: error: There is no PROGRAM called Nope.");
 }

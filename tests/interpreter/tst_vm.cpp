@@ -155,6 +155,30 @@ void TestVm::statements_data()
         {"=> n=7; m=8"});
     row("return", "VAR a : INT; b : INT; END_VAR\na := 1; IF a = 1 THEN RETURN; END_IF; b := 5;", {"=> a=1; b=0"});
     row("values persist between cycles", "VAR n : INT; END_VAR\nn := n + 1;", {"=> n=1", "=> n=2", "=> n=3"});
+    // Loops whose step and test become one instruction (IncBr*): each comparison, not entered,
+    // step read from a variable, wraparound of the step, and an IF that jumps to the test.
+    row("while step fused <=", "VAR j : INT; n : INT; s : INT := 3; END_VAR\nj := 1; n := 0; WHILE j <= 10 DO n := n + j; j := j + s; END_WHILE;", {"=> n=22; j=13"});
+    row("while step fused <", "VAR j : DINT; n : DINT; END_VAR\nj := 0; n := 0; WHILE j < 10 DO n := n + 1; j := 2 + j; END_WHILE;", {"=> n=5; j=10"});
+    row("while step fused >= and >", "VAR j : INT; n : INT; k : INT; m : INT; END_VAR\nj := 10; n := 0; WHILE j >= 0 DO n := n + 1; j := j - 3; END_WHILE;\n"
+        "k := 10; m := 0; WHILE k > 0 DO m := m + 1; k := k + -4; END_WHILE;", {"=> n=4; j=-2; m=3; k=-2"});
+    row("while not entered", "VAR j : INT := 50; n : INT; END_VAR\nWHILE j <= 10 DO n := n + 1; j := j + 1; END_WHILE;", {"=> n=0; j=50"});
+    row("while step wraps", "VAR j : SINT; n : INT; END_VAR\nj := 120; n := 0; WHILE j > 100 DO n := n + 1; j := j + 5; END_WHILE;", {"=> n=2; j=-126"});
+    row("while step inside if is not fused", "VAR j : INT; n : INT; END_VAR\nj := 0; n := 0; WHILE j < 4 AND n < 100 DO n := n + 1; IF n MOD 2 = 0 THEN j := j + 1; END_IF; END_WHILE;",
+        {"=> n=8; j=4"});
+    row("while step then test of another variable", "VAR j : INT; k : INT; END_VAR\nj := 0; k := 0; WHILE k < 3 DO k := k + 1; j := j + 1; END_WHILE;", {"=> j=3; k=3"});
+    // Multiply and add in one instruction (MulAdd): wraparound and REAL rounding as two steps.
+    expr("muladd int wraps", "a : INT := 300; b : INT := 300; c : INT := 7; r : INT; s : INT;", "r := a * b + c; s := c + a * b;", "r=24471; s=24471");
+    expr("muladd real", "x : REAL := 1.5; y : REAL := 2.0; z : REAL := 0.25; r : REAL; s : LREAL := 0.5;", "r := x * y + z; s := s + LREAL#3.0 * s;", "r=3.25; s=2.0");
+    expr("muladd index", "a : ARRAY[0..11] OF INT; i : INT := 2; j : INT := 3; v : INT; w : INT;",
+         "a[i * 4 + j] := 7; v := a[11]; w := a[i * 4 + j] + a[j * 1 + 0];", "v=7; w=7");
+    expr("muladd index wraps", "a : ARRAY[0..3] OF DINT := [1, 2, 3, 4]; i : INT := 16384; v : DINT;", "v := a[i * 4 + 2];", "v=3");
+    // Rungs: (a AND NOT b) OR (c AND d) in one instruction, on variables and on temporaries.
+    expr("rung fused", "a : BOOL := TRUE; b : BOOL; c : BOOL; d : BOOL := TRUE; k : INT := 1; o : BOOL; p : BOOL; q : BOOL;",
+         "o := (a AND NOT b) OR (c AND d); p := (a AND NOT a) OR (d AND (c OR a)); q := ((k > 0) AND NOT a) OR (d AND (k < 0));", "o=TRUE; p=TRUE; q=FALSE");
+    // Ten rungs in a row run as one RungBlock; each reads the one computed just before it.
+    row("rung block", "VAR a : BOOL := TRUE; b : BOOL; c : BOOL := TRUE; o0, o1, o2, o3, o4, o5, o6, o7, o8, o9 : BOOL; END_VAR\no0 := (a AND NOT b) OR (c AND o9); o1 := (o0 AND NOT a) OR (c AND o0); o2 := (o1 AND NOT a) OR (c AND o1); o3 := (o2 AND NOT a) OR (c AND o2); o4 := (o3 AND NOT a) OR (c AND o3); o5 := (o4 AND NOT a) OR (c AND o4); o6 := (o5 AND NOT a) OR (c AND o5); o7 := (o6 AND NOT a) OR (c AND o6); o8 := (o7 AND NOT a) OR (c AND o7); o9 := (o8 AND NOT a) OR (c AND o8);",
+        {"=> o0=TRUE; o5=TRUE; o9=TRUE", "a=FALSE; b=TRUE => o0=TRUE; o9=TRUE", "c=FALSE => o0=FALSE; o1=FALSE; o9=FALSE", "a=TRUE; b=FALSE => o0=TRUE; o1=FALSE; o9=FALSE"});
+    expr("rung fused false", "a : BOOL := TRUE; b : BOOL := TRUE; c : BOOL := TRUE; d : BOOL; o : BOOL := TRUE;", "o := (a AND NOT b) OR (c AND d);", "o=FALSE");
 }
 
 void TestVm::data_data()
@@ -199,6 +223,19 @@ void TestVm::data_data()
 void TestVm::pous_data()
 {
     columns();
+    // CODESYS actions: called inside the POU, on FB instances from outside, from IL with CAL.
+    row("action inside the program", "PROGRAM Main\nVAR n : INT; END_VAR\nn := n + 1; IF n = 3 THEN Reset(); END_IF;\n"
+        "ACTION Reset:\nn := 100;\nEND_ACTION\nEND_PROGRAM", {"=> n=1", "=> n=2", "=> n=100", "=> n=101"});
+    row("action of an instance",
+        "FUNCTION_BLOCK Counter\nVAR_OUTPUT cv : INT; END_VAR\ncv := cv + 1;\nACTION Clear:\ncv := 0;\nEND_ACTION\nEND_FUNCTION_BLOCK\n"
+        "PROGRAM Main\nVAR c1 : Counter; c2 : Counter; a : INT; b : INT; END_VAR\nc1(); c2(); c2(); IF c1.cv >= 2 THEN c1.Clear(); END_IF; a := c1.cv; b := c2.cv;\nEND_PROGRAM",
+        {"=> a=1; b=2", "=> a=0; b=4", "=> a=1; b=6"});
+    row("action called with CAL in IL",
+        "FUNCTION_BLOCK Lamp\nVAR_OUTPUT on : BOOL; END_VAR\nACTION Switch:\non := NOT on;\nEND_ACTION\nEND_FUNCTION_BLOCK\n"
+        "PROGRAM Main\nVAR l : Lamp; x : BOOL; END_VAR\nCAL l.Switch\nLD l.on\nST x\nEND_PROGRAM",
+        {"=> x=TRUE", "=> x=FALSE"});
+    row("IL action inside its POU",
+        "PROGRAM Main\nVAR n : INT; END_VAR\nCAL Bump\nCAL Bump\nACTION Bump:\nLD n\nADD 1\nST n\nEND_ACTION\nEND_PROGRAM", {"=> n=2", "=> n=4"});
     row("function positional and formal",
         "FUNCTION Scale : REAL VAR_INPUT x : REAL; k : REAL := 2.0; END_VAR Scale := x * k; END_FUNCTION\n"
         "PROGRAM Main VAR a : REAL; b : REAL; c : REAL; END_VAR\na := Scale(1.5, 3.0); b := Scale(x := 4.0); c := Scale(k := 10.0, x := Scale(1.0));\nEND_PROGRAM",

@@ -3,6 +3,7 @@
 
 #include "model/undo/datatypecommands.h"
 #include "model/undo/elementcommands.h"
+#include "model/undo/instancecommands.h"
 #include "model/undo/partcommands.h"
 #include "model/undo/poucommands.h"
 #include "model/undo/variablecommands.h"
@@ -23,6 +24,15 @@ struct CommandCase {
     std::function<QUndoCommand *(ProjectModel &)> make;
     std::function<bool(const ProjectModel &)> changedAsExpected; // checked after the first redo
 };
+
+// One configuration whose task and resource both run `program`.
+Instances plantConfiguration(const char *program)
+{
+    PouInstance instance {.name = QStringLiteral("Plant"), .typeName = QLatin1String(program)};
+    Task task {.name = QStringLiteral("Cyclic"), .interval = QStringLiteral("T#10ms"), .pouInstances = {instance}};
+    Resource resource {.name = QStringLiteral("Cpu"), .tasks = {task}, .pouInstances = {instance}};
+    return {.configurations = {{.name = QStringLiteral("Config"), .resources = {resource}}}};
+}
 
 BodyRef partOf(const ProjectModel &model, const char *pou, BodyRef::Part part, const char *name)
 {
@@ -230,6 +240,9 @@ const std::vector<CommandCase> &commandCases()
                 return m.body(partOf(m, "Motor", BodyRef::Part::Transition, "Done"))->text()
                     == QLatin1String("LD TRUE");
             }},
+        {"set configurations",
+            [](ProjectModel &m) { return new SetInstancesCommand(m, plantConfiguration("Motor")); },
+            [](const ProjectModel &m) { return m.project().instances == plantConfiguration("Motor"); }},
     };
     return cases;
 }
@@ -247,6 +260,7 @@ private Q_SLOTS:
     void repeatedEditsMerge();
     void editsOfDifferentThingsDoNotMerge();
     void commandsHaveTexts();
+    void programRenameReachesTasksAndResources();
 };
 
 void TestUndoCommands::redoUndoRedo_data()
@@ -288,8 +302,6 @@ void TestUndoCommands::repeatedEditsMerge_data()
     QTest::newRow("text") << 0 << 0 << QStringLiteral("text");
     QTest::newRow("variable") << 0 << 0 << QStringLiteral("variable");
     QTest::newRow("element") << 0 << 0 << QStringLiteral("element");
-    QTest::newRow("data type") << 0 << 0 << QStringLiteral("dataType");
-    QTest::newRow("interface") << 0 << 0 << QStringLiteral("interface");
     QTest::newRow("action rename") << 0 << 0 << QStringLiteral("actionRename");
 }
 
@@ -318,14 +330,6 @@ void TestUndoCommands::repeatedEditsMerge()
             auto contact = std::get<Contact>(*model.element(ladder, 2));
             contact.variable = text;
             stack.push(new ChangeElementCommand(model, ladder, contact));
-        } else if (kind == QLatin1String("dataType")) {
-            const QString name = step == 1 ? QStringLiteral("Colour") : QStringLiteral("step%1").arg(step - 1);
-            stack.push(ChangeDataTypeCommand::rename(model, name, text));
-        } else if (kind == QLatin1String("interface")) {
-            Interface declarations;
-            declarations.varLists.push_back({.kind = VarListKind::Local});
-            declarations.varLists.back().variables.push_back({.name = text});
-            stack.push(new SetInterfaceCommand(model, motor, declarations));
         } else if (kind == QLatin1String("actionRename")) {
             const QString name = step == 1 ? QStringLiteral("Reset") : QStringLiteral("step%1").arg(step - 1);
             stack.push(new RenamePouPartCommand(model, motor, BodyRef::Part::Action, name, text));
@@ -352,6 +356,16 @@ void TestUndoCommands::editsOfDifferentThingsDoNotMerge()
     stack.push(new RenamePouCommand(model, pouId(model, "Motor"), QStringLiteral("M")));
     stack.push(new RenamePouCommand(model, pouId(model, "Chart"), QStringLiteral("C")));
     QCOMPARE(stack.count(), 6);
+    // Declarations applied and data types changed are one gesture each, even of the same thing.
+    for (const char *name : {"a", "b"}) {
+        Interface declarations;
+        declarations.varLists.push_back({.kind = VarListKind::Local});
+        declarations.varLists.back().variables.push_back({.name = QString::fromLatin1(name)});
+        stack.push(new SetInterfaceCommand(model, pouId(model, "M"), declarations));
+    }
+    stack.push(ChangeDataTypeCommand::rename(model, QStringLiteral("Colour"), QStringLiteral("Hue")));
+    stack.push(ChangeDataTypeCommand::rename(model, QStringLiteral("Hue"), QStringLiteral("Tint")));
+    QCOMPARE(stack.count(), 10);
 }
 
 void TestUndoCommands::commandsHaveTexts()
@@ -367,4 +381,13 @@ void TestUndoCommands::commandsHaveTexts()
 }
 
 QTEST_GUILESS_MAIN(TestUndoCommands)
+void TestUndoCommands::programRenameReachesTasksAndResources()
+{
+    const std::optional<Instances> renamed
+        = instancesWithProgramRenamed(plantConfiguration("Motor"), QStringLiteral("MOTOR"), QStringLiteral("Drive"));
+    QVERIFY(renamed.has_value());
+    QCOMPARE(*renamed, plantConfiguration("Drive"));
+    QVERIFY(!instancesWithProgramRenamed(plantConfiguration("Motor"), QStringLiteral("Pump"), QStringLiteral("X")));
+}
+
 #include "tst_undocommands.moc"
