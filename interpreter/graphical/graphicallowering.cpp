@@ -1,24 +1,169 @@
 #include "interpreter/graphical/graphicallowering.h"
 
+#include "interpreter/graphical/astbuild.h"
+#include "interpreter/graphical/evaluator.h"
+#include "interpreter/graphical/network.h"
+
+#include "model/plcopen/reader.h"
+
 namespace iec::interp::graphical {
 
-// Placeholder until the LD/FBD lowering lands: says what cannot run.
+namespace {
+
+// Elements that have no meaning in an LD or FBD network.
+bool reportForeignElements(const Network &network, LoweringContext &context)
+{
+    bool ok = true;
+    for (const Node &node : network.nodes()) {
+        if (node.kind != NodeKind::Foreign && node.kind != NodeKind::Unsupported)
+            continue;
+        QString message;
+        if (const auto *vendor = std::get_if<model::VendorElement>(node.element)) {
+            message = QStringLiteral("The vendor element '%1' cannot run in this version.")
+                          .arg(vendor->alternativeText.text.trimmed());
+        } else if (std::holds_alternative<model::Error>(*node.element)) {
+            message = QStringLiteral("This element could not be read from the file, so it cannot run.");
+        } else {
+            message = QStringLiteral("A %1 belongs in an SFC chart, not in an LD or FBD network.")
+                          .arg(QLatin1String(model::elementTagName(*node.element)));
+        }
+        context.diagnostics.error(context.owner, elementLocation(node.localId), message);
+        ok = false;
+    }
+    return ok;
+}
+
+// Segment numbers of the labels (segment 0 runs from the start), upper-case names.
+std::map<QString, int> labelSegments(const Network &network, const std::vector<std::size_t> &roots,
+    LoweringContext &context)
+{
+    std::map<QString, int> labels;
+    int segment = 0;
+    for (const std::size_t root : roots) {
+        const auto *label = std::get_if<model::Label>(network.node(root).element);
+        if (!label)
+            continue;
+        ++segment;
+        if (!labels.try_emplace(label->label.trimmed().toUpper(), segment).second) {
+            context.diagnostics.error(context.owner, elementLocation(network.node(root).localId),
+                QStringLiteral("Two labels are called '%1'.").arg(label->label), QStringLiteral("rename one of them"));
+        }
+    }
+    return labels;
+}
+
+// pc := 0; WHILE TRUE DO IF pc <= 0 THEN (segment 0) END_IF; ... EXIT; END_WHILE
+// A jump sets pc to its label's segment and continues the loop, which skips the segments before.
+std::vector<ast::Stmt> segmentLoop(std::vector<std::vector<ast::Stmt>> segments, const QString &pc)
+{
+    const SourceLocation nowhere;
+    std::vector<ast::Stmt> loopBody;
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        if (segments[i].empty())
+            continue;
+        ast::Expr due = binaryExpr(QStringLiteral("<="), nameExpr(pc, nowhere), intLiteral(int(i), nowhere));
+        loopBody.push_back(ifStmt(std::move(due), std::move(segments[i])));
+    }
+    loopBody.push_back(simpleStmt(ast::StmtKind::Exit, nowhere));
+    ast::Stmt loop = simpleStmt(ast::StmtKind::While, nowhere);
+    loop.value = boolLiteral(true, nowhere);
+    loop.body = std::move(loopBody);
+    std::vector<ast::Stmt> result;
+    result.push_back(assignStmt(nameExpr(pc, nowhere), intLiteral(0, nowhere)));
+    result.push_back(std::move(loop));
+    return result;
+}
+
+} // namespace
+
 std::vector<ast::Stmt> lowerBody(const model::Body &body, LoweringContext &context)
 {
-    context.diagnostics.error(context.owner, {},
-        QStringLiteral("%1 is written in %2, which this version cannot run yet.")
-            .arg(context.owner, body.language() == model::BodyLanguage::LD ? QStringLiteral("LD") : QStringLiteral("FBD")),
-        QStringLiteral("write it in ST or IL to run it now"));
-    return {};
+    const std::vector<model::Element> *elements = body.elements();
+    if (!elements)
+        return {};
+    Network network(*elements, context.owner, context.diagnostics);
+    if (!reportForeignElements(network, context) || !network.ok() || !network.breakLoops(context.owner, context.diagnostics))
+        return {};
+    const std::vector<std::size_t> roots = network.rootOrder(body.layoutGenerated);
+    Evaluator evaluator(network, context, body.language() == model::BodyLanguage::LD);
+    const std::map<QString, int> labels = labelSegments(network, roots, context);
+    const bool jumps = std::ranges::any_of(network.nodes(), [](const Node &n) { return n.kind == NodeKind::Jump; });
+    const QString pc = jumps ? evaluator.hiddenVariable(QStringLiteral("jump"), namedType(QStringLiteral("INT"))) : QString();
+    evaluator.setJumpTargets(labels, pc);
+    std::vector<std::vector<ast::Stmt>> segments(1);
+    for (const std::size_t root : roots) {
+        if (network.node(root).kind == NodeKind::Label) {
+            segments.emplace_back();
+            continue;
+        }
+        evaluator.setSink(&segments.back());
+        evaluator.run(root);
+    }
+    evaluator.declareHidden();
+    if (jumps)
+        return segmentLoop(std::move(segments), pc);
+    std::vector<ast::Stmt> statements;
+    for (std::vector<ast::Stmt> &segment : segments)
+        std::ranges::move(segment, std::back_inserter(statements));
+    return statements;
 }
 
 std::optional<ast::Expr> lowerInput(const model::Body &body, const model::ConnectionPointIn &input,
     LoweringContext &context)
 {
-    Q_UNUSED(body);
-    Q_UNUSED(input);
-    context.diagnostics.error(context.owner, {},
-        QStringLiteral("Graphical conditions cannot run yet."));
+    const std::vector<model::Element> *elements = body.elements();
+    if (!elements)
+        return std::nullopt;
+    // The element the input belongs to, for the location of diagnostics.
+    quint64 owner = 0;
+    for (const model::Element &element : *elements) {
+        for (const model::ConnectionPointIn *point : model::inputPoints(element)) {
+            if (point == &input || (owner == 0 && *point == input)) // the caller may pass a copy
+                owner = model::header(element).localId;
+        }
+    }
+    Network network(*elements, context.owner, context.diagnostics);
+    if (!network.ok() || !network.breakLoops(context.owner, context.diagnostics))
+        return std::nullopt;
+    Evaluator evaluator(network, context, true);
+    evaluator.setSink(context.setup);
+    auto value = evaluator.valueOf(input, owner, QStringLiteral("This condition"));
+    evaluator.declareHidden();
+    if (!value)
+        return std::nullopt;
+    return std::move(value->expr);
+}
+
+std::optional<model::Body> cfcDiagram(const model::Body &body)
+{
+    if (body.language() != model::BodyLanguage::ST || !body.text().trimmed().isEmpty())
+        return std::nullopt;
+    for (const model::AddDataEntry &entry : body.addData) {
+        if (!entry.name.endsWith(QLatin1String("/plcopenxml/cfc"), Qt::CaseInsensitive))
+            continue;
+        // Read the diagram's elements as the FBD body of a one-POU project, with the reader that
+        // reads every other diagram.
+        QString inner = entry.content.trimmed();
+        const qsizetype open = inner.indexOf(QLatin1Char('>'));
+        const qsizetype close = inner.lastIndexOf(QLatin1String("</CFC>"));
+        if (!inner.startsWith(QLatin1String("<CFC")) || open < 0)
+            return std::nullopt;
+        inner = close > open ? inner.mid(open + 1, close - open - 1) : QString();
+        const QString xml = QStringLiteral("<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\"><types><dataTypes/><pous>"
+                                           "<pou name=\"CFC\" pouType=\"program\"><body><FBD>%1</FBD></body></pou>"
+                                           "</pous></types></project>")
+                                .arg(inner);
+        const model::plcopen::ReadResult read = model::plcopen::readProject(xml.toUtf8());
+        if (read.project.types.pous.empty() || !read.project.types.pous.front().body())
+            return std::nullopt;
+        model::Body diagram = *read.project.types.pous.front().body();
+        // CODESYS numbers the execution order from 0, which elsewhere (Beremiz) means "none".
+        for (model::Element &element : *diagram.elements()) {
+            if (auto &order = model::header(element).executionOrderId)
+                *order += 1;
+        }
+        return diagram;
+    }
     return std::nullopt;
 }
 

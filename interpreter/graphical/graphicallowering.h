@@ -23,10 +23,15 @@ struct LoweringContext {
     ast::Pou &pou;          // receives hidden VAR declarations
     QString owner;          // the name diagnostics are filed under
     Diagnostics &diagnostics;
+    // lowerInput only: where the statements go that must run before its value is read (function
+    // block calls, edge detectors, values read twice). Without it, a network that needs any of
+    // them gives a diagnostic; plain contacts, variables and functions need none.
+    std::vector<ast::Stmt> *setup = nullptr;
 };
 
 // The statements of an LD or FBD body, in execution order (LD: networks top to bottom, left to
-// right; FBD: executionOrderId, else data flow).
+// right; FBD: executionOrderId, else data flow). Jumps make the statements a loop over the
+// segments between labels (WHILE with CONTINUE), since ST has no GOTO.
 std::vector<ast::Stmt> lowerBody(const model::Body &body, LoweringContext &context);
 
 // The value that flows into `input` inside `body`: used by SFC charts whose transition
@@ -34,5 +39,10 @@ std::vector<ast::Stmt> lowerBody(const model::Body &body, LoweringContext &conte
 // diagnostic) when the input is not connected or its source cannot be lowered.
 std::optional<ast::Expr> lowerInput(const model::Body &body, const model::ConnectionPointIn &input,
     LoweringContext &context);
+
+// CODESYS keeps a CFC diagram in the addData of a body whose ST text is empty
+// (http://www.3s-software.com/plcopenxml/cfc). Returns it as an FBD body (its elements carry
+// their execution order), or nullopt when `body` holds none.
+std::optional<model::Body> cfcDiagram(const model::Body &body);
 
 } // namespace iec::interp::graphical
