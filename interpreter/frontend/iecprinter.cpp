@@ -2,6 +2,7 @@
 
 #include "interpreter/frontend/duration.h"
 #include "interpreter/runtime/valueformat.h"
+#include "interpreter/sfc/sfctext.h"
 
 #include <QTextStream>
 
@@ -273,8 +274,21 @@ QString printPouSkeleton(const model::Pou &pou)
 QString printPou(const model::Pou &pou, std::vector<PrintWarning> *warnings)
 {
     QString text = pouHeader(pou) + printInterface(pou);
-    if (const model::Body *body = pou.body())
+    const model::Body *body = pou.body();
+    QString chartProblem;
+    QStringList dropped;
+    const auto chart = body && body->language() == model::BodyLanguage::SFC
+        ? sfc::printChart(pou, &chartProblem, &dropped)
+        : std::nullopt;
+    if (chart) { // textual SFC
+        text += *chart;
+        if (warnings && !dropped.isEmpty())
+            warnings->push_back({pou.name,
+                QStringLiteral("The entry, exit and active actions and the times of steps %1 have no IEC text form and were left out.")
+                    .arg(dropped.join(QStringLiteral(", ")))});
+    } else if (body) { // a chart the text form cannot say (chartProblem) stays a comment
         text += printBody(*body, pou.name, warnings);
+    }
     for (const model::PouAction &action : pou.actions) {
         text += QStringLiteral("ACTION %1:\n").arg(action.name);
         text += printBody(action.body, pou.name + QLatin1Char('.') + action.name, warnings);

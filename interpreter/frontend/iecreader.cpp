@@ -2,6 +2,7 @@
 
 #include "interpreter/compiler/lexer.h"
 #include "interpreter/compiler/parser.h"
+#include "interpreter/sfc/sfctext.h"
 
 namespace iec::interp::frontend {
 
@@ -362,7 +363,12 @@ PouTexts pouTexts(TokenCursor &cursor, QStringView source)
     while (!cursor.atEnd() && !cursor.is(end.constData()) && !cursor.is("ACTION"))
         cursor.next();
     texts.body = bodyText(source, bodyStart, cursor.start());
-    while (cursor.is("ACTION")) {
+    // Actions follow the body; in a textual SFC chart they may also stand between steps.
+    while (!cursor.atEnd() && !cursor.is(end.constData())) {
+        if (!cursor.is("ACTION")) {
+            cursor.next();
+            continue;
+        }
         cursor.next();
         const QString name = cursor.atEnd() ? QString() : cursor.text().toString();
         cursor.next();
@@ -427,11 +433,15 @@ model::Pou toModel(const ast::Pou &pou, const PouTexts &texts, Diagnostics &diag
         interface.returnType = toModel(*pou.returnType);
     interface.varLists = toModel(pou.sections, pou.name, diagnostics);
     result.pouInterface = std::move(interface);
-    if (pou.body.language == ast::Language::SFC) {
-        diagnostics.warning(pou.name, pou.location,
-            QStringLiteral(
-                "%1 is a chart in textual SFC, which the project model cannot hold yet; its body was left out.")
-                .arg(pou.name));
+    if (pou.body.language == ast::Language::SFC && pou.body.sfc) {
+        // The chart becomes a graphical SFC body; its ACTIONs become the POU's actions.
+        result.bodies.push_back(sfc::chartToModel(*pou.body.sfc, pou.name, diagnostics));
+        for (size_t i = 0; i < pou.body.sfc->actions.size() && i < texts.actions.size(); ++i) {
+            model::PouAction action;
+            action.name = texts.actions[i].first;
+            action.body = textBody(pou.body.sfc->actions[i].body.language, texts.actions[i].second);
+            result.actions.push_back(std::move(action));
+        }
         return result;
     }
     result.bodies.push_back(textBody(pou.body.language, texts.body));

@@ -122,6 +122,15 @@ std::shared_ptr<const Module> compileUnit(
     if (unit.parseErrors)
         return nullptr;
     Diagnostics compiling;
+    const bool hasTextualCharts = std::any_of(unit.unit.pous.begin(), unit.unit.pous.end(),
+        [](const ast::Pou &pou) { return pou.body.language == ast::Language::SFC; });
+    if (hasTextualCharts) { // parsed straight from .st text: lower the charts here
+        ast::CompilationUnit lowered = unit.unit;
+        sfc::lowerTextualCharts(lowered, compiling);
+        std::shared_ptr<const Module> module = compiling.hasErrors() ? nullptr : compile({&lowered}, compiling, options);
+        diagnostics.append(compiling);
+        return diagnostics.hasErrors() ? nullptr : module;
+    }
     std::shared_ptr<const Module> module = compile({&unit.unit}, compiling, options);
     diagnostics.append(compiling);
     return diagnostics.hasErrors() ? nullptr : module;

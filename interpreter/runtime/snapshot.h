@@ -20,13 +20,21 @@ struct RuntimeSnapshot {
     quint64 modelRevision = 0; // the model revision the running program was compiled from
     int cycle = 0;
     std::int64_t timeNs = 0;
+    std::int64_t cycleNs = 0;  // the cycle time the runtime runs with
     bool running = false;      // cycles run on their own (Run), not single-stepped
     std::optional<RuntimeFault> fault;
     QHash<QString, QString> values; // name as requested ("Main.Count") -> value
-    QSet<QString> forced;           // names held by a force
+    QSet<QString> forced;           // names held by a force, as they were forced
     std::vector<sfc::ChartState> charts; // every chart an open editor asked for
 
     [[nodiscard]] QString value(const QString &name) const { return values.value(name); }
+    [[nodiscard]] bool isForced(const QString &name) const
+    {
+        for (const QString &held : forced)
+            if (held.compare(name, Qt::CaseInsensitive) == 0)
+                return true;
+        return false;
+    }
     [[nodiscard]] const sfc::ChartState *chart(const QString &instance) const
     {
         for (const sfc::ChartState &state : charts)

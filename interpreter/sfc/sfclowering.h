@@ -13,6 +13,12 @@ namespace iec::interp::sfc {
 
 // Appends the chart's statements to `result.body.statements` and its hidden variables to
 // `result.sections`. Structural errors are reported on the element (POU, localId).
-void lowerChart(const model::Pou &pou, ast::Pou &result, Diagnostics &diagnostics);
+// `parsedActions`: action bodies already parsed (a textual SFC chart compiled straight from
+// text); they take the place of the POU actions of the same name.
+void lowerChart(const model::Pou &pou, ast::Pou &result, Diagnostics &diagnostics,
+    const std::vector<ast::SfcAction> *parsedActions = nullptr);
+
+// Lowers every textual SFC chart of `unit` (parsed straight from .st text) in place.
+void lowerTextualCharts(ast::CompilationUnit &unit, Diagnostics &diagnostics);
 
 } // namespace iec::interp::sfc
