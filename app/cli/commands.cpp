@@ -6,13 +6,6 @@ namespace iec::cli {
 
 namespace {
 
-// Subcommands whose implementation arrives with a later part of IEC Studio say so plainly.
-int notAvailableYet(const QStringList &, Io io)
-{
-    io.err << "iecstudio-cli: this command is not available in this build yet.\n";
-    return ExitUsage;
-}
-
 constexpr std::array<Command, 5> kCommands{{
     {"check", "check FILE", "Compile every POU and list the diagnostics; exit 1 on an error.", runCheck},
     {"info", "info FILE [--json]", "Count POUs, data types, variables and graphical elements.", runInfo},
@@ -20,8 +13,8 @@ constexpr std::array<Command, 5> kCommands{{
     {"run", "run FILE [--program P] [--cycles N] [--cycle-time 10ms] [--set NAME=VALUE[@CYCLE]]... "
             "[--watch NAME]... [--trace OUT.csv|OUT.vcd]",
      "Run scan cycles on a virtual clock and print the watched values.", runRun},
-    {"render", "render FILE --pou NAME OUT.svg|OUT.png|OUT.pdf", "Draw a POU body without a display.",
-     notAvailableYet},
+    {"render", "render FILE --pou NAME OUT.svg|OUT.png|OUT.pdf", "Draw a POU body without a display (SFC).",
+     runRender},
 }};
 
 } // namespace

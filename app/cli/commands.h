@@ -37,5 +37,6 @@ int runInfo(const QStringList &arguments, Io io);
 int runConvert(const QStringList &arguments, Io io);
 int runCheck(const QStringList &arguments, Io io);
 int runRun(const QStringList &arguments, Io io);
+int runRender(const QStringList &arguments, Io io); // cmd_render.cpp, in iec_cli_render
 
 } // namespace iec::cli

@@ -1,11 +1,16 @@
 #include "app/cli/commands.h"
+#include "app/cli/render.h"
 
 #include <QCoreApplication>
 
 #include <cstdio>
+#include <cstring>
 
 int main(int argc, char *argv[])
 {
+    // render draws with the editors and needs a GUI application object instead.
+    if (argc > 1 && std::strcmp(argv[1], "render") == 0)
+        return iec::cli::renderMain(argc, argv);
     QCoreApplication application(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("iecstudio-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(IECSTUDIO_VERSION));

@@ -3,6 +3,9 @@
 #include "editors/common/zoomsteps.h"
 
 #include <QMouseEvent>
+#include <QPainter>
+
+#include <cmath>
 #include <QScrollBar>
 #include <QWheelEvent>
 
@@ -30,6 +33,43 @@ void DiagramView::setZoom(double factor)
 void DiagramView::zoomIn() { setZoom(nextZoomIn(m_zoom)); }
 void DiagramView::zoomOut() { setZoom(nextZoomOut(m_zoom)); }
 void DiagramView::resetZoom() { setZoom(1.0); }
+
+void DiagramView::fitToWindow()
+{
+    if (!scene())
+        return;
+    const QRectF drawing = scene()->itemsBoundingRect().adjusted(-10, -10, 10, 10);
+    const QSizeF room = viewport()->size();
+    if (drawing.isEmpty() || room.isEmpty())
+        return;
+    setZoom(std::min(room.width() / drawing.width(), room.height() / drawing.height()));
+    centerOn(drawing.center());
+}
+
+void DiagramView::setGridSize(int size)
+{
+    m_gridSize = std::max(0, size);
+    resetCachedContent();
+    viewport()->update();
+}
+
+void DiagramView::drawBackground(QPainter *painter, const QRectF &rect)
+{
+    QGraphicsView::drawBackground(painter, rect);
+    // Dots closer than 4 pixels on screen would only grey the background.
+    if (m_gridSize <= 0 || m_gridSize * m_zoom < 4)
+        return;
+    painter->save();
+    painter->setPen(QPen(QColor(0xc8, 0xc8, 0xc8), 0));
+    const double left = std::floor(rect.left() / m_gridSize) * m_gridSize;
+    const double top = std::floor(rect.top() / m_gridSize) * m_gridSize;
+    QList<QPointF> dots;
+    for (double x = left; x < rect.right(); x += m_gridSize)
+        for (double y = top; y < rect.bottom(); y += m_gridSize)
+            dots << QPointF(x, y);
+    painter->drawPoints(dots.constData(), int(dots.size()));
+    painter->restore();
+}
 
 void DiagramView::wheelEvent(QWheelEvent *event)
 {

@@ -18,11 +18,18 @@ public:
     void zoomIn();
     void zoomOut();
     void resetZoom();
+    // Zooms so that the whole drawing fits the window (between the smallest and largest step).
+    void fitToWindow();
+
+    // A dotted grid behind the drawing (the grid size of the settings; 0 hides it).
+    void setGridSize(int size);
+    [[nodiscard]] int gridSize() const { return m_gridSize; }
 
 Q_SIGNALS:
     void zoomChanged(double factor);
 
 protected:
+    void drawBackground(QPainter *painter, const QRectF &rect) override;
     void wheelEvent(QWheelEvent *event) override;
     void mousePressEvent(QMouseEvent *event) override;
     void mouseMoveEvent(QMouseEvent *event) override;
@@ -32,6 +39,7 @@ private:
     double m_zoom = 1.0;
     bool m_panning = false;
     QPoint m_lastPanPosition;
+    int m_gridSize = 0;
 };
 
 } // namespace iec::editors

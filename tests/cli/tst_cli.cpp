@@ -31,6 +31,10 @@ private Q_SLOTS:
     void convertedStValidatesAgainstTheSchema();
     void usageErrors_data();
     void usageErrors();
+    void renderDrawsCharts_data();
+    void renderDrawsCharts();
+    void renderRefuses_data();
+    void renderRefuses();
 };
 
 namespace {
@@ -330,13 +334,11 @@ void TestCli::checkNamesGraphicalPousOfTheCorpus()
     const QString file = QStringLiteral(IEC_SHARED_DIR "/plcopen/corpus/beremiz_iec61131_lang_test.xml");
     const Result result = cli({QStringLiteral("check"), file});
     QCOMPARE(result.exitCode, 1);
+    const QString logger
+        = file + QStringLiteral(":main_test: error: The LOGGER block comes from the Beremiz library, which this version does not have.\n");
     QCOMPARE(result.out,
-        file
-            + QStringLiteral(":main_test: error: main_test is written in FBD, which this version cannot run yet. "
-                             "(hint: write it in ST or IL to run it now)\n")
-            + file
-            + QStringLiteral(":TEMPO_TEST: error: TEMPO_TEST is written in FBD, which this version cannot run yet. "
-                             "(hint: write it in ST or IL to run it now)\n"));
+        logger + logger + logger + file
+            + QStringLiteral(":TEMPO_TEST: error: The RTC block comes from the Beremiz library, which this version does not have.\n"));
 }
 
 void TestCli::convertRoundTrips()
@@ -419,6 +421,84 @@ void TestCli::usageErrors()
     const Result result = cli(arguments);
     QCOMPARE(result.exitCode, 2);
     QCOMPARE(result.err.section(QLatin1Char('\n'), 0, 0), firstLine);
+}
+
+// ---- render (docs/cli.md): an SFC body drawn without a display.
+
+namespace {
+
+QString sfcCorpusFile()
+{
+    return QStringLiteral(IEC_SHARED_DIR "/plcopen/corpus/beremiz_first_steps.xml");
+}
+
+} // namespace
+
+void TestCli::renderDrawsCharts_data()
+{
+    QTest::addColumn<QString>("suffix");
+    QTest::addColumn<QByteArray>("magic"); // how the file starts
+    QTest::newRow("svg") << QStringLiteral("svg") << QByteArray("<?xml");
+    QTest::newRow("png") << QStringLiteral("png") << QByteArray("\x89PNG");
+    QTest::newRow("pdf") << QStringLiteral("pdf") << QByteArray("%PDF");
+}
+
+void TestCli::renderDrawsCharts()
+{
+    QFETCH(QString, suffix);
+    QFETCH(QByteArray, magic);
+    if (!QFile::exists(sfcCorpusFile()))
+        QSKIP("the PLCopen corpus of shared/ is not there");
+    QTemporaryDir dir;
+    const QString out = dir.filePath(QStringLiteral("chart.") + suffix);
+    const Result result = cli({QStringLiteral("render"), sfcCorpusFile(), QStringLiteral("--pou"),
+        QStringLiteral("CounterSFC"), out});
+    QCOMPARE(result.err, QString());
+    QCOMPARE(result.exitCode, 0);
+    QFile file(out);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray bytes = file.readAll();
+    QVERIFY(bytes.startsWith(magic));
+    QVERIFY(bytes.size() > 1000);
+    if (suffix == QLatin1String("svg")) {
+        QVERIFY(bytes.contains("ResetCounter")); // the step names are text in the picture
+        QVERIFY(bytes.contains("NOT Reset"));
+    }
+}
+
+void TestCli::renderRefuses_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<QString>("message");
+    const QString file = sfcCorpusFile();
+    QTest::newRow("not drawable yet") << QStringList {QStringLiteral("render"), file, QStringLiteral("--pou"),
+        QStringLiteral("CounterST"), QStringLiteral("x.svg")} << 1
+                                      << QStringLiteral("iecstudio-cli: render: POU 'CounterST' is written in ST, which "
+                                                        "cannot be drawn yet (SFC can).");
+    QTest::newRow("no such POU") << QStringList {QStringLiteral("render"), file, QStringLiteral("--pou"),
+        QStringLiteral("Nope"), QStringLiteral("x.svg")} << 2
+                                 << QStringLiteral("iecstudio-cli: render: %1 has no POU named 'Nope'.").arg(file);
+    QTest::newRow("picture type") << QStringList {QStringLiteral("render"), file, QStringLiteral("--pou"),
+        QStringLiteral("CounterSFC"), QStringLiteral("x.bmp")} << 2
+                                  << QStringLiteral("iecstudio-cli: render: x.bmp: the picture must end in .svg, .png or .pdf.");
+    QTest::newRow("no --pou") << QStringList {QStringLiteral("render"), file, QStringLiteral("x.svg")} << 2
+                              << QStringLiteral("Usage: iecstudio-cli render FILE --pou NAME OUT.svg|OUT.png|OUT.pdf");
+    QTest::newRow("unwritable") << QStringList {QStringLiteral("render"), file, QStringLiteral("--pou"),
+        QStringLiteral("CounterSFC"), QStringLiteral("/nonexistent-dir/x.svg")} << 3
+                                << QStringLiteral("iecstudio-cli: render: Cannot write /nonexistent-dir/x.svg.");
+}
+
+void TestCli::renderRefuses()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(int, exitCode);
+    QFETCH(QString, message);
+    if (!QFile::exists(sfcCorpusFile()))
+        QSKIP("the PLCopen corpus of shared/ is not there");
+    const Result result = cli(arguments);
+    QCOMPARE(result.exitCode, exitCode);
+    QCOMPARE(result.err.section(QLatin1Char('\n'), 0, 0), message);
 }
 
 QTEST_GUILESS_MAIN(TestCli)
