@@ -1,13 +1,21 @@
 #include "app/documentarea.h"
 
+#include "app/autodeclare.h"
+#include "app/autodeclaredialog.h"
+#include "app/projectsymbols.h"
 #include "app/treeicons.h"
 #include "app/undostacks.h"
+#include "editors/datatypes/datatypeeditor.h"
 #include "editors/declarations/declarationeditor.h"
+#include "editors/sfc/sfceditor.h"
 #include "editors/text/codeeditor.h"
 #include "editors/text/texteditorwidget.h"
 #include "model/projectmodel.h"
 
+#include <QAction>
 #include <QLabel>
+#include <QToolTip>
+#include <QUndoStack>
 #include <QSplitter>
 #include <QTextDocument>
 
@@ -36,6 +44,29 @@ editors::TextEditorWidget *textWidgetIn(QWidget *document)
     return document ? document->findChild<editors::TextEditorWidget *>() : nullptr;
 }
 
+// The instance a body's variables belong to online: a program's own name; for a function block
+// the first instance a program declares of it ("Main.Filler"); nothing for functions.
+QString onlineInstanceOf(const model::Project &project, model::PouId id)
+{
+    const model::Pou *pou = project.findPou(id);
+    if (!pou || pou->kind == model::PouKind::Function)
+        return {};
+    if (pou->kind == model::PouKind::Program)
+        return pou->name;
+    for (const model::Pou &holder : project.types.pous) {
+        if (holder.kind != model::PouKind::Program || !holder.pouInterface)
+            continue;
+        for (const model::VarList &list : holder.pouInterface->varLists) {
+            for (const model::Variable &variable : list.variables) {
+                const auto *derived = std::get_if<model::DerivedType>(&variable.type.kind);
+                if (derived && derived->name.compare(pou->name, Qt::CaseInsensitive) == 0)
+                    return holder.name + QLatin1Char('.') + variable.name;
+            }
+        }
+    }
+    return {};
+}
+
 } // namespace
 
 DocumentArea::DocumentArea(model::ProjectModel &projectModel, QWidget *parent)
@@ -50,8 +81,10 @@ DocumentArea::DocumentArea(model::ProjectModel &projectModel, QWidget *parent)
         flushEdits();
         closeDocument(index);
     });
-    connect(&projectModel, &model::ProjectModel::projectReset, this,
-        [this] { closeDocumentsIf([](const BodyRef &) { return true; }); });
+    connect(&projectModel, &model::ProjectModel::projectReset, this, [this] {
+        for (int index = count() - 1; index >= 0; --index)
+            closeDocument(index);
+    });
     connect(&projectModel, &model::ProjectModel::pouRemoved, this,
         [this](model::PouId id) { closeDocumentsIf([id](const BodyRef &ref) { return ref.pou == id; }); });
     connect(&projectModel, &model::ProjectModel::pouRenamed, this, &DocumentArea::retitleDocuments);
@@ -79,7 +112,7 @@ BodyRef DocumentArea::refOf(int index) const
 QWidget *DocumentArea::documentFor(const BodyRef &ref) const
 {
     for (int index = 0; index < count(); ++index) {
-        if (refOf(index) == ref)
+        if (bodyAt(index) == ref)
             return widget(index);
     }
     return nullptr;
@@ -99,16 +132,70 @@ editors::DeclarationEditor *DocumentArea::declarationEditorFor(const BodyRef &re
 
 std::optional<BodyRef> DocumentArea::bodyAt(int index) const
 {
-    if (index < 0 || index >= count())
+    // Data type tabs show no body.
+    if (index < 0 || index >= count() || !widget(index)->property(kBodyRefProperty).isValid())
         return std::nullopt;
     return refOf(index);
 }
 
+QList<DocumentArea::OnlineDocument> DocumentArea::onlineViews() const
+{
+    QList<OnlineDocument> views;
+    for (int index = 0; index < count(); ++index) {
+        const std::optional<BodyRef> ref = bodyAt(index);
+        if (!ref)
+            continue;
+        QList<QWidget *> widgets = widget(index)->findChildren<QWidget *>();
+        widgets.prepend(widget(index));
+        for (QWidget *candidate : std::as_const(widgets)) {
+            if (auto *view = dynamic_cast<editors::OnlineView *>(candidate))
+                views.append({*ref, view});
+        }
+    }
+    return views;
+}
+
 std::optional<BodyRef> DocumentArea::currentBody() const
 {
-    if (currentIndex() < 0)
-        return std::nullopt;
-    return refOf(currentIndex());
+    return bodyAt(currentIndex());
+}
+
+editors::DataTypeEditor *DocumentArea::dataTypeEditorFor(const QString &typeName) const
+{
+    for (int index = 0; index < count(); ++index) {
+        auto *editor = qobject_cast<editors::DataTypeEditor *>(widget(index));
+        if (editor && editor->typeName().compare(typeName, Qt::CaseInsensitive) == 0)
+            return editor;
+    }
+    return nullptr;
+}
+
+editors::DataTypeEditor *DocumentArea::currentDataTypeEditor() const
+{
+    return qobject_cast<editors::DataTypeEditor *>(currentWidget());
+}
+
+QWidget *DocumentArea::openDataType(const QString &typeName)
+{
+    if (editors::DataTypeEditor *open = dataTypeEditorFor(typeName)) {
+        setCurrentWidget(open);
+        return open;
+    }
+    if (m_projectModel.dataTypeIndex(typeName) < 0)
+        return nullptr;
+    auto *editor = new editors::DataTypeEditor(m_projectModel, typeName, &m_undoStacks->projectStack());
+    connect(editor, &editors::DataTypeEditor::typeRenamed, this, [this, editor](const QString &newName) {
+        if (const int index = indexOf(editor); index >= 0)
+            setTabText(index, newName);
+    });
+    // Queued: the editor is inside its own signal when it reports the removal.
+    connect(editor, &editors::DataTypeEditor::typeRemoved, editor, [this, editor] {
+        if (const int index = indexOf(editor); index >= 0)
+            closeDocument(index);
+    }, Qt::QueuedConnection);
+    const int index = addTab(editor, typeName);
+    setCurrentIndex(index);
+    return editor;
 }
 
 QWidget *DocumentArea::openBody(const BodyRef &ref)
@@ -144,6 +231,14 @@ QWidget *DocumentArea::createEditor(const BodyRef &ref)
 QWidget *DocumentArea::createBodyEditor(const BodyRef &ref)
 {
     const model::Body *body = m_projectModel.body(ref);
+    if (body->language() == model::BodyLanguage::SFC) {
+        auto *chart = new editors::sfc::SfcEditor(m_projectModel, ref, &m_undoStacks->pouStack(ref.pou));
+        chart->setOnlineInstance(onlineInstanceOf(m_projectModel.project(), ref.pou));
+        // Double-click on an action, a named transition or an "E"/"X" corner opens that body.
+        connect(chart, &editors::sfc::SfcEditor::openPartRequested, this,
+            [this](model::PouId pou, BodyRef::Part part, const QString &name) { openBody(BodyRef {pou, part, name}); });
+        return chart;
+    }
     if (body->language() != model::BodyLanguage::ST && body->language() != model::BodyLanguage::IL) {
         auto *placeholder = new QLabel(tr("This body is written in %1. Its editor is not available in this "
                                           "version; the body is kept unchanged when the project is saved.")
@@ -155,13 +250,133 @@ QWidget *DocumentArea::createBodyEditor(const BodyRef &ref)
     const auto language
         = body->language() == model::BodyLanguage::IL ? editors::TextLanguage::IL : editors::TextLanguage::ST;
     auto *textWidget = new editors::TextEditorWidget(language);
+    textWidget->setOnlineInstanceProvider([this, ref] { return onlineInstanceOf(m_projectModel.project(), ref.pou); });
+    connect(textWidget, &editors::TextEditorWidget::addToWatchRequested, this, &DocumentArea::addToWatchRequested);
     editors::CodeEditor *editor = textWidget->editor();
     editor->setBodyText(body->text());
     editor->document()->setModified(false);
     connect(editor->document(), &QTextDocument::modificationChanged, this, &DocumentArea::typingModifiedChanged);
     connect(editor, &editors::CodeEditor::textEdited, this,
         [this, ref, editor] { m_projectModel.setBodyText(ref, editor->toPlainText()); });
+    // Completion reads the model when asked, so it always sees the current declarations.
+    auto *completion = new ModelCompletionProvider(m_projectModel, ref.pou);
+    editor->setCompletionProvider(completion);
+    connect(textWidget, &QObject::destroyed, this, [completion] { delete completion; });
+    connect(editor, &editors::CodeEditor::definitionRequested, this,
+        [this, ref](const QString &path) { goToDefinition(ref, path); });
+    auto *declare = new QAction(tr("Declare Variable..."), editor);
+    declare->setObjectName(QStringLiteral("declareVariableAction"));
+    declare->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F2));
+    declare->setShortcutContext(Qt::WidgetShortcut);
+    connect(declare, &QAction::triggered, this, [this, ref] { autoDeclareInteractive(ref); });
+    editor->addAction(declare);
     return textWidget;
+}
+
+bool DocumentArea::goToDefinition(const BodyRef &from, const QString &path)
+{
+    const model::Project &project = m_projectModel.project();
+    const int dot = path.lastIndexOf(QLatin1Char('.'));
+    const QString head = path.section(QLatin1Char('.'), 0, 0).section(QLatin1Char('['), 0, 0).trimmed();
+    const auto showDeclaration = [this](model::PouId pou, const QString &name) {
+        openBody({pou, BodyRef::Part::Pou, {}});
+        editors::DeclarationEditor *declarations = declarationEditorFor({pou, BodyRef::Part::Pou, {}});
+        return declarations && declarations->showVariable(name);
+    };
+    if (dot > 0) {
+        // A member: its declaration in the function block or program the prefix is an instance of.
+        if (const model::Pou *owner = project.findPou(typeNameOfPath(project, from.pou, path.left(dot))))
+            return showDeclaration(owner->id, path.mid(dot + 1));
+        return false;
+    }
+    if (const auto visible = findVisibleVariable(project, from.pou, head); visible && !visible->global)
+        return showDeclaration(from.pou, visible->variable->name);
+    if (const model::Pou *pou = project.findPou(head))
+        return openBody({pou->id, BodyRef::Part::Pou, {}}) != nullptr;
+    if (project.findDataType(head))
+        return openDataType(head) != nullptr;
+    for (const auto part : {BodyRef::Part::Action, BodyRef::Part::Transition}) {
+        if (const model::PouPart *found = m_projectModel.findPouPart(from.pou, part, head))
+            return openBody({from.pou, part, found->name}) != nullptr;
+    }
+    return false;
+}
+
+editors::DeclarationRow DocumentArea::proposeDeclaration(const BodyRef &ref, const QString &name) const
+{
+    const model::Body *body = m_projectModel.body(ref);
+    editors::DeclarationRow row;
+    row.name = name;
+    row.type = guessVariableType(m_projectModel.project(), ref.pou, body ? body->text() : QString(), name,
+        body && body->language() == model::BodyLanguage::IL);
+    return row;
+}
+
+bool DocumentArea::declareVariable(const BodyRef &ref, const editors::DeclarationRow &row, QString *error)
+{
+    flushEdits();
+    const DeclareResult result = createDeclareCommand(m_projectModel, ref.pou, row);
+    if (!result.command) {
+        if (error)
+            *error = result.error;
+        return false;
+    }
+    m_undoStacks->pouStack(ref.pou).push(result.command);
+    return true;
+}
+
+namespace {
+
+// What the type box offers: the elementary types, the standard function blocks, the project's
+// data types and function blocks.
+QStringList declarableTypeNames(const model::Project &project)
+{
+    QStringList names {QStringLiteral("BOOL"), QStringLiteral("INT"), QStringLiteral("DINT"), QStringLiteral("UINT"),
+        QStringLiteral("REAL"), QStringLiteral("LREAL"), QStringLiteral("TIME"), QStringLiteral("STRING"),
+        QStringLiteral("BYTE"), QStringLiteral("WORD"), QStringLiteral("DWORD"), QStringLiteral("TON"),
+        QStringLiteral("TOF"), QStringLiteral("TP"), QStringLiteral("CTU"), QStringLiteral("CTD"),
+        QStringLiteral("CTUD"), QStringLiteral("R_TRIG"), QStringLiteral("F_TRIG"), QStringLiteral("SR"),
+        QStringLiteral("RS")};
+    for (const model::DataTypeDecl &type : project.types.dataTypes)
+        names.append(type.name);
+    for (const model::Pou &pou : project.types.pous) {
+        if (pou.kind == model::PouKind::FunctionBlock)
+            names.append(pou.name);
+    }
+    return names;
+}
+
+} // namespace
+
+void DocumentArea::autoDeclareInteractive(const BodyRef &ref)
+{
+    editors::CodeEditor *editor = textEditorFor(ref);
+    if (!editor)
+        return;
+    const QString path = editor->identifierPathAt(editor->textCursor().position());
+    const QString name = path.section(QLatin1Char('.'), 0, 0).section(QLatin1Char('['), 0, 0).trimmed();
+    if (name.isEmpty())
+        return;
+    flushEdits();
+    const model::Project &project = m_projectModel.project();
+    if (findVisibleVariable(project, ref.pou, name) || project.findPou(name)) {
+        QToolTip::showText(editor->mapToGlobal(editor->cursorRect().bottomLeft()),
+            tr("%1 is declared already.").arg(name), editor);
+        return;
+    }
+    const BodyRef pouBody {ref.pou, BodyRef::Part::Pou, {}};
+    AutoDeclareDialog dialog(proposeDeclaration(ref, name), declarableTypeNames(project),
+        [this, pouBody](const editors::DeclarationRow &row) {
+            const DeclareResult check = createDeclareCommand(m_projectModel, pouBody.pou, row);
+            delete check.command;
+            return check.error;
+        },
+        this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    QString error;
+    if (!declareVariable(ref, dialog.row(), &error))
+        QToolTip::showText(editor->mapToGlobal(editor->cursorRect().bottomLeft()), error, editor);
 }
 
 void DocumentArea::flushEdits()
@@ -248,15 +463,18 @@ void DocumentArea::closeAll()
 void DocumentArea::closeDocumentsIf(const std::function<bool(const BodyRef &)> &shouldClose)
 {
     for (int index = count() - 1; index >= 0; --index) {
-        if (shouldClose(refOf(index)))
+        const std::optional<BodyRef> ref = bodyAt(index);
+        if (ref && shouldClose(*ref))
             closeDocument(index);
     }
 }
 
 void DocumentArea::retitleDocuments()
 {
-    for (int index = 0; index < count(); ++index)
-        setTabText(index, title(m_projectModel.project(), refOf(index)));
+    for (int index = 0; index < count(); ++index) {
+        if (const std::optional<BodyRef> ref = bodyAt(index))
+            setTabText(index, title(m_projectModel.project(), *ref));
+    }
 }
 
 } // namespace iec::app

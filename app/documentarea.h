@@ -11,7 +11,10 @@ struct Project;
 
 namespace iec::editors {
 class CodeEditor;
+class DataTypeEditor;
 class DeclarationEditor;
+class OnlineView;
+struct DeclarationRow;
 } // namespace iec::editors
 
 namespace iec::app {
@@ -38,7 +41,30 @@ public:
     // The declaration editor of an open POU body; nullptr for actions, transitions, closed tabs.
     [[nodiscard]] editors::DeclarationEditor *declarationEditorFor(const model::BodyRef &ref) const;
     [[nodiscard]] std::optional<model::BodyRef> currentBody() const;
+    // Opens the data type editor of `typeName` in a tab (or shows its tab); its edits go on the
+    // project's undo stack. The tab follows renames of the type and closes when it is removed.
+    QWidget *openDataType(const QString &typeName);
+    [[nodiscard]] editors::DataTypeEditor *dataTypeEditorFor(const QString &typeName) const;
+    [[nodiscard]] editors::DataTypeEditor *currentDataTypeEditor() const;
+    // Go to definition of `path` (a dotted name) used in the body `from`: a variable of the POU
+    // shows its declaration row, a member of a function block instance the row in that FB, a
+    // POU opens, a data type opens its editor, an action or transition of the POU opens. False
+    // when the name is not defined in the project (a keyword, a standard function, a global).
+    bool goToDefinition(const model::BodyRef &from, const QString &path);
+    // Auto-declare: what the Declare Variable dialog proposes for `name` used in body `ref` (class
+    // VAR, the type guessed from the body), and the declaration itself: one step on the POU's
+    // undo stack; false with the table's message when the row cannot be declared.
+    [[nodiscard]] editors::DeclarationRow proposeDeclaration(const model::BodyRef &ref, const QString &name) const;
+    bool declareVariable(const model::BodyRef &ref, const editors::DeclarationRow &row, QString *error = nullptr);
+    // Shift+F2 in a body: the dialog for the name under the cursor when it is not declared yet.
+    void autoDeclareInteractive(const model::BodyRef &ref);
     [[nodiscard]] std::optional<model::BodyRef> bodyAt(int index) const;
+    // Every open editor that shows the running program (online mode), with the body it edits.
+    struct OnlineDocument {
+        model::BodyRef body;
+        editors::OnlineView *view = nullptr;
+    };
+    [[nodiscard]] QList<OnlineDocument> onlineViews() const;
     // Sends text typed but not yet pushed (the editors wait for a pause) into the model.
     void flushEdits();
 
@@ -58,6 +84,8 @@ public:
 Q_SIGNALS:
     // hasUnsavedTyping() may have changed.
     void typingModifiedChanged();
+    // An editor's "Add to Watch" on a variable, with its full name ("Main.Count").
+    void addToWatchRequested(const QString &name);
 
 private:
     void closeDocumentsIf(const std::function<bool(const model::BodyRef &)> &shouldClose);

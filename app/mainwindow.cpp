@@ -2,8 +2,11 @@
 
 #include "app/buildcontroller.h"
 #include "app/documentarea.h"
+#include "app/importexportactions.h"
 #include "app/listmenus.h"
 #include "app/messagespane.h"
+#include "app/online/onlinecontroller.h"
+#include "app/online/watchpane.h"
 #include "app/projectcommands.h"
 #include "app/projecttreeactions.h"
 #include "app/projecttreemodel.h"
@@ -14,6 +17,7 @@
 #include "app/uitranslator.h"
 #include "app/undoactions.h"
 #include "app/undostacks.h"
+#include "editors/declarations/declarationeditor.h"
 #include "editors/text/codeeditor.h"
 #include "model/plcopen/reader.h"
 #include "model/plcopen/writer.h"
@@ -77,6 +81,9 @@ MainWindow::~MainWindow()
     // The children are destroyed after this destructor has run; signals they send on the way
     // (a closing tab changes the current one, focus moves) must not reach this half-gone window.
     disconnect(qApp, nullptr, this, nullptr);
+    // Online: the runtime thread ends and the editors are given back while they all still exist.
+    m_online->logout();
+    m_documents->disconnect(m_online);
     m_documents->disconnect(this);
     m_undoStacks->disconnect(this);
 }
@@ -156,6 +163,13 @@ void MainWindow::createMenus()
     m_fileMenu->addAction(m_saveAction);
     m_fileMenu->addAction(m_saveAsAction);
     m_fileMenu->addSeparator();
+    m_importExport = new ImportExportActions(
+        *m_projectModel, m_undoStacks->projectStack(), *m_messages, *m_projectTree, this);
+    m_importExport->setFlushPendingEdits([this] { m_documents->flushEdits(); });
+    m_fileMenu->addAction(m_importExport->importAction());
+    m_fileMenu->addAction(m_importExport->exportAction());
+    m_fileMenu->addAction(m_importExport->exportSelectionAction());
+    m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_quitAction);
 
     m_editMenu = addMenu("editMenu");
@@ -165,6 +179,7 @@ void MainWindow::createMenus()
     m_viewMenu = addMenu("viewMenu");
     m_viewMenu->addAction(m_projectDock->toggleViewAction());
     m_viewMenu->addAction(m_messagesDock->toggleViewAction());
+    m_viewMenu->addAction(m_watchDock->toggleViewAction());
 
     // CODESYS inserts objects through the Insert menu; here they are the tree's add commands.
     m_insertMenu = addMenu("insertMenu");
@@ -183,6 +198,7 @@ void MainWindow::createMenus()
     m_onlineMenu->addAction(m_loginAction);
     m_onlineMenu->addAction(m_stopAction);
     m_onlineMenu->addAction(m_singleCycleAction);
+    m_online->addTo(m_onlineMenu);
 
     m_windowMenu = new WindowMenu(*m_documents, this);
     menuBar()->addMenu(m_windowMenu);
@@ -210,6 +226,7 @@ void MainWindow::createToolBar()
     m_toolBar->addAction(m_buildAction);
     m_toolBar->addAction(m_loginAction);
     m_toolBar->addAction(m_stopAction);
+    m_toolBar->addAction(m_singleCycleAction);
 }
 
 void MainWindow::createDocks()
@@ -219,6 +236,7 @@ void MainWindow::createDocks()
     m_projectTree->setObjectName(QStringLiteral("projectTree"));
     m_projectTree->setProjectModel(m_projectTreeModel);
     connect(m_projectTree, &ProjectTreeView::openRequested, m_documents, &DocumentArea::openBody);
+    connect(m_projectTree, &ProjectTreeView::openDataTypeRequested, m_documents, &DocumentArea::openDataType);
     m_treeActions = new ProjectTreeActions(*m_projectCommands, *m_projectModel, *m_projectTree, this);
     connect(m_treeActions, &ProjectTreeActions::created, this, [this](const model::BodyRef &item) {
         m_projectTree->selectKey(item.part == model::BodyRef::Part::Pou ? ProjectTreeModel::pouKey(item.pou)
@@ -243,6 +261,15 @@ void MainWindow::createDocks()
         m_messagesDock->show();
         statusBar()->showMessage(tr("Build finished. Errors: %1, warnings: %2.").arg(errors).arg(warnings));
     });
+
+    m_watch = new WatchPane(this);
+    m_watch->setObjectName(QStringLiteral("watch"));
+    m_watchDock = new QDockWidget(this);
+    m_watchDock->setObjectName(QStringLiteral("watchDock"));
+    m_watchDock->setWidget(m_watch);
+    addDockWidget(Qt::BottomDockWidgetArea, m_watchDock);
+    m_online = new OnlineController(*m_projectModel, *m_documents, *m_messages, *m_build, *m_watch, *statusBar(),
+        {m_loginAction, m_stopAction, m_singleCycleAction}, this);
 }
 
 void MainWindow::retranslateUi()
@@ -262,6 +289,7 @@ void MainWindow::retranslateUi()
     m_windowMenu->retranslate();
     m_treeActions->retranslate();
     m_undoActions->retranslate();
+    m_importExport->retranslate();
 
     m_newAction->setText(tr("&New Project"));
     m_openAction->setText(tr("&Open..."));
@@ -278,6 +306,8 @@ void MainWindow::retranslateUi()
 
     m_projectDock->setWindowTitle(tr("Project"));
     m_messagesDock->setWindowTitle(tr("Messages"));
+    m_watchDock->setWindowTitle(tr("Watch"));
+    m_online->retranslate();
 }
 
 void MainWindow::changeEvent(QEvent *event)
@@ -330,7 +360,11 @@ void MainWindow::updateActiveUndoStack()
         return;
     }
     m_undoStacks->activatePouStack(document->pou);
-    m_undoActions->setTextEditor(m_documents->textEditorFor(*document));
+    // In the declarations the POU's stack undoes (the table's edits are commands); in the body
+    // the text editor's own history does, as long as typing is not yet a command.
+    const editors::DeclarationEditor *declarations = m_documents->declarationEditorFor(*document);
+    const bool inDeclarations = focus && declarations && declarations->isAncestorOf(focus);
+    m_undoActions->setTextEditor(inDeclarations ? nullptr : m_documents->textEditorFor(*document));
 }
 
 namespace {

@@ -21,7 +21,9 @@ namespace iec::app {
 class BuildController;
 class DocumentArea;
 class ExamplesMenu;
+class ImportExportActions;
 class MessagesPane;
+class OnlineController;
 class ProjectCommands;
 class ProjectTreeActions;
 class ProjectTreeModel;
@@ -31,6 +33,7 @@ class RecoveryManager;
 class UiTranslator;
 class UndoActions;
 class UndoStacks;
+class WatchPane;
 class WindowMenu;
 
 // The IDE's main window: menus, the project tree and messages docks, and the central document
@@ -53,7 +56,10 @@ public:
     [[nodiscard]] MessagesPane &messagesPane() { return *m_messages; }
     [[nodiscard]] BuildController &buildController() { return *m_build; }
     [[nodiscard]] DocumentArea &documents() { return *m_documents; }
+    [[nodiscard]] OnlineController &online() { return *m_online; }
+    [[nodiscard]] WatchPane &watchPane() { return *m_watch; }
     [[nodiscard]] ProjectTreeView &projectTree() { return *m_projectTree; }
+    [[nodiscard]] ImportExportActions &importExport() { return *m_importExport; }
     [[nodiscard]] QString currentFile() const { return m_currentFile; }
     // The undo stacks are not at their clean state, typing is unsaved, or the project was
     // recovered and not saved since.
@@ -142,6 +148,7 @@ private:
     QAction *m_saveAsAction = nullptr;
     QAction *m_quitAction = nullptr;
     UndoActions *m_undoActions = nullptr;
+    ImportExportActions *m_importExport = nullptr;
     QAction *m_buildAction = nullptr;
     QAction *m_settingsAction = nullptr;
     QAction *m_loginAction = nullptr;
@@ -158,6 +165,9 @@ private:
     MessagesPane *m_messages = nullptr;
     BuildController *m_build = nullptr;
     DocumentArea *m_documents = nullptr;
+    QDockWidget *m_watchDock = nullptr;
+    WatchPane *m_watch = nullptr;
+    OnlineController *m_online = nullptr;
 };
 
 } // namespace iec::app

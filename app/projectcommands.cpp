@@ -101,7 +101,7 @@ bool ProjectCommands::rename(const BodyRef &item, const QString &newName, QStrin
     }
     if (const auto problem = NameRules::partNameError(m_model.project(), item.pou, newName, oldName))
         return fail(error, *problem);
-    m_stack.push(new model::RenamePouPartCommand(m_model, item.pou, item.part, oldName, newName));
+    m_stack.push(createRenamePouPartCommand(m_model, item.pou, item.part, oldName, newName));
     return true;
 }
 

@@ -17,8 +17,12 @@ ProjectTreeView::ProjectTreeView(QWidget *parent)
     // rename dialog (ProjectTreeActions), which explains a name it cannot take.
     setEditTriggers(QAbstractItemView::SelectedClicked);
     connect(this, &QTreeView::activated, this, [this](const QModelIndex &index) {
-        if (const auto body = m_model ? m_model->bodyRef(index) : std::nullopt)
+        if (!m_model)
+            return;
+        if (const auto body = m_model->bodyRef(index))
             Q_EMIT openRequested(*body);
+        else if (m_model->nodeKind(index) == ProjectTreeModel::NodeKind::DataType)
+            Q_EMIT openDataTypeRequested(m_model->name(index));
     });
 }
 

@@ -24,6 +24,8 @@ public:
 
 Q_SIGNALS:
     void openRequested(const iec::model::BodyRef &body);
+    // A data type node was activated (double-click, Enter).
+    void openDataTypeRequested(const QString &typeName);
     // The current node changed (also when a rebuild moved or removed it).
     void currentItemChanged();
 

@@ -2,6 +2,8 @@
 
 #include "interpreter/compiler/lexer.h"
 #include "model/undo/elementcommands.h"
+#include "model/undo/instancecommands.h"
+#include "model/undo/partcommands.h"
 #include "model/undo/poucommands.h"
 #include "model/undo/variablecommands.h"
 
@@ -95,7 +97,65 @@ void renameInDeclarations(model::ProjectModel &model, const model::Pou &pou, con
     }
 }
 
+// The SFC elements of a body that name the action (action blocks) or the transition (conditions).
+void renamePartReferences(model::ProjectModel &model, const BodyRef &ref, const std::vector<model::Element> &elements,
+    BodyRef::Part part, const QString &oldName, const QString &newName, QUndoCommand *parent)
+{
+    const auto renamedReference = [&](std::optional<model::Reference> &reference) {
+        if (!reference || !sameName(reference->name, oldName))
+            return false;
+        reference->name = newName;
+        return true;
+    };
+    for (const model::Element &element : elements) {
+        model::Element changed = element;
+        bool touched = false;
+        if (auto *block = std::get_if<model::ActionBlock>(&changed); block && part == BodyRef::Part::Action) {
+            for (model::ActionBlockAction &action : block->actions)
+                touched = renamedReference(action.reference) || touched;
+        } else if (auto *transition = std::get_if<model::Transition>(&changed);
+                   transition && part == BodyRef::Part::Transition && transition->condition) {
+            if (auto *reference = std::get_if<model::Reference>(&transition->condition->kind);
+                reference && sameName(reference->name, oldName)) {
+                reference->name = newName;
+                touched = true;
+            }
+        }
+        if (touched)
+            new model::ChangeElementCommand(model, ref, changed, parent);
+    }
+}
+
 } // namespace
+
+QUndoCommand *createRenamePouPartCommand(model::ProjectModel &model, model::PouId pouId, BodyRef::Part part,
+    const QString &oldName, const QString &newName)
+{
+    auto *command = new QUndoCommand;
+    command->setText((new model::RenamePouPartCommand(model, pouId, part, oldName, newName, command))->text());
+    const model::Pou *pou = model.project().findPou(pouId);
+    if (!pou)
+        return command;
+    const auto visit = [&](const BodyRef &ref, const model::Body &body) {
+        if (const std::vector<model::Element> *elements = body.elements())
+            renamePartReferences(model, ref, *elements, part, oldName, newName, command);
+        else if (const QString renamed = renameIdentifier(body.text(), oldName, newName); renamed != body.text())
+            new model::SetBodyTextCommand(model, ref, renamed, command);
+    };
+    // The part's own body is left alone: once renamed it is found under another name, so a
+    // command made now could not address it (and an action rarely names itself).
+    if (const model::Body *body = pou->body())
+        visit({pou->id, BodyRef::Part::Pou, {}}, *body);
+    for (const model::PouPart &action : pou->actions) {
+        if (!(part == BodyRef::Part::Action && sameName(action.name, oldName)))
+            visit({pou->id, BodyRef::Part::Action, action.name}, action.body);
+    }
+    for (const model::PouPart &transition : pou->transitions) {
+        if (!(part == BodyRef::Part::Transition && sameName(transition.name, oldName)))
+            visit({pou->id, BodyRef::Part::Transition, transition.name}, transition.body);
+    }
+    return command;
+}
 
 QUndoCommand *createRenamePouCommand(model::ProjectModel &model, model::PouId pou, const QString &newName)
 {
@@ -110,6 +170,9 @@ QUndoCommand *createRenamePouCommand(model::ProjectModel &model, model::PouId po
         renameInBodies(model, each, oldName, newName, command);
         renameInDeclarations(model, each, oldName, newName, command);
     }
+    // The tasks that run a renamed program.
+    if (auto instances = model::instancesWithProgramRenamed(model.project().instances, oldName, newName))
+        new model::SetInstancesCommand(model, std::move(*instances), command);
     return command;
 }
 

@@ -24,4 +24,10 @@ namespace iec::app {
 [[nodiscard]] QUndoCommand *createRenamePouCommand(
     model::ProjectModel &model, model::PouId pou, const QString &newName);
 
+// One undo step that renames an action or a transition of `pou` and updates what refers to it in
+// that POU: SFC action blocks (an action's reference), SFC transitions (a transition's condition
+// reference) and calls in its ST and IL bodies.
+[[nodiscard]] QUndoCommand *createRenamePouPartCommand(model::ProjectModel &model, model::PouId pou,
+    model::BodyRef::Part part, const QString &oldName, const QString &newName);
+
 } // namespace iec::app

@@ -1,1495 +1,3235 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
-<context>
-    <name>NameRules</name>
-    <message>
-        <source>Enter a name.</source>
-        <translation>Geben Sie einen Namen ein.</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is not an IEC identifier: use letters, digits and single underscores, starting with a letter or an underscore and not ending with an underscore.</source>
-        <translation>&quot;%1&quot; ist kein IEC-Bezeichner: verwenden Sie Buchstaben, Ziffern und einzelne Unterstriche; am Anfang ein Buchstabe oder Unterstrich, am Ende kein Unterstrich.</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is a reserved word of IEC 61131-3.</source>
-        <translation>&quot;%1&quot; ist ein reserviertes Wort der IEC 61131-3.</translation>
-    </message>
-    <message>
-        <source>A POU or data type named &quot;%1&quot; exists already.</source>
-        <translation>Ein Baustein oder Datentyp namens &quot;%1&quot; existiert bereits.</translation>
-    </message>
-    <message>
-        <source>This POU has an action or transition named &quot;%1&quot; already.</source>
-        <translation>Dieser Baustein hat bereits eine Aktion oder Transition namens &quot;%1&quot;.</translation>
-    </message>
-</context>
-<context>
-    <name>ProjectCommands</name>
-    <message>
-        <source>A function needs a return type.</source>
-        <translation>Eine Funktion braucht einen Rückgabetyp.</translation>
-    </message>
-    <message>
-        <source>The POU does not exist any more.</source>
-        <translation>Der Baustein existiert nicht mehr.</translation>
-    </message>
-    <message>
-        <source>The item does not exist any more.</source>
-        <translation>Das Element existiert nicht mehr.</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::AddPouDialog</name>
-    <message>
-        <source>Add POU</source>
-        <translation>Baustein hinzufügen</translation>
-    </message>
-    <message>
-        <source>Program</source>
-        <translation>Programm</translation>
-    </message>
-    <message>
-        <source>Function Block</source>
-        <translation>Funktionsbaustein</translation>
-    </message>
-    <message>
-        <source>Function</source>
-        <translation>Funktion</translation>
-    </message>
-    <message>
-        <source>&amp;Name:</source>
-        <translation>&amp;Name:</translation>
-    </message>
-    <message>
-        <source>&amp;Kind:</source>
-        <translation>&amp;Typ:</translation>
-    </message>
-    <message>
-        <source>&amp;Language:</source>
-        <translation>&amp;Sprache:</translation>
-    </message>
-    <message>
-        <source>&amp;Return type:</source>
-        <translation>&amp;Rückgabetyp:</translation>
-    </message>
-    <message>
-        <source>A function needs a return type.</source>
-        <translation>Eine Funktion braucht einen Rückgabetyp.</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::AddPouPartDialog</name>
-    <message>
-        <source>Add Action</source>
-        <translation>Aktion hinzufügen</translation>
-    </message>
-    <message>
-        <source>Add Transition</source>
-        <translation>Transition hinzufügen</translation>
-    </message>
-    <message>
-        <source>&amp;Name:</source>
-        <translation>&amp;Name:</translation>
-    </message>
-    <message>
-        <source>&amp;Language:</source>
-        <translation>&amp;Sprache:</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::BuildController</name>
-    <message>
-        <source>%1 Hint: %2</source>
-        <translation>%1 Hinweis: %2</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::DocumentArea</name>
-    <message>
-        <source>This body is written in %1. Its editor is not available in this version; the body is kept unchanged when the project is saved.</source>
-        <translation>Dieser Rumpf ist in %1 geschrieben. Sein Editor ist in dieser Version noch nicht verfügbar; der Rumpf bleibt beim Speichern unverändert erhalten.</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::MainWindow</name>
-    <message>
-        <source>&amp;File</source>
-        <translation>&amp;Datei</translation>
-    </message>
-    <message>
-        <source>&amp;Edit</source>
-        <translation>&amp;Bearbeiten</translation>
-    </message>
-    <message>
-        <source>&amp;View</source>
-        <translation>&amp;Ansicht</translation>
-    </message>
-    <message>
-        <source>&amp;Project</source>
-        <translation>&amp;Projekt</translation>
-    </message>
-    <message>
-        <source>&amp;Online</source>
-        <translation>&amp;Online</translation>
-    </message>
-    <message>
-        <source>&amp;Help</source>
-        <translation>&amp;Hilfe</translation>
-    </message>
-    <message>
-        <source>&amp;Quit</source>
-        <translation>&amp;Beenden</translation>
-    </message>
-    <message>
-        <source>&amp;Build</source>
-        <translation>&amp;Übersetzen</translation>
-    </message>
-    <message>
-        <source>Login and &amp;Run</source>
-        <translation>Einloggen und &amp;Starten</translation>
-    </message>
-    <message>
-        <source>&amp;Stop</source>
-        <translation>S&amp;toppen</translation>
-    </message>
-    <message>
-        <source>Single &amp;Cycle</source>
-        <translation>&amp;Einzelzyklus</translation>
-    </message>
-    <message>
-        <source>&amp;About IEC Studio</source>
-        <translation>Ü&amp;ber IEC Studio</translation>
-    </message>
-    <message>
-        <source>About &amp;Qt</source>
-        <translation>Über &amp;Qt</translation>
-    </message>
-    <message>
-        <source>Project</source>
-        <translation>Projekt</translation>
-    </message>
-    <message>
-        <source>Messages</source>
-        <translation>Meldungen</translation>
-    </message>
-    <message>
-        <source>About IEC Studio</source>
-        <translation>Über IEC Studio</translation>
-    </message>
-    <message>
-        <source>&lt;h3&gt;IEC Studio %1&lt;/h3&gt;&lt;p&gt;An IDE for the five IEC 61131-3 languages: Ladder Diagram, Function Block Diagram with CFC, Sequential Function Chart, Instruction List and Structured Text.&lt;/p&gt;&lt;p&gt;Projects are stored as PLCopen TC6 XML v2.01.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;IEC Studio %1&lt;/h3&gt;&lt;p&gt;Eine Entwicklungsumgebung für die fünf Sprachen der IEC 61131-3: Kontaktplan, Funktionsbausteinsprache mit CFC, Ablaufsprache, Anweisungsliste und Strukturierter Text.&lt;/p&gt;&lt;p&gt;Projekte werden als PLCopen TC6 XML v2.01 gespeichert.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <source>&amp;Settings...</source>
-        <translation>&amp;Einstellungen...</translation>
-    </message>
-    <message>
-        <source>&amp;New Project</source>
-        <translation>&amp;Neues Projekt</translation>
-    </message>
-    <message>
-        <source>&amp;Open...</source>
-        <translation>Ö&amp;ffnen...</translation>
-    </message>
-    <message>
-        <source>&amp;Save</source>
-        <translation>&amp;Speichern</translation>
-    </message>
-    <message>
-        <source>Save &amp;As...</source>
-        <translation>Speichern &amp;unter...</translation>
-    </message>
-    <message>
-        <source>Untitled</source>
-        <translation>Unbenannt</translation>
-    </message>
-    <message>
-        <source>%1[*] - IEC Studio</source>
-        <translation>%1[*] - IEC Studio</translation>
-    </message>
-    <message>
-        <source>%1 is not a PLCopen XML project.</source>
-        <translation>%1 ist kein PLCopen-XML-Projekt.</translation>
-    </message>
-    <message>
-        <source>Unsaved Changes</source>
-        <translation>Ungespeicherte Änderungen</translation>
-    </message>
-    <message>
-        <source>The project has unsaved changes. Save them first?</source>
-        <translation>Das Projekt hat ungespeicherte Änderungen. Zuerst speichern?</translation>
-    </message>
-    <message>
-        <source>Open Project</source>
-        <translation>Projekt öffnen</translation>
-    </message>
-    <message>
-        <source>PLCopen XML projects (*.xml);;All files (*)</source>
-        <translation>PLCopen-XML-Projekte (*.xml);;Alle Dateien (*)</translation>
-    </message>
-    <message>
-        <source>The project could not be opened: %1</source>
-        <translation>Das Projekt konnte nicht geöffnet werden: %1</translation>
-    </message>
-    <message>
-        <source>Save Project</source>
-        <translation>Projekt speichern</translation>
-    </message>
-    <message>
-        <source>The project could not be saved: %1</source>
-        <translation>Das Projekt konnte nicht gespeichert werden: %1</translation>
-    </message>
-    <message>
-        <source>Save Project As</source>
-        <translation>Projekt speichern unter</translation>
-    </message>
-    <message>
-        <source>PLCopen XML projects (*.xml)</source>
-        <translation>PLCopen-XML-Projekte (*.xml)</translation>
-    </message>
-    <message>
-        <source>&amp;Insert</source>
-        <translation>&amp;Einfügen</translation>
-    </message>
-    <message>
-        <source>&amp;Window</source>
-        <translation>&amp;Fenster</translation>
-    </message>
-    <message>
-        <source>Recent &amp;Projects</source>
-        <translation>&amp;Zuletzt geöffnete Projekte</translation>
-    </message>
-    <message>
-        <source>&amp;Examples</source>
-        <translation>&amp;Beispiele</translation>
-    </message>
-    <message>
-        <source>Toolbar</source>
-        <translation>Werkzeugleiste</translation>
-    </message>
-    <message>
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
-    </message>
-    <message>
-        <source>Autosave failed: %1</source>
-        <translation>Automatisches Speichern fehlgeschlagen: %1</translation>
-    </message>
-    <message>
-        <source>%1 does not exist any more; it was removed from the recent projects.</source>
-        <translation>%1 existiert nicht mehr; es wurde aus den zuletzt geöffneten Projekten entfernt.</translation>
-    </message>
-    <message>
-        <source>(untitled)</source>
-        <translation>(unbenannt)</translation>
-    </message>
-    <message>
-        <source>Recover Project</source>
-        <translation>Projekt wiederherstellen</translation>
-    </message>
-    <message>
-        <source>IEC Studio did not close properly. Recover the autosaved changes?</source>
-        <translation>IEC Studio wurde nicht ordnungsgemäß beendet. Die automatisch gespeicherten Änderungen wiederherstellen?</translation>
-    </message>
-    <message>
-        <source>Project: %1
+    <context>
+        <name>ImportExport</name>
+        <message>
+            <source>%1 is not a PLCopen XML project.</source>
+            <translation>%1 ist kein PLCopen-XML-Projekt.</translation>
+        </message>
+        <message>
+            <source>%1 cannot be read: %2</source>
+            <translation>%1 kann nicht gelesen werden: %2</translation>
+        </message>
+        <message>
+            <source>%1 exists already; the imported one is named %2.</source>
+            <translation>%1 existiert bereits; das importierte Objekt heißt %2.</translation>
+        </message>
+        <message>
+            <source>The imported configurations were left out; the project keeps its own.</source>
+            <translation>Die importierten Konfigurationen wurden ausgelassen; das Projekt behält seine eigenen.</translation>
+        </message>
+        <message numerus="yes">
+            <source>Import %n object(s)</source>
+            <translation>
+                <numerusform>%n Objekt importieren</numerusform>
+                <numerusform>%n Objekte importieren</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>%1 cannot be written: %2</source>
+            <translation>%1 kann nicht geschrieben werden: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>ModelCompletionProvider</name>
+        <message>
+            <source>Global variables</source>
+            <translation>Globale Variablen</translation>
+        </message>
+        <message>
+            <source>Local variables</source>
+            <translation>Lokale Variablen</translation>
+        </message>
+        <message>
+            <source>Programs</source>
+            <translation>Programme</translation>
+        </message>
+        <message>
+            <source>Function blocks</source>
+            <translation>Funktionsbausteine</translation>
+        </message>
+        <message>
+            <source>Functions</source>
+            <translation>Funktionen</translation>
+        </message>
+    </context>
+    <context>
+        <name>NameRules</name>
+        <message>
+            <source>Enter a name.</source>
+            <translation>Geben Sie einen Namen ein.</translation>
+        </message>
+        <message>
+            <source>"%1" is not an IEC identifier: use letters, digits and single underscores, starting with a letter or an underscore and not ending with an underscore.</source>
+            <translation>"%1" ist kein IEC-Bezeichner: verwenden Sie Buchstaben, Ziffern und einzelne Unterstriche; am Anfang ein Buchstabe oder Unterstrich, am Ende kein Unterstrich.</translation>
+        </message>
+        <message>
+            <source>"%1" is a reserved word of IEC 61131-3.</source>
+            <translation>"%1" ist ein reserviertes Wort der IEC 61131-3.</translation>
+        </message>
+        <message>
+            <source>A POU or data type named "%1" exists already.</source>
+            <translation>Ein Baustein oder Datentyp namens "%1" existiert bereits.</translation>
+        </message>
+        <message>
+            <source>This POU has an action or transition named "%1" already.</source>
+            <translation>Dieser Baustein hat bereits eine Aktion oder Transition namens "%1".</translation>
+        </message>
+    </context>
+    <context>
+        <name>ProjectCommands</name>
+        <message>
+            <source>A function needs a return type.</source>
+            <translation>Eine Funktion braucht einen Rückgabetyp.</translation>
+        </message>
+        <message>
+            <source>The POU does not exist any more.</source>
+            <translation>Der Baustein existiert nicht mehr.</translation>
+        </message>
+        <message>
+            <source>The item does not exist any more.</source>
+            <translation>Das Element existiert nicht mehr.</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::AddPouDialog</name>
+        <message>
+            <source>Add POU</source>
+            <translation>Baustein hinzufügen</translation>
+        </message>
+        <message>
+            <source>Program</source>
+            <translation>Programm</translation>
+        </message>
+        <message>
+            <source>Function Block</source>
+            <translation>Funktionsbaustein</translation>
+        </message>
+        <message>
+            <source>Function</source>
+            <translation>Funktion</translation>
+        </message>
+        <message>
+            <source>&amp;Name:</source>
+            <translation>&amp;Name:</translation>
+        </message>
+        <message>
+            <source>&amp;Kind:</source>
+            <translation>&amp;Typ:</translation>
+        </message>
+        <message>
+            <source>&amp;Language:</source>
+            <translation>&amp;Sprache:</translation>
+        </message>
+        <message>
+            <source>&amp;Return type:</source>
+            <translation>&amp;Rückgabetyp:</translation>
+        </message>
+        <message>
+            <source>A function needs a return type.</source>
+            <translation>Eine Funktion braucht einen Rückgabetyp.</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::AddPouPartDialog</name>
+        <message>
+            <source>Add Action</source>
+            <translation>Aktion hinzufügen</translation>
+        </message>
+        <message>
+            <source>Add Transition</source>
+            <translation>Transition hinzufügen</translation>
+        </message>
+        <message>
+            <source>&amp;Name:</source>
+            <translation>&amp;Name:</translation>
+        </message>
+        <message>
+            <source>&amp;Language:</source>
+            <translation>&amp;Sprache:</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::AutoDeclare</name>
+        <message>
+            <source>The POU does not exist any more.</source>
+            <translation>Der Baustein existiert nicht mehr.</translation>
+        </message>
+        <message>
+            <source>Declare %1</source>
+            <translation>%1 deklarieren</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::AutoDeclareDialog</name>
+        <message>
+            <source>Declare Variable</source>
+            <translation>Variable deklarieren</translation>
+        </message>
+        <message>
+            <source>&amp;Name:</source>
+            <translation>&amp;Name:</translation>
+        </message>
+        <message>
+            <source>&amp;Class:</source>
+            <translation>&amp;Klasse:</translation>
+        </message>
+        <message>
+            <source>&amp;Type:</source>
+            <translation>&amp;Typ:</translation>
+        </message>
+        <message>
+            <source>&amp;Initial value:</source>
+            <translation>&amp;Initialwert:</translation>
+        </message>
+        <message>
+            <source>C&amp;omment:</source>
+            <translation>K&amp;ommentar:</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::BuildController</name>
+        <message>
+            <source>%1 Hint: %2</source>
+            <translation>%1 Hinweis: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::DocumentArea</name>
+        <message>
+            <source>This body is written in %1. Its editor is not available in this version; the body is kept unchanged when the project is saved.</source>
+            <translation>Dieser Rumpf ist in %1 geschrieben. Sein Editor ist in dieser Version noch nicht verfügbar; der Rumpf bleibt beim Speichern unverändert erhalten.</translation>
+        </message>
+        <message>
+            <source>Declare Variable...</source>
+            <translation>Variable deklarieren...</translation>
+        </message>
+        <message>
+            <source>%1 is declared already.</source>
+            <translation>%1 ist bereits deklariert.</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::ImportExportActions</name>
+        <message>
+            <source>&amp;Import...</source>
+            <translation>&amp;Importieren...</translation>
+        </message>
+        <message>
+            <source>&amp;Export Project...</source>
+            <translation>Projekt &amp;exportieren...</translation>
+        </message>
+        <message>
+            <source>Export Se&amp;lection...</source>
+            <translation>&amp;Auswahl exportieren...</translation>
+        </message>
+        <message>
+            <source>Imported %1: %2 POU(s), %3 data type(s).</source>
+            <translation>%1 importiert: %2 Baustein(e), %3 Datentyp(en).</translation>
+        </message>
+        <message>
+            <source>Nothing could be read from %1.</source>
+            <translation>Aus %1 konnte nichts gelesen werden.</translation>
+        </message>
+        <message>
+            <source>Import</source>
+            <translation>Importieren</translation>
+        </message>
+        <message>
+            <source>PLCopen XML or IEC text (*.xml *.st *.iec *.txt);;PLCopen XML (*.xml);;IEC 61131-3 text (*.st *.iec *.txt)</source>
+            <translation>PLCopen XML oder IEC-Text (*.xml *.st *.iec *.txt);;PLCopen XML (*.xml);;IEC 61131-3-Text (*.st *.iec *.txt)</translation>
+        </message>
+        <message>
+            <source>PLCopen XML (*.xml)</source>
+            <translation>PLCopen XML (*.xml)</translation>
+        </message>
+        <message>
+            <source>IEC 61131-3 text (*.st)</source>
+            <translation>IEC 61131-3-Text (*.st)</translation>
+        </message>
+        <message>
+            <source>Export</source>
+            <translation>Exportieren</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::MainWindow</name>
+        <message>
+            <source>&amp;File</source>
+            <translation>&amp;Datei</translation>
+        </message>
+        <message>
+            <source>&amp;Edit</source>
+            <translation>&amp;Bearbeiten</translation>
+        </message>
+        <message>
+            <source>&amp;View</source>
+            <translation>&amp;Ansicht</translation>
+        </message>
+        <message>
+            <source>&amp;Project</source>
+            <translation>&amp;Projekt</translation>
+        </message>
+        <message>
+            <source>&amp;Online</source>
+            <translation>&amp;Online</translation>
+        </message>
+        <message>
+            <source>&amp;Help</source>
+            <translation>&amp;Hilfe</translation>
+        </message>
+        <message>
+            <source>&amp;Quit</source>
+            <translation>&amp;Beenden</translation>
+        </message>
+        <message>
+            <source>&amp;Build</source>
+            <translation>&amp;Übersetzen</translation>
+        </message>
+        <message>
+            <source>Login and &amp;Run</source>
+            <translation>Einloggen und &amp;Starten</translation>
+        </message>
+        <message>
+            <source>&amp;Stop</source>
+            <translation>S&amp;toppen</translation>
+        </message>
+        <message>
+            <source>Single &amp;Cycle</source>
+            <translation>&amp;Einzelzyklus</translation>
+        </message>
+        <message>
+            <source>&amp;About IEC Studio</source>
+            <translation>Ü&amp;ber IEC Studio</translation>
+        </message>
+        <message>
+            <source>About &amp;Qt</source>
+            <translation>Über &amp;Qt</translation>
+        </message>
+        <message>
+            <source>Project</source>
+            <translation>Projekt</translation>
+        </message>
+        <message>
+            <source>Messages</source>
+            <translation>Meldungen</translation>
+        </message>
+        <message>
+            <source>About IEC Studio</source>
+            <translation>Über IEC Studio</translation>
+        </message>
+        <message>
+            <source>&lt;h3&gt;IEC Studio %1&lt;/h3&gt;&lt;p&gt;An IDE for the five IEC 61131-3 languages: Ladder Diagram, Function Block Diagram with CFC, Sequential Function Chart, Instruction List and Structured Text.&lt;/p&gt;&lt;p&gt;Projects are stored as PLCopen TC6 XML v2.01.&lt;/p&gt;</source>
+            <translation>&lt;h3&gt;IEC Studio %1&lt;/h3&gt;&lt;p&gt;Eine Entwicklungsumgebung für die fünf Sprachen der IEC 61131-3: Kontaktplan, Funktionsbausteinsprache mit CFC, Ablaufsprache, Anweisungsliste und Strukturierter Text.&lt;/p&gt;&lt;p&gt;Projekte werden als PLCopen TC6 XML v2.01 gespeichert.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>&amp;Settings...</source>
+            <translation>&amp;Einstellungen...</translation>
+        </message>
+        <message>
+            <source>&amp;New Project</source>
+            <translation>&amp;Neues Projekt</translation>
+        </message>
+        <message>
+            <source>&amp;Open...</source>
+            <translation>Ö&amp;ffnen...</translation>
+        </message>
+        <message>
+            <source>&amp;Save</source>
+            <translation>&amp;Speichern</translation>
+        </message>
+        <message>
+            <source>Save &amp;As...</source>
+            <translation>Speichern &amp;unter...</translation>
+        </message>
+        <message>
+            <source>Untitled</source>
+            <translation>Unbenannt</translation>
+        </message>
+        <message>
+            <source>%1[*] - IEC Studio</source>
+            <translation>%1[*] - IEC Studio</translation>
+        </message>
+        <message>
+            <source>%1 is not a PLCopen XML project.</source>
+            <translation>%1 ist kein PLCopen-XML-Projekt.</translation>
+        </message>
+        <message>
+            <source>Unsaved Changes</source>
+            <translation>Ungespeicherte Änderungen</translation>
+        </message>
+        <message>
+            <source>The project has unsaved changes. Save them first?</source>
+            <translation>Das Projekt hat ungespeicherte Änderungen. Zuerst speichern?</translation>
+        </message>
+        <message>
+            <source>Open Project</source>
+            <translation>Projekt öffnen</translation>
+        </message>
+        <message>
+            <source>PLCopen XML projects (*.xml);;All files (*)</source>
+            <translation>PLCopen-XML-Projekte (*.xml);;Alle Dateien (*)</translation>
+        </message>
+        <message>
+            <source>The project could not be opened: %1</source>
+            <translation>Das Projekt konnte nicht geöffnet werden: %1</translation>
+        </message>
+        <message>
+            <source>Save Project</source>
+            <translation>Projekt speichern</translation>
+        </message>
+        <message>
+            <source>The project could not be saved: %1</source>
+            <translation>Das Projekt konnte nicht gespeichert werden: %1</translation>
+        </message>
+        <message>
+            <source>Save Project As</source>
+            <translation>Projekt speichern unter</translation>
+        </message>
+        <message>
+            <source>PLCopen XML projects (*.xml)</source>
+            <translation>PLCopen-XML-Projekte (*.xml)</translation>
+        </message>
+        <message>
+            <source>&amp;Insert</source>
+            <translation>&amp;Einfügen</translation>
+        </message>
+        <message>
+            <source>&amp;Window</source>
+            <translation>&amp;Fenster</translation>
+        </message>
+        <message>
+            <source>Recent &amp;Projects</source>
+            <translation>&amp;Zuletzt geöffnete Projekte</translation>
+        </message>
+        <message>
+            <source>&amp;Examples</source>
+            <translation>&amp;Beispiele</translation>
+        </message>
+        <message>
+            <source>Toolbar</source>
+            <translation>Werkzeugleiste</translation>
+        </message>
+        <message>
+            <source>%1 (%2)</source>
+            <translation>%1 (%2)</translation>
+        </message>
+        <message>
+            <source>Autosave failed: %1</source>
+            <translation>Automatisches Speichern fehlgeschlagen: %1</translation>
+        </message>
+        <message>
+            <source>%1 does not exist any more; it was removed from the recent projects.</source>
+            <translation>%1 existiert nicht mehr; es wurde aus den zuletzt geöffneten Projekten entfernt.</translation>
+        </message>
+        <message>
+            <source>(untitled)</source>
+            <translation>(unbenannt)</translation>
+        </message>
+        <message>
+            <source>Recover Project</source>
+            <translation>Projekt wiederherstellen</translation>
+        </message>
+        <message>
+            <source>IEC Studio did not close properly. Recover the autosaved changes?</source>
+            <translation>IEC Studio wurde nicht ordnungsgemäß beendet. Die automatisch gespeicherten Änderungen wiederherstellen?</translation>
+        </message>
+        <message>
+            <source>Project: %1
 Autosaved: %2</source>
-        <translation>Projekt: %1
+            <translation>Projekt: %1
 Automatisch gespeichert: %2</translation>
-    </message>
-    <message>
-        <source>&amp;Recover</source>
-        <translation>&amp;Wiederherstellen</translation>
-    </message>
-    <message>
-        <source>Ask &amp;Later</source>
-        <translation>&amp;Später fragen</translation>
-    </message>
-    <message>
-        <source>The project could not be recovered: %1</source>
-        <translation>Das Projekt konnte nicht wiederhergestellt werden: %1</translation>
-    </message>
-    <message>
-        <source>Build finished. Errors: %1, warnings: %2.</source>
-        <translation>Übersetzen beendet. Fehler: %1, Warnungen: %2.</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::MessagesPane</name>
-    <message>
-        <source>%1, line %2, column %3</source>
-        <translation>%1, Zeile %2, Spalte %3</translation>
-    </message>
-    <message>
-        <source>%1, line %2</source>
-        <translation>%1, Zeile %2</translation>
-    </message>
-    <message>
-        <source>%1, element %2</source>
-        <translation>%1, Element %2</translation>
-    </message>
-    <message>
-        <source>Info</source>
-        <translation>Hinweis</translation>
-    </message>
-    <message>
-        <source>Warning</source>
-        <translation>Warnung</translation>
-    </message>
-    <message>
-        <source>Error</source>
-        <translation>Fehler</translation>
-    </message>
-    <message>
-        <source>Severity</source>
-        <translation>Schwere</translation>
-    </message>
-    <message>
-        <source>Description</source>
-        <translation>Beschreibung</translation>
-    </message>
-    <message>
-        <source>Location</source>
-        <translation>Ort</translation>
-    </message>
-    <message>
-        <source>Errors: %1, warnings: %2</source>
-        <translation>Fehler: %1, Warnungen: %2</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::ProjectTreeActions</name>
-    <message>
-        <source>Add &amp;POU...</source>
-        <translation>&amp;Baustein hinzufügen...</translation>
-    </message>
-    <message>
-        <source>Add &amp;Action...</source>
-        <translation>&amp;Aktion hinzufügen...</translation>
-    </message>
-    <message>
-        <source>Add &amp;Transition...</source>
-        <translation>&amp;Transition hinzufügen...</translation>
-    </message>
-    <message>
-        <source>&amp;Rename...</source>
-        <translation>&amp;Umbenennen...</translation>
-    </message>
-    <message>
-        <source>&amp;Delete</source>
-        <translation>&amp;Löschen</translation>
-    </message>
-    <message>
-        <source>D&amp;uplicate</source>
-        <translation>D&amp;uplizieren</translation>
-    </message>
-    <message>
-        <source>Add POU</source>
-        <translation>Baustein hinzufügen</translation>
-    </message>
-    <message>
-        <source>Rename %1</source>
-        <translation>%1 umbenennen</translation>
-    </message>
-    <message>
-        <source>Delete</source>
-        <translation>Löschen</translation>
-    </message>
-    <message>
-        <source>Delete %1? Edit → Undo brings it back.</source>
-        <translation>%1 löschen? Bearbeiten → Rückgängig holt es zurück.</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::ProjectTreeModel</name>
-    <message>
-        <source>Programs</source>
-        <translation>Programme</translation>
-    </message>
-    <message>
-        <source>Function Blocks</source>
-        <translation>Funktionsbausteine</translation>
-    </message>
-    <message>
-        <source>Functions</source>
-        <translation>Funktionen</translation>
-    </message>
-    <message>
-        <source>Data Types</source>
-        <translation>Datentypen</translation>
-    </message>
-    <message>
-        <source>Global Variables</source>
-        <translation>Globale Variablen</translation>
-    </message>
-    <message>
-        <source>Configurations</source>
-        <translation>Konfigurationen</translation>
-    </message>
-    <message>
-        <source>%1 (PRG)</source>
-        <translation>%1 (PRG)</translation>
-    </message>
-    <message>
-        <source>%1 (FB)</source>
-        <translation>%1 (FB)</translation>
-    </message>
-    <message>
-        <source>%1 (FUN)</source>
-        <translation>%1 (FUN)</translation>
-    </message>
-    <message>
-        <source>%1, written in %2</source>
-        <translation>%1, geschrieben in %2</translation>
-    </message>
-    <message>
-        <source>Structured Text (ST)</source>
-        <translation>Strukturierter Text (ST)</translation>
-    </message>
-    <message>
-        <source>Instruction List (IL)</source>
-        <translation>Anweisungsliste (AWL)</translation>
-    </message>
-    <message>
-        <source>Ladder Diagram (LD)</source>
-        <translation>Kontaktplan (KOP)</translation>
-    </message>
-    <message>
-        <source>Function Block Diagram (FBD)</source>
-        <translation>Funktionsbausteinsprache (FUP)</translation>
-    </message>
-    <message>
-        <source>Sequential Function Chart (SFC)</source>
-        <translation>Ablaufsprache (AS)</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::RecentFilesMenu</name>
-    <message>
-        <source>(none)</source>
-        <translation>(keine)</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::RecoveryManager</name>
-    <message>
-        <source>Cannot create the folder %1.</source>
-        <translation>Der Ordner %1 kann nicht angelegt werden.</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::RenameDialog</name>
-    <message>
-        <source>Rename %1</source>
-        <translation>%1 umbenennen</translation>
-    </message>
-    <message>
-        <source>&amp;New name:</source>
-        <translation>&amp;Neuer Name:</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::SettingsDialog</name>
-    <message>
-        <source>Settings</source>
-        <translation>Einstellungen</translation>
-    </message>
-    <message>
-        <source>System language</source>
-        <translation>Systemsprache</translation>
-    </message>
-    <message>
-        <source> pt</source>
-        <translation> pt</translation>
-    </message>
-    <message>
-        <source> px</source>
-        <translation> px</translation>
-    </message>
-    <message>
-        <source> min</source>
-        <translation> min</translation>
-    </message>
-    <message>
-        <source>Off</source>
-        <translation>Aus</translation>
-    </message>
-    <message>
-        <source>User interface language:</source>
-        <translation>Sprache der Oberfläche:</translation>
-    </message>
-    <message>
-        <source>Editor font:</source>
-        <translation>Editor-Schriftart:</translation>
-    </message>
-    <message>
-        <source>Editor font size:</source>
-        <translation>Editor-Schriftgröße:</translation>
-    </message>
-    <message>
-        <source>Diagram grid size:</source>
-        <translation>Rastergröße im Diagramm:</translation>
-    </message>
-    <message>
-        <source>Autosave every:</source>
-        <translation>Automatisch speichern alle:</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::UndoActions</name>
-    <message>
-        <source>&amp;Undo Typing</source>
-        <translation>Tippen &amp;rückgängig</translation>
-    </message>
-    <message>
-        <source>&amp;Redo Typing</source>
-        <translation>Tippen &amp;wiederherstellen</translation>
-    </message>
-    <message>
-        <source>&amp;Undo %1</source>
-        <translation>%1 &amp;rückgängig</translation>
-    </message>
-    <message>
-        <source>&amp;Undo</source>
-        <translation>&amp;Rückgängig</translation>
-    </message>
-    <message>
-        <source>&amp;Redo %1</source>
-        <translation>%1 &amp;wiederherstellen</translation>
-    </message>
-    <message>
-        <source>&amp;Redo</source>
-        <translation>&amp;Wiederherstellen</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::WindowMenu</name>
-    <message>
-        <source>&amp;Next Document</source>
-        <translation>&amp;Nächstes Dokument</translation>
-    </message>
-    <message>
-        <source>&amp;Previous Document</source>
-        <translation>&amp;Vorheriges Dokument</translation>
-    </message>
-    <message>
-        <source>&amp;Close All Documents</source>
-        <translation>&amp;Alle Dokumente schließen</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::AliasPage</name>
-    <message>
-        <source>Base type:</source>
-        <translation>Basistyp:</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::ArrayPage</name>
-    <message>
-        <source>Low</source>
-        <translation>Unten</translation>
-    </message>
-    <message>
-        <source>High</source>
-        <translation>Oben</translation>
-    </message>
-    <message>
-        <source>Dimensions</source>
-        <translation>Dimensionen</translation>
-    </message>
-    <message>
-        <source>Element type:</source>
-        <translation>Elementtyp:</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::CodeEditor</name>
-    <message>
-        <source>Go to Definition</source>
-        <translation>Gehe zur Definition</translation>
-    </message>
-    <message>
-        <source>Complete</source>
-        <translation>Vervollständigen</translation>
-    </message>
-    <message>
-        <source>Input Assistant...</source>
-        <translation>Eingabehilfe...</translation>
-    </message>
-    <message>
-        <source>Toggle Comment</source>
-        <translation>Kommentar ein/aus</translation>
-    </message>
-    <message>
-        <source>Fold All</source>
-        <translation>Alles einklappen</translation>
-    </message>
-    <message>
-        <source>Unfold All</source>
-        <translation>Alles ausklappen</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::DataTypeEditor</name>
-    <message>
-        <source>Name:</source>
-        <translation>Name:</translation>
-    </message>
-    <message>
-        <source>Kind:</source>
-        <translation>Art:</translation>
-    </message>
-    <message>
-        <source>Initial value:</source>
-        <translation>Initialwert:</translation>
-    </message>
-    <message>
-        <source>(the default of the type)</source>
-        <translation>(Vorgabewert des Typs)</translation>
-    </message>
-    <message>
-        <source>Structure</source>
-        <translation>Struktur</translation>
-    </message>
-    <message>
-        <source>Enumeration</source>
-        <translation>Aufzählung</translation>
-    </message>
-    <message>
-        <source>Array</source>
-        <translation>Feld</translation>
-    </message>
-    <message>
-        <source>Subrange</source>
-        <translation>Unterbereich</translation>
-    </message>
-    <message>
-        <source>Alias</source>
-        <translation>Alias</translation>
-    </message>
-    <message>
-        <source>String</source>
-        <translation>Zeichenkette</translation>
-    </message>
-    <message>
-        <source>IEC text:</source>
-        <translation>IEC-Text:</translation>
-    </message>
-    <message>
-        <source>IEC text as last applied (correct the marked fields to apply):</source>
-        <translation>IEC-Text wie zuletzt übernommen (korrigieren Sie die markierten Felder, um zu übernehmen):</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::DataTypeValidator</name>
-    <message>
-        <source>A POU or data type named &quot;%1&quot; exists already.</source>
-        <translation>Ein Baustein oder Datentyp namens &quot;%1&quot; existiert bereits.</translation>
-    </message>
-    <message>
-        <source>A structure needs at least one member.</source>
-        <translation>Eine Struktur braucht mindestens ein Element.</translation>
-    </message>
-    <message>
-        <source>There is a member named &quot;%1&quot; already.</source>
-        <translation>Es gibt bereits ein Element namens &quot;%1&quot;.</translation>
-    </message>
-    <message>
-        <source>An enumeration needs at least one value.</source>
-        <translation>Eine Aufzählung braucht mindestens einen Wert.</translation>
-    </message>
-    <message>
-        <source>The value &quot;%1&quot; is listed already.</source>
-        <translation>Der Wert &quot;%1&quot; ist bereits aufgeführt.</translation>
-    </message>
-    <message>
-        <source>Enter a whole number, or leave it empty.</source>
-        <translation>Geben Sie eine ganze Zahl ein oder lassen Sie das Feld leer.</translation>
-    </message>
-    <message>
-        <source>An array needs at least one dimension.</source>
-        <translation>Ein Feld braucht mindestens eine Dimension.</translation>
-    </message>
-    <message>
-        <source>Enter a length from 1 to 65535, or leave it empty for the default.</source>
-        <translation>Geben Sie eine Länge von 1 bis 65535 ein oder lassen Sie das Feld für den Vorgabewert leer.</translation>
-    </message>
-    <message>
-        <source>Choose an integer type such as INT, DINT or UINT.</source>
-        <translation>Wählen Sie einen Ganzzahltyp wie INT, DINT oder UINT.</translation>
-    </message>
-    <message>
-        <source>The upper bound %1 is less than the lower bound %2.</source>
-        <translation>Die obere Grenze %1 ist kleiner als die untere Grenze %2.</translation>
-    </message>
-    <message>
-        <source>Enter a bound.</source>
-        <translation>Geben Sie eine Grenze ein.</translation>
-    </message>
-    <message>
-        <source>Enter a whole number or the name of a constant.</source>
-        <translation>Geben Sie eine ganze Zahl oder den Namen einer Konstante ein.</translation>
-    </message>
-    <message>
-        <source>Enter a type.</source>
-        <translation>Geben Sie einen Typ ein.</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is not a type.</source>
-        <translation>&quot;%1&quot; ist kein Typ.</translation>
-    </message>
-    <message>
-        <source>A type cannot contain itself.</source>
-        <translation>Ein Typ kann sich nicht selbst enthalten.</translation>
-    </message>
-    <message>
-        <source>Unknown type &quot;%1&quot;.</source>
-        <translation>Unbekannter Typ &quot;%1&quot;.</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is not a valid initial value.</source>
-        <translation>&quot;%1&quot; ist kein gültiger Initialwert.</translation>
-    </message>
-    <message>
-        <source>Enter a name.</source>
-        <translation>Geben Sie einen Namen ein.</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is not an IEC identifier: use letters, digits and single underscores, starting with a letter or an underscore and not ending with an underscore.</source>
-        <translation>&quot;%1&quot; ist kein IEC-Bezeichner: verwenden Sie Buchstaben, Ziffern und einzelne Unterstriche; am Anfang ein Buchstabe oder Unterstrich, am Ende kein Unterstrich.</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is a reserved word of IEC 61131-3.</source>
-        <translation>&quot;%1&quot; ist ein reserviertes Wort der IEC 61131-3.</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::DeclarationEditor</name>
-    <message>
-        <source>Table</source>
-        <translation>Tabelle</translation>
-    </message>
-    <message>
-        <source>Text</source>
-        <translation>Text</translation>
-    </message>
-    <message>
-        <source>Add Variable</source>
-        <translation>Variable hinzufügen</translation>
-    </message>
-    <message>
-        <source>Remove</source>
-        <translation>Entfernen</translation>
-    </message>
-    <message>
-        <source>Move Up</source>
-        <translation>Nach oben</translation>
-    </message>
-    <message>
-        <source>Move Down</source>
-        <translation>Nach unten</translation>
-    </message>
-    <message>
-        <source>Row %1: %2</source>
-        <translation>Zeile %1: %2</translation>
-    </message>
-    <message>
-        <source>Line %1, column %2: %3</source>
-        <translation>Zeile %1, Spalte %2: %3</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::DeclarationRows</name>
-    <message>
-        <source>&quot;%1&quot; is not a variable class.</source>
-        <translation>&quot;%1&quot; ist keine Variablenklasse.</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is not a data type.</source>
-        <translation>&quot;%1&quot; ist kein Datentyp.</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is not an initial value for %2.</source>
-        <translation>&quot;%1&quot; ist kein Initialwert für %2.</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::DeclarationTableModel</name>
-    <message>
-        <source>Name</source>
-        <translation>Name</translation>
-    </message>
-    <message>
-        <source>Class</source>
-        <translation>Klasse</translation>
-    </message>
-    <message>
-        <source>Type</source>
-        <translation>Typ</translation>
-    </message>
-    <message>
-        <source>Initial Value</source>
-        <translation>Initialwert</translation>
-    </message>
-    <message>
-        <source>Address</source>
-        <translation>Adresse</translation>
-    </message>
-    <message>
-        <source>Comment</source>
-        <translation>Kommentar</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::DeclarationText</name>
-    <message>
-        <source>VAR_ACCESS and VAR_CONFIG belong in a configuration, not in a POU.</source>
-        <translation>VAR_ACCESS und VAR_CONFIG gehören in eine Konfiguration, nicht in einen Baustein.</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is not a valid name: use letters, digits and single underscores, and no keyword.</source>
-        <translation>&quot;%1&quot; ist kein gültiger Name: verwenden Sie Buchstaben, Ziffern und einzelne Unterstriche, und kein Schlüsselwort.</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is not an address such as %IX0.0, %QW3 or %MD10.</source>
-        <translation>&quot;%1&quot; ist keine Adresse wie %IX0.0, %QW3 oder %MD10.</translation>
-    </message>
-    <message>
-        <source>%1 is declared twice.</source>
-        <translation>%1 ist doppelt deklariert.</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::EnumPage</name>
-    <message>
-        <source>Name</source>
-        <translation>Name</translation>
-    </message>
-    <message>
-        <source>Value (optional)</source>
-        <translation>Wert (optional)</translation>
-    </message>
-    <message>
-        <source>Values</source>
-        <translation>Werte</translation>
-    </message>
-    <message>
-        <source>Base type (optional):</source>
-        <translation>Basistyp (optional):</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::FindReplaceBar</name>
-    <message>
-        <source>Find</source>
-        <translation>Suchen</translation>
-    </message>
-    <message>
-        <source>Replace with</source>
-        <translation>Ersetzen durch</translation>
-    </message>
-    <message>
-        <source>Match case</source>
-        <translation>Groß-/Kleinschreibung</translation>
-    </message>
-    <message>
-        <source>Whole words</source>
-        <translation>Ganze Wörter</translation>
-    </message>
-    <message>
-        <source>Previous</source>
-        <translation>Vorheriges</translation>
-    </message>
-    <message>
-        <source>Next</source>
-        <translation>Nächstes</translation>
-    </message>
-    <message>
-        <source>Replace</source>
-        <translation>Ersetzen</translation>
-    </message>
-    <message>
-        <source>Replace All</source>
-        <translation>Alle ersetzen</translation>
-    </message>
-    <message>
-        <source>Close</source>
-        <translation>Schließen</translation>
-    </message>
-    <message>
-        <source>Find:</source>
-        <translation>Suchen:</translation>
-    </message>
-    <message>
-        <source>Replace:</source>
-        <translation>Ersetzen:</translation>
-    </message>
-    <message>
-        <source>Not found</source>
-        <translation>Nicht gefunden</translation>
-    </message>
-    <message>
-        <source>Search wrapped</source>
-        <translation>Suche am Anfang fortgesetzt</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n replaced</source>
-        <translation>
-            <numerusform>%n ersetzt</numerusform>
-            <numerusform>%n ersetzt</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::InputAssistantDialog</name>
-    <message>
-        <source>Input Assistant</source>
-        <translation>Eingabehilfe</translation>
-    </message>
-    <message>
-        <source>Operators</source>
-        <translation>Operatoren</translation>
-    </message>
-    <message>
-        <source>Operands</source>
-        <translation>Operanden</translation>
-    </message>
-    <message>
-        <source>Functions</source>
-        <translation>Funktionen</translation>
-    </message>
-    <message>
-        <source>Function blocks</source>
-        <translation>Funktionsbausteine</translation>
-    </message>
-    <message>
-        <source>Filter</source>
-        <translation>Filter</translation>
-    </message>
-    <message>
-        <source>Name</source>
-        <translation>Name</translation>
-    </message>
-    <message>
-        <source>Description</source>
-        <translation>Beschreibung</translation>
-    </message>
-    <message>
-        <source>IL operators</source>
-        <translation>AWL-Operatoren</translation>
-    </message>
-    <message>
-        <source>ST operators</source>
-        <translation>ST-Operatoren</translation>
-    </message>
-    <message>
-        <source>Variables</source>
-        <translation>Variablen</translation>
-    </message>
-    <message>
-        <source>Boolean constants</source>
-        <translation>Boolesche Konstanten</translation>
-    </message>
-    <message>
-        <source>User-defined functions</source>
-        <translation>Eigene Funktionen</translation>
-    </message>
-    <message>
-        <source>User-defined function blocks</source>
-        <translation>Eigene Funktionsbausteine</translation>
-    </message>
-    <message>
-        <source>Programs</source>
-        <translation>Programme</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::RowTable</name>
-    <message>
-        <source>Add</source>
-        <translation>Hinzufügen</translation>
-    </message>
-    <message>
-        <source>Add a row below the current one</source>
-        <translation>Eine Zeile unter der aktuellen hinzufügen</translation>
-    </message>
-    <message>
-        <source>Remove</source>
-        <translation>Entfernen</translation>
-    </message>
-    <message>
-        <source>Remove the current row</source>
-        <translation>Die aktuelle Zeile entfernen</translation>
-    </message>
-    <message>
-        <source>Up</source>
-        <translation>Nach oben</translation>
-    </message>
-    <message>
-        <source>Move the current row up</source>
-        <translation>Die aktuelle Zeile nach oben verschieben</translation>
-    </message>
-    <message>
-        <source>Down</source>
-        <translation>Nach unten</translation>
-    </message>
-    <message>
-        <source>Move the current row down</source>
-        <translation>Die aktuelle Zeile nach unten verschieben</translation>
-    </message>
-    <message>
-        <source>Row %1, %2: %3</source>
-        <translation>Zeile %1, %2: %3</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::StandardLibrary</name>
-    <message>
-        <source>Arithmetic</source>
-        <translation>Arithmetik</translation>
-    </message>
-    <message>
-        <source>Numeric</source>
-        <translation>Numerisch</translation>
-    </message>
-    <message>
-        <source>Bit shift</source>
-        <translation>Bitschieben</translation>
-    </message>
-    <message>
-        <source>Selection</source>
-        <translation>Auswahl</translation>
-    </message>
-    <message>
-        <source>Comparison</source>
-        <translation>Vergleich</translation>
-    </message>
-    <message>
-        <source>String</source>
-        <translation>Zeichenkette</translation>
-    </message>
-    <message>
-        <source>Type conversion</source>
-        <translation>Typumwandlung</translation>
-    </message>
-    <message>
-        <source>Bistable</source>
-        <translation>Bistabil</translation>
-    </message>
-    <message>
-        <source>Edge detection</source>
-        <translation>Flankenerkennung</translation>
-    </message>
-    <message>
-        <source>Counters</source>
-        <translation>Zähler</translation>
-    </message>
-    <message>
-        <source>Timers</source>
-        <translation>Zeitgeber</translation>
-    </message>
-    <message>
-        <source>Load the operand into the current result</source>
-        <translation>Operand in das aktuelle Ergebnis laden</translation>
-    </message>
-    <message>
-        <source>Store the current result in the operand</source>
-        <translation>Aktuelles Ergebnis im Operanden speichern</translation>
-    </message>
-    <message>
-        <source>Set the Boolean operand to TRUE if the current result is TRUE</source>
-        <translation>Booleschen Operanden auf TRUE setzen, wenn das aktuelle Ergebnis TRUE ist</translation>
-    </message>
-    <message>
-        <source>Reset the Boolean operand to FALSE if the current result is TRUE</source>
-        <translation>Booleschen Operanden auf FALSE rücksetzen, wenn das aktuelle Ergebnis TRUE ist</translation>
-    </message>
-    <message>
-        <source>Bitwise AND</source>
-        <translation>Bitweises UND</translation>
-    </message>
-    <message>
-        <source>Bitwise OR</source>
-        <translation>Bitweises ODER</translation>
-    </message>
-    <message>
-        <source>Bitwise exclusive OR</source>
-        <translation>Bitweises exklusives ODER</translation>
-    </message>
-    <message>
-        <source>Addition</source>
-        <translation>Addition</translation>
-    </message>
-    <message>
-        <source>Subtraction</source>
-        <translation>Subtraktion</translation>
-    </message>
-    <message>
-        <source>Multiplication</source>
-        <translation>Multiplikation</translation>
-    </message>
-    <message>
-        <source>Division</source>
-        <translation>Division</translation>
-    </message>
-    <message>
-        <source>Greater than (&gt;)</source>
-        <translation>Größer als (&gt;)</translation>
-    </message>
-    <message>
-        <source>Greater than or equal (&gt;=)</source>
-        <translation>Größer oder gleich (&gt;=)</translation>
-    </message>
-    <message>
-        <source>Equal (=)</source>
-        <translation>Gleich (=)</translation>
-    </message>
-    <message>
-        <source>Not equal (&lt;&gt;)</source>
-        <translation>Ungleich (&lt;&gt;)</translation>
-    </message>
-    <message>
-        <source>Less than or equal (&lt;=)</source>
-        <translation>Kleiner oder gleich (&lt;=)</translation>
-    </message>
-    <message>
-        <source>Less than (&lt;)</source>
-        <translation>Kleiner als (&lt;)</translation>
-    </message>
-    <message>
-        <source>Jump to the label</source>
-        <translation>Sprung zur Marke</translation>
-    </message>
-    <message>
-        <source>Call a function block instance</source>
-        <translation>Funktionsbaustein-Instanz aufrufen</translation>
-    </message>
-    <message>
-        <source>Return to the calling POU</source>
-        <translation>Rückkehr zum aufrufenden Baustein</translation>
-    </message>
-    <message>
-        <source>Evaluate the deferred operation</source>
-        <translation>Zurückgestellte Operation auswerten</translation>
-    </message>
-    <message>
-        <source>negated operand</source>
-        <translation>negierter Operand</translation>
-    </message>
-    <message>
-        <source>deferred until )</source>
-        <translation>zurückgestellt bis )</translation>
-    </message>
-    <message>
-        <source>only if the current result is TRUE</source>
-        <translation>nur wenn das aktuelle Ergebnis TRUE ist</translation>
-    </message>
-    <message>
-        <source>only if the current result is FALSE</source>
-        <translation>nur wenn das aktuelle Ergebnis FALSE ist</translation>
-    </message>
-    <message>
-        <source>Assignment</source>
-        <translation>Zuweisung</translation>
-    </message>
-    <message>
-        <source>Modulo</source>
-        <translation>Modulo</translation>
-    </message>
-    <message>
-        <source>Negation</source>
-        <translation>Negation</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::StringPage</name>
-    <message>
-        <source>Characters:</source>
-        <translation>Zeichen:</translation>
-    </message>
-    <message>
-        <source>Length (optional):</source>
-        <translation>Länge (optional):</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::StructPage</name>
-    <message>
-        <source>Name</source>
-        <translation>Name</translation>
-    </message>
-    <message>
-        <source>Type</source>
-        <translation>Typ</translation>
-    </message>
-    <message>
-        <source>Initial value</source>
-        <translation>Initialwert</translation>
-    </message>
-    <message>
-        <source>Comment</source>
-        <translation>Kommentar</translation>
-    </message>
-    <message>
-        <source>Members</source>
-        <translation>Elemente</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::SubrangePage</name>
-    <message>
-        <source>Base type:</source>
-        <translation>Basistyp:</translation>
-    </message>
-    <message>
-        <source>Low:</source>
-        <translation>Unten:</translation>
-    </message>
-    <message>
-        <source>High:</source>
-        <translation>Oben:</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::AddDataTypeCommand</name>
-    <message>
-        <source>Add data type %1</source>
-        <translation>Datentyp %1 hinzufügen</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::AddPouCommand</name>
-    <message>
-        <source>Add POU %1</source>
-        <translation>Baustein %1 hinzufügen</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::AddPouPartCommand</name>
-    <message>
-        <source>Add action %1</source>
-        <translation>Aktion %1 hinzufügen</translation>
-    </message>
-    <message>
-        <source>Add transition %1</source>
-        <translation>Transition %1 hinzufügen</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::AddVariableCommand</name>
-    <message>
-        <source>Add variable %1</source>
-        <translation>Variable %1 hinzufügen</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::ChangeDataTypeCommand</name>
-    <message>
-        <source>Change data type %1</source>
-        <translation>Datentyp %1 ändern</translation>
-    </message>
-    <message>
-        <source>Rename %1 to %2</source>
-        <translation>%1 in %2 umbenennen</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::ChangeElementCommand</name>
-    <message>
-        <source>Change %1</source>
-        <translation>%1 ändern</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::ChangeVariableCommand</name>
-    <message>
-        <source>Change variable %1</source>
-        <translation>Variable %1 ändern</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::ConnectCommand</name>
-    <message>
-        <source>Connect</source>
-        <translation>Verbinden</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::DisconnectCommand</name>
-    <message>
-        <source>Disconnect</source>
-        <translation>Verbindung lösen</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::DuplicatePouCommand</name>
-    <message>
-        <source>Duplicate POU as %1</source>
-        <translation>Baustein als %1 duplizieren</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::InsertElementCommand</name>
-    <message>
-        <source>Insert %1</source>
-        <translation>%1 einfügen</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::MoveElementsCommand</name>
-    <message numerus="yes">
-        <source>Move %n element(s)</source>
-        <translation>
-            <numerusform>%n Element verschieben</numerusform>
-            <numerusform>%n Elemente verschieben</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::RemoveDataTypeCommand</name>
-    <message>
-        <source>Delete data type %1</source>
-        <translation>Datentyp %1 löschen</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::RemoveElementCommand</name>
-    <message>
-        <source>Delete %1</source>
-        <translation>%1 löschen</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::RemovePouCommand</name>
-    <message>
-        <source>Delete POU %1</source>
-        <translation>Baustein %1 löschen</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::RemovePouPartCommand</name>
-    <message>
-        <source>Delete action %1</source>
-        <translation>Aktion %1 löschen</translation>
-    </message>
-    <message>
-        <source>Delete transition %1</source>
-        <translation>Transition %1 löschen</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::RemoveVariableCommand</name>
-    <message>
-        <source>Delete variable %1</source>
-        <translation>Variable %1 löschen</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::RenamePouCommand</name>
-    <message>
-        <source>Rename %1 to %2</source>
-        <translation>%1 in %2 umbenennen</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::RenamePouPartCommand</name>
-    <message>
-        <source>Rename %1 to %2</source>
-        <translation>%1 in %2 umbenennen</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::SetBodyTextCommand</name>
-    <message>
-        <source>Edit text</source>
-        <translation>Text bearbeiten</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::SetInterfaceCommand</name>
-    <message>
-        <source>Edit declarations</source>
-        <translation>Deklarationen bearbeiten</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::plcopen::Reader</name>
-    <message>
-        <source>The elements are nested too deeply; the content below is skipped.</source>
-        <translation>Die Elemente sind zu tief verschachtelt; der Inhalt darunter wird übersprungen.</translation>
-    </message>
-    <message>
-        <source>The attribute %1=&quot;%2&quot; of &lt;%3&gt; has an invalid value; it is kept as written.</source>
-        <translation>Das Attribut %1=&quot;%2&quot; von &lt;%3&gt; hat einen ungültigen Wert; es bleibt wie geschrieben erhalten.</translation>
-    </message>
-    <message>
-        <source>&lt;%1&gt; lacks the required attribute &apos;%2&apos;.</source>
-        <translation>&lt;%1&gt; fehlt das erforderliche Attribut &apos;%2&apos;.</translation>
-    </message>
-    <message>
-        <source>&lt;%1&gt; lacks the required element &lt;%2&gt;.</source>
-        <translation>&lt;%1&gt; fehlt das erforderliche Element &lt;%2&gt;.</translation>
-    </message>
-    <message>
-        <source>Unknown attribute &apos;%1&apos; on &lt;%2&gt; is kept as it is.</source>
-        <translation>Das unbekannte Attribut &apos;%1&apos; an &lt;%2&gt; bleibt unverändert erhalten.</translation>
-    </message>
-    <message>
-        <source>Unknown attribute &apos;%1&apos; on &lt;%2&gt; is ignored.</source>
-        <translation>Das unbekannte Attribut &apos;%1&apos; an &lt;%2&gt; wird ignoriert.</translation>
-    </message>
-    <message>
-        <source>Unknown element &lt;%1&gt; in &lt;%2&gt; is kept as it is.</source>
-        <translation>Das unbekannte Element &lt;%1&gt; in &lt;%2&gt; bleibt unverändert erhalten.</translation>
-    </message>
-    <message>
-        <source>Unknown element &lt;%1&gt; in &lt;%2&gt; is ignored.</source>
-        <translation>Das unbekannte Element &lt;%1&gt; in &lt;%2&gt; wird ignoriert.</translation>
-    </message>
-    <message>
-        <source>A declaration in addData is nested too deeply to read; it is kept as it is.</source>
-        <translation>Eine Deklaration in addData ist zu tief verschachtelt; sie bleibt unverändert erhalten.</translation>
-    </message>
-    <message>
-        <source>&lt;%1&gt; names no data type.</source>
-        <translation>&lt;%1&gt; nennt keinen Datentyp.</translation>
-    </message>
-    <message>
-        <source>The data type &lt;%1&gt; is not in the PLCopen schema; it is kept by name.</source>
-        <translation>Der Datentyp &lt;%1&gt; gehört nicht zum PLCopen-Schema; er bleibt mit seinem Namen erhalten.</translation>
-    </message>
-    <message>
-        <source>The namespace &apos;%1&apos; is not PLCopen TC6 XML 2.01; the file is read anyway.</source>
-        <translation>Der Namensraum &apos;%1&apos; ist nicht PLCopen TC6 XML 2.01; die Datei wird trotzdem gelesen.</translation>
-    </message>
-    <message>
-        <source>The file is not well-formed XML: %1.</source>
-        <translation>Die Datei ist kein wohlgeformtes XML: %1.</translation>
-    </message>
-    <message>
-        <source>The root element is &lt;%1&gt;, not &lt;project&gt;: this is not a PLCopen XML file.</source>
-        <translation>Das Wurzelelement ist &lt;%1&gt;, nicht &lt;project&gt;: dies ist keine PLCopen-XML-Datei.</translation>
-    </message>
-    <message>
-        <source>Cannot open %1: %2.</source>
-        <translation>%1 kann nicht geöffnet werden: %2.</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::plcopen::Writer</name>
-    <message>
-        <source>Cannot save %1: %2.</source>
-        <translation>%1 kann nicht gespeichert werden: %2.</translation>
-    </message>
-</context>
-<context>
-    <name>main</name>
-    <message>
-        <source>Open Project</source>
-        <translation>Projekt öffnen</translation>
-    </message>
-</context>
+        </message>
+        <message>
+            <source>&amp;Recover</source>
+            <translation>&amp;Wiederherstellen</translation>
+        </message>
+        <message>
+            <source>Ask &amp;Later</source>
+            <translation>&amp;Später fragen</translation>
+        </message>
+        <message>
+            <source>The project could not be recovered: %1</source>
+            <translation>Das Projekt konnte nicht wiederhergestellt werden: %1</translation>
+        </message>
+        <message>
+            <source>Build finished. Errors: %1, warnings: %2.</source>
+            <translation>Übersetzen beendet. Fehler: %1, Warnungen: %2.</translation>
+        </message>
+        <message>
+            <source>Watch</source>
+            <translation>Beobachtung</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::MessagesPane</name>
+        <message>
+            <source>%1, line %2, column %3</source>
+            <translation>%1, Zeile %2, Spalte %3</translation>
+        </message>
+        <message>
+            <source>%1, line %2</source>
+            <translation>%1, Zeile %2</translation>
+        </message>
+        <message>
+            <source>%1, element %2</source>
+            <translation>%1, Element %2</translation>
+        </message>
+        <message>
+            <source>Info</source>
+            <translation>Hinweis</translation>
+        </message>
+        <message>
+            <source>Warning</source>
+            <translation>Warnung</translation>
+        </message>
+        <message>
+            <source>Error</source>
+            <translation>Fehler</translation>
+        </message>
+        <message>
+            <source>Severity</source>
+            <translation>Schwere</translation>
+        </message>
+        <message>
+            <source>Description</source>
+            <translation>Beschreibung</translation>
+        </message>
+        <message>
+            <source>Location</source>
+            <translation>Ort</translation>
+        </message>
+        <message>
+            <source>Errors: %1, warnings: %2</source>
+            <translation>Fehler: %1, Warnungen: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::OnlineController</name>
+        <message>
+            <source>Log&amp;out</source>
+            <translation>A&amp;usloggen</translation>
+        </message>
+        <message>
+            <source>Run &amp;N Cycles...</source>
+            <translation>&amp;N Zyklen ausführen...</translation>
+        </message>
+        <message>
+            <source>Reset &amp;Warm</source>
+            <translation>&amp;Warmstart (Reset)</translation>
+        </message>
+        <message>
+            <source>Reset C&amp;old</source>
+            <translation>&amp;Kaltstart (Reset)</translation>
+        </message>
+        <message>
+            <source>C&amp;ycle Time</source>
+            <translation>&amp;Zykluszeit</translation>
+        </message>
+        <message>
+            <source>S&amp;peed</source>
+            <translation>&amp;Geschwindigkeit</translation>
+        </message>
+        <message>
+            <source>%1 ms</source>
+            <translation>%1 ms</translation>
+        </message>
+        <message>
+            <source>&amp;Real Time</source>
+            <translation>&amp;Echtzeit</translation>
+        </message>
+        <message>
+            <source>&amp;10 Times Faster</source>
+            <translation>&amp;10-mal schneller</translation>
+        </message>
+        <message>
+            <source>As &amp;Fast as Possible</source>
+            <translation>So &amp;schnell wie möglich</translation>
+        </message>
+        <message>
+            <source>The cycle time takes effect at login and at a reset.</source>
+            <translation>Die Zykluszeit gilt ab dem Einloggen und nach einem Reset.</translation>
+        </message>
+        <message>
+            <source>Login refused: the project has errors. See the Messages pane.</source>
+            <translation>Einloggen abgelehnt: Das Projekt enthält Fehler. Siehe Meldungsfenster.</translation>
+        </message>
+        <message>
+            <source>Logged in. F5 runs the program, F8 runs one cycle.</source>
+            <translation>Eingeloggt. F5 startet das Programm, F8 führt einen Zyklus aus.</translation>
+        </message>
+        <message>
+            <source>Logged out.</source>
+            <translation>Ausgeloggt.</translation>
+        </message>
+        <message>
+            <source>Run N Cycles</source>
+            <translation>N Zyklen ausführen</translation>
+        </message>
+        <message>
+            <source>Number of cycles:</source>
+            <translation>Anzahl der Zyklen:</translation>
+        </message>
+        <message>
+            <source>Log in to write values.</source>
+            <translation>Zum Schreiben von Werten bitte einloggen.</translation>
+        </message>
+        <message>
+            <source>Log in to force values.</source>
+            <translation>Zum Forcen von Werten bitte einloggen.</translation>
+        </message>
+        <message>
+            <source>The new cycle time takes effect at the next reset.</source>
+            <translation>Die neue Zykluszeit gilt ab dem nächsten Reset.</translation>
+        </message>
+        <message>
+            <source>Runtime fault in cycle %1: %2 The program stopped; Reset starts it again.</source>
+            <translation>Laufzeitfehler in Zyklus %1: %2 Das Programm wurde angehalten; Reset startet es neu.</translation>
+        </message>
+        <message>
+            <source>The program stopped: %1</source>
+            <translation>Das Programm wurde angehalten: %1</translation>
+        </message>
+        <message>
+            <source>Offline</source>
+            <translation>Offline</translation>
+        </message>
+        <message>
+            <source>real time</source>
+            <translation>Echtzeit</translation>
+        </message>
+        <message>
+            <source>10x</source>
+            <translation>10-fach</translation>
+        </message>
+        <message>
+            <source>full speed</source>
+            <translation>volle Geschwindigkeit</translation>
+        </message>
+        <message>
+            <source>FAULT</source>
+            <translation>FEHLER</translation>
+        </message>
+        <message>
+            <source>RUN</source>
+            <translation>RUN</translation>
+        </message>
+        <message>
+            <source>STOP</source>
+            <translation>STOP</translation>
+        </message>
+        <message>
+            <source>ONLINE %1 | cycle %2 | t = %3 s | %4 ms, %5</source>
+            <translation>ONLINE %1 | Zyklus %2 | t = %3 s | %4 ms, %5</translation>
+        </message>
+        <message>
+            <source> | changed since login</source>
+            <translation> | seit dem Einloggen geändert</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::ProjectTreeActions</name>
+        <message>
+            <source>Add &amp;POU...</source>
+            <translation>&amp;Baustein hinzufügen...</translation>
+        </message>
+        <message>
+            <source>Add &amp;Action...</source>
+            <translation>&amp;Aktion hinzufügen...</translation>
+        </message>
+        <message>
+            <source>Add &amp;Transition...</source>
+            <translation>&amp;Transition hinzufügen...</translation>
+        </message>
+        <message>
+            <source>&amp;Rename...</source>
+            <translation>&amp;Umbenennen...</translation>
+        </message>
+        <message>
+            <source>&amp;Delete</source>
+            <translation>&amp;Löschen</translation>
+        </message>
+        <message>
+            <source>D&amp;uplicate</source>
+            <translation>D&amp;uplizieren</translation>
+        </message>
+        <message>
+            <source>Add POU</source>
+            <translation>Baustein hinzufügen</translation>
+        </message>
+        <message>
+            <source>Rename %1</source>
+            <translation>%1 umbenennen</translation>
+        </message>
+        <message>
+            <source>Delete</source>
+            <translation>Löschen</translation>
+        </message>
+        <message>
+            <source>Delete %1? Edit → Undo brings it back.</source>
+            <translation>%1 löschen? Bearbeiten → Rückgängig holt es zurück.</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::ProjectTreeModel</name>
+        <message>
+            <source>Programs</source>
+            <translation>Programme</translation>
+        </message>
+        <message>
+            <source>Function Blocks</source>
+            <translation>Funktionsbausteine</translation>
+        </message>
+        <message>
+            <source>Functions</source>
+            <translation>Funktionen</translation>
+        </message>
+        <message>
+            <source>Data Types</source>
+            <translation>Datentypen</translation>
+        </message>
+        <message>
+            <source>Global Variables</source>
+            <translation>Globale Variablen</translation>
+        </message>
+        <message>
+            <source>Configurations</source>
+            <translation>Konfigurationen</translation>
+        </message>
+        <message>
+            <source>%1 (PRG)</source>
+            <translation>%1 (PRG)</translation>
+        </message>
+        <message>
+            <source>%1 (FB)</source>
+            <translation>%1 (FB)</translation>
+        </message>
+        <message>
+            <source>%1 (FUN)</source>
+            <translation>%1 (FUN)</translation>
+        </message>
+        <message>
+            <source>%1, written in %2</source>
+            <translation>%1, geschrieben in %2</translation>
+        </message>
+        <message>
+            <source>Structured Text (ST)</source>
+            <translation>Strukturierter Text (ST)</translation>
+        </message>
+        <message>
+            <source>Instruction List (IL)</source>
+            <translation>Anweisungsliste (AWL)</translation>
+        </message>
+        <message>
+            <source>Ladder Diagram (LD)</source>
+            <translation>Kontaktplan (KOP)</translation>
+        </message>
+        <message>
+            <source>Function Block Diagram (FBD)</source>
+            <translation>Funktionsbausteinsprache (FUP)</translation>
+        </message>
+        <message>
+            <source>Sequential Function Chart (SFC)</source>
+            <translation>Ablaufsprache (AS)</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::RecentFilesMenu</name>
+        <message>
+            <source>(none)</source>
+            <translation>(keine)</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::RecoveryManager</name>
+        <message>
+            <source>Cannot create the folder %1.</source>
+            <translation>Der Ordner %1 kann nicht angelegt werden.</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::RenameDialog</name>
+        <message>
+            <source>Rename %1</source>
+            <translation>%1 umbenennen</translation>
+        </message>
+        <message>
+            <source>&amp;New name:</source>
+            <translation>&amp;Neuer Name:</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::RuntimeWorker</name>
+        <message>
+            <source>There is no variable called %1.</source>
+            <translation>Es gibt keine Variable namens %1.</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::SettingsDialog</name>
+        <message>
+            <source>Settings</source>
+            <translation>Einstellungen</translation>
+        </message>
+        <message>
+            <source>System language</source>
+            <translation>Systemsprache</translation>
+        </message>
+        <message>
+            <source> pt</source>
+            <translation> pt</translation>
+        </message>
+        <message>
+            <source> px</source>
+            <translation> px</translation>
+        </message>
+        <message>
+            <source> min</source>
+            <translation> min</translation>
+        </message>
+        <message>
+            <source>Off</source>
+            <translation>Aus</translation>
+        </message>
+        <message>
+            <source>User interface language:</source>
+            <translation>Sprache der Oberfläche:</translation>
+        </message>
+        <message>
+            <source>Editor font:</source>
+            <translation>Editor-Schriftart:</translation>
+        </message>
+        <message>
+            <source>Editor font size:</source>
+            <translation>Editor-Schriftgröße:</translation>
+        </message>
+        <message>
+            <source>Diagram grid size:</source>
+            <translation>Rastergröße im Diagramm:</translation>
+        </message>
+        <message>
+            <source>Autosave every:</source>
+            <translation>Automatisch speichern alle:</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::UndoActions</name>
+        <message>
+            <source>&amp;Undo Typing</source>
+            <translation>Tippen &amp;rückgängig</translation>
+        </message>
+        <message>
+            <source>&amp;Redo Typing</source>
+            <translation>Tippen &amp;wiederherstellen</translation>
+        </message>
+        <message>
+            <source>&amp;Undo %1</source>
+            <translation>%1 &amp;rückgängig</translation>
+        </message>
+        <message>
+            <source>&amp;Undo</source>
+            <translation>&amp;Rückgängig</translation>
+        </message>
+        <message>
+            <source>&amp;Redo %1</source>
+            <translation>%1 &amp;wiederherstellen</translation>
+        </message>
+        <message>
+            <source>&amp;Redo</source>
+            <translation>&amp;Wiederherstellen</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::WatchModel</name>
+        <message>
+            <source>(no such variable)</source>
+            <translation>(keine solche Variable)</translation>
+        </message>
+        <message>
+            <source>%1 (forced)</source>
+            <translation>%1 (geforct)</translation>
+        </message>
+        <message>
+            <source>Type the value to write or force, then choose Write or Force.</source>
+            <translation>Den zu schreibenden oder zu forcenden Wert eingeben, dann Schreiben oder Forcen wählen.</translation>
+        </message>
+        <message>
+            <source>Expression</source>
+            <translation>Ausdruck</translation>
+        </message>
+        <message>
+            <source>Type</source>
+            <translation>Typ</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Wert</translation>
+        </message>
+        <message>
+            <source>Prepared value</source>
+            <translation>Vorbereiteter Wert</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::WatchPane</name>
+        <message>
+            <source>Variable to watch, e.g. Main.Counter</source>
+            <translation>Zu beobachtende Variable, z. B. Main.Counter</translation>
+        </message>
+        <message>
+            <source>Add</source>
+            <translation>Hinzufügen</translation>
+        </message>
+        <message>
+            <source>Write</source>
+            <translation>Schreiben</translation>
+        </message>
+        <message>
+            <source>Write the prepared values once, at the start of the next cycle (Ctrl+F7)</source>
+            <translation>Die vorbereiteten Werte einmal zu Beginn des nächsten Zyklus schreiben (Strg+F7)</translation>
+        </message>
+        <message>
+            <source>Force</source>
+            <translation>Forcen</translation>
+        </message>
+        <message>
+            <source>Hold the prepared values every cycle until released (F7)</source>
+            <translation>Die vorbereiteten Werte in jedem Zyklus halten, bis sie aufgehoben werden (F7)</translation>
+        </message>
+        <message>
+            <source>Release</source>
+            <translation>Aufheben</translation>
+        </message>
+        <message>
+            <source>Release the forces of the selected variables (Alt+F7)</source>
+            <translation>Forcen der ausgewählten Variablen aufheben (Alt+F7)</translation>
+        </message>
+        <message>
+            <source>Release All</source>
+            <translation>Alle aufheben</translation>
+        </message>
+        <message>
+            <source>Remove</source>
+            <translation>Entfernen</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::WindowMenu</name>
+        <message>
+            <source>&amp;Next Document</source>
+            <translation>&amp;Nächstes Dokument</translation>
+        </message>
+        <message>
+            <source>&amp;Previous Document</source>
+            <translation>&amp;Vorheriges Dokument</translation>
+        </message>
+        <message>
+            <source>&amp;Close All Documents</source>
+            <translation>&amp;Alle Dokumente schließen</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::AliasPage</name>
+        <message>
+            <source>Base type:</source>
+            <translation>Basistyp:</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::ArrayPage</name>
+        <message>
+            <source>Low</source>
+            <translation>Unten</translation>
+        </message>
+        <message>
+            <source>High</source>
+            <translation>Oben</translation>
+        </message>
+        <message>
+            <source>Dimensions</source>
+            <translation>Dimensionen</translation>
+        </message>
+        <message>
+            <source>Element type:</source>
+            <translation>Elementtyp:</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::CodeEditor</name>
+        <message>
+            <source>Go to Definition</source>
+            <translation>Gehe zur Definition</translation>
+        </message>
+        <message>
+            <source>Complete</source>
+            <translation>Vervollständigen</translation>
+        </message>
+        <message>
+            <source>Input Assistant...</source>
+            <translation>Eingabehilfe...</translation>
+        </message>
+        <message>
+            <source>Toggle Comment</source>
+            <translation>Kommentar ein/aus</translation>
+        </message>
+        <message>
+            <source>Fold All</source>
+            <translation>Alles einklappen</translation>
+        </message>
+        <message>
+            <source>Unfold All</source>
+            <translation>Alles ausklappen</translation>
+        </message>
+        <message>
+            <source>Add to Watch</source>
+            <translation>Zur Beobachtung hinzufügen</translation>
+        </message>
+        <message>
+            <source>The program is online, so its text cannot be changed. Choose Online &gt; Logout to edit it.</source>
+            <translation>Das Programm ist online, daher kann sein Text nicht geändert werden. Zum Bearbeiten Online &gt; Ausloggen wählen.</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::DataTypeEditor</name>
+        <message>
+            <source>Name:</source>
+            <translation>Name:</translation>
+        </message>
+        <message>
+            <source>Kind:</source>
+            <translation>Art:</translation>
+        </message>
+        <message>
+            <source>Initial value:</source>
+            <translation>Initialwert:</translation>
+        </message>
+        <message>
+            <source>(the default of the type)</source>
+            <translation>(Vorgabewert des Typs)</translation>
+        </message>
+        <message>
+            <source>Structure</source>
+            <translation>Struktur</translation>
+        </message>
+        <message>
+            <source>Enumeration</source>
+            <translation>Aufzählung</translation>
+        </message>
+        <message>
+            <source>Array</source>
+            <translation>Feld</translation>
+        </message>
+        <message>
+            <source>Subrange</source>
+            <translation>Unterbereich</translation>
+        </message>
+        <message>
+            <source>Alias</source>
+            <translation>Alias</translation>
+        </message>
+        <message>
+            <source>String</source>
+            <translation>Zeichenkette</translation>
+        </message>
+        <message>
+            <source>IEC text:</source>
+            <translation>IEC-Text:</translation>
+        </message>
+        <message>
+            <source>IEC text as last applied (correct the marked fields to apply):</source>
+            <translation>IEC-Text wie zuletzt übernommen (korrigieren Sie die markierten Felder, um zu übernehmen):</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::DataTypeValidator</name>
+        <message>
+            <source>A POU or data type named "%1" exists already.</source>
+            <translation>Ein Baustein oder Datentyp namens "%1" existiert bereits.</translation>
+        </message>
+        <message>
+            <source>A structure needs at least one member.</source>
+            <translation>Eine Struktur braucht mindestens ein Element.</translation>
+        </message>
+        <message>
+            <source>There is a member named "%1" already.</source>
+            <translation>Es gibt bereits ein Element namens "%1".</translation>
+        </message>
+        <message>
+            <source>An enumeration needs at least one value.</source>
+            <translation>Eine Aufzählung braucht mindestens einen Wert.</translation>
+        </message>
+        <message>
+            <source>The value "%1" is listed already.</source>
+            <translation>Der Wert "%1" ist bereits aufgeführt.</translation>
+        </message>
+        <message>
+            <source>Enter a whole number, or leave it empty.</source>
+            <translation>Geben Sie eine ganze Zahl ein oder lassen Sie das Feld leer.</translation>
+        </message>
+        <message>
+            <source>An array needs at least one dimension.</source>
+            <translation>Ein Feld braucht mindestens eine Dimension.</translation>
+        </message>
+        <message>
+            <source>Enter a length from 1 to 65535, or leave it empty for the default.</source>
+            <translation>Geben Sie eine Länge von 1 bis 65535 ein oder lassen Sie das Feld für den Vorgabewert leer.</translation>
+        </message>
+        <message>
+            <source>Choose an integer type such as INT, DINT or UINT.</source>
+            <translation>Wählen Sie einen Ganzzahltyp wie INT, DINT oder UINT.</translation>
+        </message>
+        <message>
+            <source>The upper bound %1 is less than the lower bound %2.</source>
+            <translation>Die obere Grenze %1 ist kleiner als die untere Grenze %2.</translation>
+        </message>
+        <message>
+            <source>Enter a bound.</source>
+            <translation>Geben Sie eine Grenze ein.</translation>
+        </message>
+        <message>
+            <source>Enter a whole number or the name of a constant.</source>
+            <translation>Geben Sie eine ganze Zahl oder den Namen einer Konstante ein.</translation>
+        </message>
+        <message>
+            <source>Enter a type.</source>
+            <translation>Geben Sie einen Typ ein.</translation>
+        </message>
+        <message>
+            <source>"%1" is not a type.</source>
+            <translation>"%1" ist kein Typ.</translation>
+        </message>
+        <message>
+            <source>A type cannot contain itself.</source>
+            <translation>Ein Typ kann sich nicht selbst enthalten.</translation>
+        </message>
+        <message>
+            <source>Unknown type "%1".</source>
+            <translation>Unbekannter Typ "%1".</translation>
+        </message>
+        <message>
+            <source>"%1" is not a valid initial value.</source>
+            <translation>"%1" ist kein gültiger Initialwert.</translation>
+        </message>
+        <message>
+            <source>Enter a name.</source>
+            <translation>Geben Sie einen Namen ein.</translation>
+        </message>
+        <message>
+            <source>"%1" is not an IEC identifier: use letters, digits and single underscores, starting with a letter or an underscore and not ending with an underscore.</source>
+            <translation>"%1" ist kein IEC-Bezeichner: verwenden Sie Buchstaben, Ziffern und einzelne Unterstriche; am Anfang ein Buchstabe oder Unterstrich, am Ende kein Unterstrich.</translation>
+        </message>
+        <message>
+            <source>"%1" is a reserved word of IEC 61131-3.</source>
+            <translation>"%1" ist ein reserviertes Wort der IEC 61131-3.</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::DeclarationEditor</name>
+        <message>
+            <source>Table</source>
+            <translation>Tabelle</translation>
+        </message>
+        <message>
+            <source>Text</source>
+            <translation>Text</translation>
+        </message>
+        <message>
+            <source>Add Variable</source>
+            <translation>Variable hinzufügen</translation>
+        </message>
+        <message>
+            <source>Remove</source>
+            <translation>Entfernen</translation>
+        </message>
+        <message>
+            <source>Move Up</source>
+            <translation>Nach oben</translation>
+        </message>
+        <message>
+            <source>Move Down</source>
+            <translation>Nach unten</translation>
+        </message>
+        <message>
+            <source>Row %1: %2</source>
+            <translation>Zeile %1: %2</translation>
+        </message>
+        <message>
+            <source>Line %1, column %2: %3</source>
+            <translation>Zeile %1, Spalte %2: %3</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::DeclarationRows</name>
+        <message>
+            <source>"%1" is not a variable class.</source>
+            <translation>"%1" ist keine Variablenklasse.</translation>
+        </message>
+        <message>
+            <source>"%1" is not a data type.</source>
+            <translation>"%1" ist kein Datentyp.</translation>
+        </message>
+        <message>
+            <source>"%1" is not an initial value for %2.</source>
+            <translation>"%1" ist kein Initialwert für %2.</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::DeclarationTableModel</name>
+        <message>
+            <source>Name</source>
+            <translation>Name</translation>
+        </message>
+        <message>
+            <source>Class</source>
+            <translation>Klasse</translation>
+        </message>
+        <message>
+            <source>Type</source>
+            <translation>Typ</translation>
+        </message>
+        <message>
+            <source>Initial Value</source>
+            <translation>Initialwert</translation>
+        </message>
+        <message>
+            <source>Address</source>
+            <translation>Adresse</translation>
+        </message>
+        <message>
+            <source>Comment</source>
+            <translation>Kommentar</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::DeclarationText</name>
+        <message>
+            <source>VAR_ACCESS and VAR_CONFIG belong in a configuration, not in a POU.</source>
+            <translation>VAR_ACCESS und VAR_CONFIG gehören in eine Konfiguration, nicht in einen Baustein.</translation>
+        </message>
+        <message>
+            <source>"%1" is not a valid name: use letters, digits and single underscores, and no keyword.</source>
+            <translation>"%1" ist kein gültiger Name: verwenden Sie Buchstaben, Ziffern und einzelne Unterstriche, und kein Schlüsselwort.</translation>
+        </message>
+        <message>
+            <source>"%1" is not an address such as %IX0.0, %QW3 or %MD10.</source>
+            <translation>"%1" ist keine Adresse wie %IX0.0, %QW3 oder %MD10.</translation>
+        </message>
+        <message>
+            <source>%1 is declared twice.</source>
+            <translation>%1 ist zweimal deklariert.</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::DiagramExport</name>
+        <message>
+            <source>Cannot write %1.</source>
+            <translation>%1 kann nicht geschrieben werden.</translation>
+        </message>
+        <message>
+            <source>Unknown picture type '%1': use .svg, .png or .pdf.</source>
+            <translation>Unbekannter Bildtyp '%1': Verwenden Sie .svg, .png oder .pdf.</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::EnumPage</name>
+        <message>
+            <source>Name</source>
+            <translation>Name</translation>
+        </message>
+        <message>
+            <source>Value (optional)</source>
+            <translation>Wert (optional)</translation>
+        </message>
+        <message>
+            <source>Values</source>
+            <translation>Werte</translation>
+        </message>
+        <message>
+            <source>Base type (optional):</source>
+            <translation>Basistyp (optional):</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::FindReplaceBar</name>
+        <message>
+            <source>Find</source>
+            <translation>Suchen</translation>
+        </message>
+        <message>
+            <source>Replace with</source>
+            <translation>Ersetzen durch</translation>
+        </message>
+        <message>
+            <source>Match case</source>
+            <translation>Groß-/Kleinschreibung</translation>
+        </message>
+        <message>
+            <source>Whole words</source>
+            <translation>Ganze Wörter</translation>
+        </message>
+        <message>
+            <source>Previous</source>
+            <translation>Vorheriges</translation>
+        </message>
+        <message>
+            <source>Next</source>
+            <translation>Nächstes</translation>
+        </message>
+        <message>
+            <source>Replace</source>
+            <translation>Ersetzen</translation>
+        </message>
+        <message>
+            <source>Replace All</source>
+            <translation>Alle ersetzen</translation>
+        </message>
+        <message>
+            <source>Close</source>
+            <translation>Schließen</translation>
+        </message>
+        <message>
+            <source>Find:</source>
+            <translation>Suchen:</translation>
+        </message>
+        <message>
+            <source>Replace:</source>
+            <translation>Ersetzen:</translation>
+        </message>
+        <message>
+            <source>Not found</source>
+            <translation>Nicht gefunden</translation>
+        </message>
+        <message>
+            <source>Search wrapped</source>
+            <translation>Suche am Anfang fortgesetzt</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n replaced</source>
+            <translation>
+                <numerusform>%n ersetzt</numerusform>
+                <numerusform>%n ersetzt</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::InputAssistantDialog</name>
+        <message>
+            <source>Input Assistant</source>
+            <translation>Eingabehilfe</translation>
+        </message>
+        <message>
+            <source>Operators</source>
+            <translation>Operatoren</translation>
+        </message>
+        <message>
+            <source>Operands</source>
+            <translation>Operanden</translation>
+        </message>
+        <message>
+            <source>Functions</source>
+            <translation>Funktionen</translation>
+        </message>
+        <message>
+            <source>Function blocks</source>
+            <translation>Funktionsbausteine</translation>
+        </message>
+        <message>
+            <source>Filter</source>
+            <translation>Filter</translation>
+        </message>
+        <message>
+            <source>Name</source>
+            <translation>Name</translation>
+        </message>
+        <message>
+            <source>Description</source>
+            <translation>Beschreibung</translation>
+        </message>
+        <message>
+            <source>IL operators</source>
+            <translation>AWL-Operatoren</translation>
+        </message>
+        <message>
+            <source>ST operators</source>
+            <translation>ST-Operatoren</translation>
+        </message>
+        <message>
+            <source>Variables</source>
+            <translation>Variablen</translation>
+        </message>
+        <message>
+            <source>Boolean constants</source>
+            <translation>Boolesche Konstanten</translation>
+        </message>
+        <message>
+            <source>User-defined functions</source>
+            <translation>Eigene Funktionen</translation>
+        </message>
+        <message>
+            <source>User-defined function blocks</source>
+            <translation>Eigene Funktionsbausteine</translation>
+        </message>
+        <message>
+            <source>Programs</source>
+            <translation>Programme</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::RowTable</name>
+        <message>
+            <source>Add</source>
+            <translation>Hinzufügen</translation>
+        </message>
+        <message>
+            <source>Add a row below the current one</source>
+            <translation>Eine Zeile unter der aktuellen hinzufügen</translation>
+        </message>
+        <message>
+            <source>Remove</source>
+            <translation>Entfernen</translation>
+        </message>
+        <message>
+            <source>Remove the current row</source>
+            <translation>Die aktuelle Zeile entfernen</translation>
+        </message>
+        <message>
+            <source>Up</source>
+            <translation>Nach oben</translation>
+        </message>
+        <message>
+            <source>Move the current row up</source>
+            <translation>Die aktuelle Zeile nach oben verschieben</translation>
+        </message>
+        <message>
+            <source>Down</source>
+            <translation>Nach unten</translation>
+        </message>
+        <message>
+            <source>Move the current row down</source>
+            <translation>Die aktuelle Zeile nach unten verschieben</translation>
+        </message>
+        <message>
+            <source>Row %1, %2: %3</source>
+            <translation>Zeile %1, %2: %3</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::StandardLibrary</name>
+        <message>
+            <source>Arithmetic</source>
+            <translation>Arithmetik</translation>
+        </message>
+        <message>
+            <source>Numeric</source>
+            <translation>Numerisch</translation>
+        </message>
+        <message>
+            <source>Bit shift</source>
+            <translation>Bitschieben</translation>
+        </message>
+        <message>
+            <source>Selection</source>
+            <translation>Auswahl</translation>
+        </message>
+        <message>
+            <source>Comparison</source>
+            <translation>Vergleich</translation>
+        </message>
+        <message>
+            <source>String</source>
+            <translation>Zeichenkette</translation>
+        </message>
+        <message>
+            <source>Type conversion</source>
+            <translation>Typumwandlung</translation>
+        </message>
+        <message>
+            <source>Bistable</source>
+            <translation>Bistabil</translation>
+        </message>
+        <message>
+            <source>Edge detection</source>
+            <translation>Flankenerkennung</translation>
+        </message>
+        <message>
+            <source>Counters</source>
+            <translation>Zähler</translation>
+        </message>
+        <message>
+            <source>Timers</source>
+            <translation>Zeitgeber</translation>
+        </message>
+        <message>
+            <source>Load the operand into the current result</source>
+            <translation>Operand in das aktuelle Ergebnis laden</translation>
+        </message>
+        <message>
+            <source>Store the current result in the operand</source>
+            <translation>Aktuelles Ergebnis im Operanden speichern</translation>
+        </message>
+        <message>
+            <source>Set the Boolean operand to TRUE if the current result is TRUE</source>
+            <translation>Booleschen Operanden auf TRUE setzen, wenn das aktuelle Ergebnis TRUE ist</translation>
+        </message>
+        <message>
+            <source>Reset the Boolean operand to FALSE if the current result is TRUE</source>
+            <translation>Booleschen Operanden auf FALSE rücksetzen, wenn das aktuelle Ergebnis TRUE ist</translation>
+        </message>
+        <message>
+            <source>Bitwise AND</source>
+            <translation>Bitweises UND</translation>
+        </message>
+        <message>
+            <source>Bitwise OR</source>
+            <translation>Bitweises ODER</translation>
+        </message>
+        <message>
+            <source>Bitwise exclusive OR</source>
+            <translation>Bitweises exklusives ODER</translation>
+        </message>
+        <message>
+            <source>Addition</source>
+            <translation>Addition</translation>
+        </message>
+        <message>
+            <source>Subtraction</source>
+            <translation>Subtraktion</translation>
+        </message>
+        <message>
+            <source>Multiplication</source>
+            <translation>Multiplikation</translation>
+        </message>
+        <message>
+            <source>Division</source>
+            <translation>Division</translation>
+        </message>
+        <message>
+            <source>Greater than (&gt;)</source>
+            <translation>Größer als (&gt;)</translation>
+        </message>
+        <message>
+            <source>Greater than or equal (&gt;=)</source>
+            <translation>Größer oder gleich (&gt;=)</translation>
+        </message>
+        <message>
+            <source>Equal (=)</source>
+            <translation>Gleich (=)</translation>
+        </message>
+        <message>
+            <source>Not equal (&lt;&gt;)</source>
+            <translation>Ungleich (&lt;&gt;)</translation>
+        </message>
+        <message>
+            <source>Less than or equal (&lt;=)</source>
+            <translation>Kleiner oder gleich (&lt;=)</translation>
+        </message>
+        <message>
+            <source>Less than (&lt;)</source>
+            <translation>Kleiner als (&lt;)</translation>
+        </message>
+        <message>
+            <source>Jump to the label</source>
+            <translation>Sprung zur Marke</translation>
+        </message>
+        <message>
+            <source>Call a function block instance</source>
+            <translation>Funktionsbaustein-Instanz aufrufen</translation>
+        </message>
+        <message>
+            <source>Return to the calling POU</source>
+            <translation>Rückkehr zum aufrufenden Baustein</translation>
+        </message>
+        <message>
+            <source>Evaluate the deferred operation</source>
+            <translation>Zurückgestellte Operation auswerten</translation>
+        </message>
+        <message>
+            <source>negated operand</source>
+            <translation>negierter Operand</translation>
+        </message>
+        <message>
+            <source>deferred until )</source>
+            <translation>zurückgestellt bis )</translation>
+        </message>
+        <message>
+            <source>only if the current result is TRUE</source>
+            <translation>nur wenn das aktuelle Ergebnis TRUE ist</translation>
+        </message>
+        <message>
+            <source>only if the current result is FALSE</source>
+            <translation>nur wenn das aktuelle Ergebnis FALSE ist</translation>
+        </message>
+        <message>
+            <source>Assignment</source>
+            <translation>Zuweisung</translation>
+        </message>
+        <message>
+            <source>Modulo</source>
+            <translation>Modulo</translation>
+        </message>
+        <message>
+            <source>Negation</source>
+            <translation>Negation</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::StringPage</name>
+        <message>
+            <source>Characters:</source>
+            <translation>Zeichen:</translation>
+        </message>
+        <message>
+            <source>Length (optional):</source>
+            <translation>Länge (optional):</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::StructPage</name>
+        <message>
+            <source>Name</source>
+            <translation>Name</translation>
+        </message>
+        <message>
+            <source>Type</source>
+            <translation>Typ</translation>
+        </message>
+        <message>
+            <source>Initial value</source>
+            <translation>Initialwert</translation>
+        </message>
+        <message>
+            <source>Comment</source>
+            <translation>Kommentar</translation>
+        </message>
+        <message>
+            <source>Members</source>
+            <translation>Elemente</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::SubrangePage</name>
+        <message>
+            <source>Base type:</source>
+            <translation>Basistyp:</translation>
+        </message>
+        <message>
+            <source>Low:</source>
+            <translation>Unten:</translation>
+        </message>
+        <message>
+            <source>High:</source>
+            <translation>Oben:</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::TextEditorWidget</name>
+        <message>
+            <source>Online: %1, cycle %2</source>
+            <translation>Online: %1, Zyklus %2</translation>
+        </message>
+        <message>
+            <source>no instance</source>
+            <translation>keine Instanz</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::sfc::ActionAssociationsDialog</name>
+        <message>
+            <source>IEC Actions of the Step</source>
+            <translation>IEC-Aktionen des Schritts</translation>
+        </message>
+        <message>
+            <source>Qualifier</source>
+            <translation>Bestimmungszeichen</translation>
+        </message>
+        <message>
+            <source>Time</source>
+            <translation>Zeit</translation>
+        </message>
+        <message>
+            <source>Action or variable</source>
+            <translation>Aktion oder Variable</translation>
+        </message>
+        <message>
+            <source>Indicator</source>
+            <translation>Anzeigevariable</translation>
+        </message>
+        <message>
+            <source>Add</source>
+            <translation>Hinzufügen</translation>
+        </message>
+        <message>
+            <source>Remove</source>
+            <translation>Entfernen</translation>
+        </message>
+        <message>
+            <source>Move Up</source>
+            <translation>Nach oben</translation>
+        </message>
+        <message>
+            <source>Move Down</source>
+            <translation>Nach unten</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::sfc::SfcEditor</name>
+        <message>
+            <source>Step-Transition (after)</source>
+            <translation>Schritt-Transition (danach)</translation>
+        </message>
+        <message>
+            <source>Step-Transition (before)</source>
+            <translation>Schritt-Transition (davor)</translation>
+        </message>
+        <message>
+            <source>Alternative Branch (right)</source>
+            <translation>Alternativzweig (rechts)</translation>
+        </message>
+        <message>
+            <source>Alternative Branch (left)</source>
+            <translation>Alternativzweig (links)</translation>
+        </message>
+        <message>
+            <source>Parallel Branch (right)</source>
+            <translation>Parallelzweig (rechts)</translation>
+        </message>
+        <message>
+            <source>Parallel Branch (left)</source>
+            <translation>Parallelzweig (links)</translation>
+        </message>
+        <message>
+            <source>Jump…</source>
+            <translation>Sprung…</translation>
+        </message>
+        <message>
+            <source>Transition-Jump…</source>
+            <translation>Transition-Sprung…</translation>
+        </message>
+        <message>
+            <source>Macro Step</source>
+            <translation>Makroschritt</translation>
+        </message>
+        <message>
+            <source>Delete</source>
+            <translation>Löschen</translation>
+        </message>
+        <message>
+            <source>Cut</source>
+            <translation>Ausschneiden</translation>
+        </message>
+        <message>
+            <source>Copy</source>
+            <translation>Kopieren</translation>
+        </message>
+        <message>
+            <source>Paste</source>
+            <translation>Einfügen</translation>
+        </message>
+        <message>
+            <source>Step Properties…</source>
+            <translation>Schritteigenschaften…</translation>
+        </message>
+        <message>
+            <source>Select a step first.</source>
+            <translation>Wählen Sie zuerst einen Schritt aus.</translation>
+        </message>
+        <message>
+            <source>IEC Actions…</source>
+            <translation>IEC-Aktionen…</translation>
+        </message>
+        <message>
+            <source>Edit Condition</source>
+            <translation>Bedingung bearbeiten</translation>
+        </message>
+        <message>
+            <source>Select a transition first.</source>
+            <translation>Wählen Sie zuerst eine Transition aus.</translation>
+        </message>
+        <message>
+            <source>Transition Priority…</source>
+            <translation>Transitionspriorität…</translation>
+        </message>
+        <message>
+            <source>Transition Priority</source>
+            <translation>Transitionspriorität</translation>
+        </message>
+        <message>
+            <source>Priority (0: none, branches are tried from left to right):</source>
+            <translation>Priorität (0: keine, Zweige werden von links nach rechts geprüft):</translation>
+        </message>
+        <message>
+            <source>Leave Macro</source>
+            <translation>Makro verlassen</translation>
+        </message>
+        <message>
+            <source>Zoom In</source>
+            <translation>Vergrößern</translation>
+        </message>
+        <message>
+            <source>Zoom Out</source>
+            <translation>Verkleinern</translation>
+        </message>
+        <message>
+            <source>Fit to Window</source>
+            <translation>An Fenster anpassen</translation>
+        </message>
+        <message>
+            <source>Export Picture…</source>
+            <translation>Bild exportieren…</translation>
+        </message>
+        <message>
+            <source>Export Chart</source>
+            <translation>Ablaufplan exportieren</translation>
+        </message>
+        <message>
+            <source>SVG picture (*.svg);;PNG picture (*.png);;PDF document (*.pdf)</source>
+            <translation>SVG-Bild (*.svg);;PNG-Bild (*.png);;PDF-Dokument (*.pdf)</translation>
+        </message>
+        <message>
+            <source>Print…</source>
+            <translation>Drucken…</translation>
+        </message>
+        <message>
+            <source>The chart cannot be changed while online. Log out first (Online → Logout).</source>
+            <translation>Der Ablaufplan kann im Online-Betrieb nicht geändert werden. Loggen Sie sich zuerst aus (Online → Ausloggen).</translation>
+        </message>
+        <message>
+            <source>This body is not a chart.</source>
+            <translation>Dieser Rumpf ist kein Ablaufplan.</translation>
+        </message>
+        <message>
+            <source>New chart</source>
+            <translation>Neuer Ablaufplan</translation>
+        </message>
+        <message>
+            <source>Insert step-transition</source>
+            <translation>Schritt-Transition einfügen</translation>
+        </message>
+        <message>
+            <source>Insert alternative branch</source>
+            <translation>Alternativzweig einfügen</translation>
+        </message>
+        <message>
+            <source>Insert parallel branch</source>
+            <translation>Parallelzweig einfügen</translation>
+        </message>
+        <message>
+            <source>Insert jump</source>
+            <translation>Sprung einfügen</translation>
+        </message>
+        <message>
+            <source>Insert transition-jump</source>
+            <translation>Transition-Sprung einfügen</translation>
+        </message>
+        <message>
+            <source>Insert macro step</source>
+            <translation>Makroschritt einfügen</translation>
+        </message>
+        <message>
+            <source>There is nothing to paste.</source>
+            <translation>Es gibt nichts einzufügen.</translation>
+        </message>
+        <message>
+            <source>Change step</source>
+            <translation>Schritt ändern</translation>
+        </message>
+        <message>
+            <source>Add action</source>
+            <translation>Aktion hinzufügen</translation>
+        </message>
+        <message>
+            <source>Change action</source>
+            <translation>Aktion ändern</translation>
+        </message>
+        <message>
+            <source>Remove action</source>
+            <translation>Aktion entfernen</translation>
+        </message>
+        <message>
+            <source>Move action</source>
+            <translation>Aktion verschieben</translation>
+        </message>
+        <message>
+            <source>Change condition</source>
+            <translation>Bedingung ändern</translation>
+        </message>
+        <message>
+            <source>Change priority</source>
+            <translation>Priorität ändern</translation>
+        </message>
+        <message>
+            <source>Add %1 action %2</source>
+            <translation>%1-Aktion %2 hinzufügen</translation>
+        </message>
+        <message>
+            <source>Select a macro step first.</source>
+            <translation>Wählen Sie zuerst einen Makroschritt aus.</translation>
+        </message>
+        <message>
+            <source>Inside macro step %1</source>
+            <translation>Im Makroschritt %1</translation>
+        </message>
+        <message>
+            <source>An ST expression, or the name of a transition of the POU. Enter applies, Esc cancels.</source>
+            <translation>Ein ST-Ausdruck oder der Name einer Transition des Bausteins. Eingabe übernimmt, Esc bricht ab.</translation>
+        </message>
+        <message>
+            <source>Change actions</source>
+            <translation>Aktionen ändern</translation>
+        </message>
+        <message>
+            <source>The chart has no step to jump to.</source>
+            <translation>Der Ablaufplan hat keinen Schritt, zu dem gesprungen werden kann.</translation>
+        </message>
+        <message>
+            <source>Jump</source>
+            <translation>Sprung</translation>
+        </message>
+        <message>
+            <source>Jump to step:</source>
+            <translation>Sprung zu Schritt:</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::sfc::SfcEdits</name>
+        <message>
+            <source>Select a step or a transition first.</source>
+            <translation>Wählen Sie zuerst einen Schritt oder eine Transition aus.</translation>
+        </message>
+        <message>
+            <source>Nothing can follow a jump. Select the transition before it.</source>
+            <translation>Nach einem Sprung kann nichts folgen. Wählen Sie die Transition davor aus.</translation>
+        </message>
+        <message>
+            <source>Nothing can go before the initial step. Insert after it instead.</source>
+            <translation>Vor dem Initialschritt kann nichts stehen. Fügen Sie stattdessen danach ein.</translation>
+        </message>
+        <message>
+            <source>Select a step (or steps from one to another) to add a parallel branch.</source>
+            <translation>Wählen Sie einen Schritt (oder Schritte von einem bis zu einem anderen) aus, um einen Parallelzweig hinzuzufügen.</translation>
+        </message>
+        <message>
+            <source>Select a transition (or a range from a transition to a transition) to add an alternative branch.</source>
+            <translation>Wählen Sie eine Transition (oder einen Bereich von Transition zu Transition) aus, um einen Alternativzweig hinzuzufügen.</translation>
+        </message>
+        <message>
+            <source>The chart is not empty.</source>
+            <translation>Der Ablaufplan ist nicht leer.</translation>
+        </message>
+        <message>
+            <source>There is no step '%1' to jump to.</source>
+            <translation>Es gibt keinen Schritt '%1', zu dem gesprungen werden kann.</translation>
+        </message>
+        <message>
+            <source>Select the transition the jump follows.</source>
+            <translation>Wählen Sie die Transition aus, der der Sprung folgt.</translation>
+        </message>
+        <message>
+            <source>A jump can only follow the last transition of a chain or branch.</source>
+            <translation>Ein Sprung kann nur auf die letzte Transition einer Kette oder eines Zweigs folgen.</translation>
+        </message>
+        <message>
+            <source>Select the step the transition and jump follow.</source>
+            <translation>Wählen Sie den Schritt aus, dem Transition und Sprung folgen.</translation>
+        </message>
+        <message>
+            <source>A transition-jump can only follow the last step of a chain or of an alternative branch.</source>
+            <translation>Ein Transition-Sprung kann nur auf den letzten Schritt einer Kette oder eines Alternativzweigs folgen.</translation>
+        </message>
+        <message>
+            <source>Select what to delete first.</source>
+            <translation>Wählen Sie zuerst aus, was gelöscht werden soll.</translation>
+        </message>
+        <message>
+            <source>The initial step cannot be deleted on its own. Delete what follows it, or the whole chart.</source>
+            <translation>Der Initialschritt kann nicht allein gelöscht werden. Löschen Sie, was ihm folgt, oder den ganzen Ablaufplan.</translation>
+        </message>
+        <message>
+            <source>Deleting this would leave two steps or two transitions in a row. Select a step together with its transition.</source>
+            <translation>Dieses Löschen würde zwei Schritte oder zwei Transitionen hintereinander hinterlassen. Wählen Sie einen Schritt zusammen mit seiner Transition aus.</translation>
+        </message>
+        <message>
+            <source>Select a step first.</source>
+            <translation>Wählen Sie zuerst einen Schritt aus.</translation>
+        </message>
+        <message>
+            <source>'%1' is not a valid step name: use letters, digits and single underscores, starting with a letter.</source>
+            <translation>'%1' ist kein gültiger Schrittname: Verwenden Sie Buchstaben, Ziffern und einzelne Unterstriche, beginnend mit einem Buchstaben.</translation>
+        </message>
+        <message>
+            <source>There is already a step named '%1'.</source>
+            <translation>Es gibt bereits einen Schritt namens '%1'.</translation>
+        </message>
+        <message>
+            <source>Only the first step of the chart is the initial step.</source>
+            <translation>Nur der erste Schritt des Ablaufplans ist der Initialschritt.</translation>
+        </message>
+        <message>
+            <source>This step has IEC actions. Remove them before making it a simplified step.</source>
+            <translation>Dieser Schritt hat IEC-Aktionen. Entfernen Sie sie, bevor Sie ihn zu einem vereinfachten Schritt machen.</translation>
+        </message>
+        <message>
+            <source>'%1' is not an action qualifier.</source>
+            <translation>'%1' ist kein Aktionsbestimmungszeichen.</translation>
+        </message>
+        <message>
+            <source>The qualifier %1 needs a time, such as T#5s.</source>
+            <translation>Das Bestimmungszeichen %1 braucht eine Zeit, z. B. T#5s.</translation>
+        </message>
+        <message>
+            <source>'%1' is not an action or variable name.</source>
+            <translation>'%1' ist kein Aktions- oder Variablenname.</translation>
+        </message>
+        <message>
+            <source>A simplified step has no IEC actions. Make it an IEC step in its properties first.</source>
+            <translation>Ein vereinfachter Schritt hat keine IEC-Aktionen. Machen Sie ihn zuerst in seinen Eigenschaften zu einem IEC-Schritt.</translation>
+        </message>
+        <message>
+            <source>The step has no such action.</source>
+            <translation>Der Schritt hat keine solche Aktion.</translation>
+        </message>
+        <message>
+            <source>The action cannot move there.</source>
+            <translation>Die Aktion kann nicht dorthin verschoben werden.</translation>
+        </message>
+        <message>
+            <source>Select a transition first.</source>
+            <translation>Wählen Sie zuerst eine Transition aus.</translation>
+        </message>
+        <message>
+            <source>A transition needs a condition, such as TRUE or Level &gt; 50.</source>
+            <translation>Eine Transition braucht eine Bedingung, z. B. TRUE oder Level &gt; 50.</translation>
+        </message>
+        <message>
+            <source>'%1' is not a valid transition name.</source>
+            <translation>'%1' ist kein gültiger Transitionsname.</translation>
+        </message>
+        <message>
+            <source>Select steps and transitions of one chain to copy.</source>
+            <translation>Wählen Sie Schritte und Transitionen einer Kette zum Kopieren aus.</translation>
+        </message>
+        <message>
+            <source>There is nothing to paste.</source>
+            <translation>Es gibt nichts einzufügen.</translation>
+        </message>
+        <message>
+            <source>Select where to paste first.</source>
+            <translation>Wählen Sie zuerst aus, wo eingefügt werden soll.</translation>
+        </message>
+        <message>
+            <source>The copied part does not fit here: after a step paste a part that starts with a transition, after a transition one that starts with a step.</source>
+            <translation>Der kopierte Teil passt hier nicht: Fügen Sie nach einem Schritt einen Teil ein, der mit einer Transition beginnt, nach einer Transition einen, der mit einem Schritt beginnt.</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::sfc::SfcItem</name>
+        <message>
+            <source>Initial step %1</source>
+            <translation>Initialschritt %1</translation>
+        </message>
+        <message>
+            <source>Step %1</source>
+            <translation>Schritt %1</translation>
+        </message>
+        <message>
+            <source>Entry action: %1</source>
+            <translation>Eingangsaktion: %1</translation>
+        </message>
+        <message>
+            <source>Exit action: %1</source>
+            <translation>Ausgangsaktion: %1</translation>
+        </message>
+        <message>
+            <source>Active action: %1</source>
+            <translation>Aktive Aktion: %1</translation>
+        </message>
+        <message>
+            <source>Time: minimum %1, maximum %2</source>
+            <translation>Zeit: Minimum %1, Maximum %2</translation>
+        </message>
+        <message>
+            <source>Macro step %1 (double-click to open)</source>
+            <translation>Makroschritt %1 (Doppelklick öffnet ihn)</translation>
+        </message>
+        <message>
+            <source>Transition: %1</source>
+            <translation>Transition: %1</translation>
+        </message>
+        <message>
+            <source>Jump to step %1</source>
+            <translation>Sprung zu Schritt %1</translation>
+        </message>
+        <message>
+            <source>Jump to step %1, which does not exist</source>
+            <translation>Sprung zu Schritt %1, den es nicht gibt</translation>
+        </message>
+        <message>
+            <source>Parallel branch (start)</source>
+            <translation>Parallelzweig (Anfang)</translation>
+        </message>
+        <message>
+            <source>Parallel branch (end)</source>
+            <translation>Parallelzweig (Ende)</translation>
+        </message>
+        <message>
+            <source>Alternative branch (start)</source>
+            <translation>Alternativzweig (Anfang)</translation>
+        </message>
+        <message>
+            <source>Alternative branch (end)</source>
+            <translation>Alternativzweig (Ende)</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::sfc::StepPropertiesDialog</name>
+        <message>
+            <source>Initial step</source>
+            <translation>Initialschritt</translation>
+        </message>
+        <message>
+            <source>Simplified step (no IEC actions)</source>
+            <translation>Vereinfachter Schritt (keine IEC-Aktionen)</translation>
+        </message>
+        <message>
+            <source>Step Properties</source>
+            <translation>Schritteigenschaften</translation>
+        </message>
+        <message>
+            <source>e.g. T#2s</source>
+            <translation>z. B. T#2s</translation>
+        </message>
+        <message>
+            <source>e.g. T#10s</source>
+            <translation>z. B. T#10s</translation>
+        </message>
+        <message>
+            <source>Name:</source>
+            <translation>Name:</translation>
+        </message>
+        <message>
+            <source>Entry action (E):</source>
+            <translation>Eingangsaktion (E):</translation>
+        </message>
+        <message>
+            <source>Exit action (X):</source>
+            <translation>Ausgangsaktion (X):</translation>
+        </message>
+        <message>
+            <source>Active action:</source>
+            <translation>Aktive Aktion:</translation>
+        </message>
+        <message>
+            <source>Minimum time:</source>
+            <translation>Minimale Zeit:</translation>
+        </message>
+        <message>
+            <source>Maximum time:</source>
+            <translation>Maximale Zeit:</translation>
+        </message>
+        <message>
+            <source>Comment:</source>
+            <translation>Kommentar:</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::interp::Compiler</name>
+        <message>
+            <source>a statement</source>
+            <translation>eine Anweisung</translation>
+        </message>
+        <message>
+            <source>VAR ... END_VAR</source>
+            <translation>VAR ... END_VAR</translation>
+        </message>
+        <message>
+            <source>the end of the text</source>
+            <translation>das Ende des Texts</translation>
+        </message>
+        <message>
+            <source>'%1' is not valid IEC 61131-3 text.</source>
+            <translation>'%1' ist kein gültiger IEC 61131-3-Text.</translation>
+        </message>
+        <message>
+            <source>Expected %1 but found %2.</source>
+            <translation>%1 erwartet, aber %2 gefunden.</translation>
+        </message>
+        <message>
+            <source>close the string on the same line, and write $$ for a dollar sign</source>
+            <translation>den String in derselben Zeile schließen und $$ für ein Dollarzeichen schreiben</translation>
+        </message>
+        <message>
+            <source>check the digits and units of the literal, e.g. 16#FF or T#1s500ms</source>
+            <translation>Ziffern und Einheiten des Literals prüfen, z. B. 16#FF oder T#1s500ms</translation>
+        </message>
+        <message>
+            <source>PROGRAM, FUNCTION_BLOCK, FUNCTION, TYPE or CONFIGURATION</source>
+            <translation>PROGRAM, FUNCTION_BLOCK, FUNCTION, TYPE oder CONFIGURATION</translation>
+        </message>
+        <message>
+            <source>the name of the POU</source>
+            <translation>den Namen der POE</translation>
+        </message>
+        <message>
+            <source>A FUNCTION needs a result type after its name.</source>
+            <translation>Eine FUNCTION braucht nach ihrem Namen einen Ergebnistyp.</translation>
+        </message>
+        <message>
+            <source>write e.g. FUNCTION %1 : INT</source>
+            <translation>z. B. FUNCTION %1 : INT schreiben</translation>
+        </message>
+        <message>
+            <source>the name of the action</source>
+            <translation>den Namen der Aktion</translation>
+        </message>
+        <message>
+            <source>%1 has no %2.</source>
+            <translation>%1 hat kein %2.</translation>
+        </message>
+        <message>
+            <source>add %1 after its last statement</source>
+            <translation>%1 nach seiner letzten Anweisung einfügen</translation>
+        </message>
+        <message>
+            <source>the name of a type</source>
+            <translation>den Namen eines Typs</translation>
+        </message>
+        <message>
+            <source>':' after the type name</source>
+            <translation>':' nach dem Typnamen</translation>
+        </message>
+        <message>
+            <source>Missing ';' after the declaration of type %1.</source>
+            <translation>Fehlendes ';' nach der Deklaration des Typs %1.</translation>
+        </message>
+        <message>
+            <source>the name of the configuration</source>
+            <translation>den Namen der Konfiguration</translation>
+        </message>
+        <message>
+            <source>the name of the resource</source>
+            <translation>den Namen der Ressource</translation>
+        </message>
+        <message>
+            <source>the processor type after ON</source>
+            <translation>den Prozessortyp nach ON</translation>
+        </message>
+        <message>
+            <source>the name of the task</source>
+            <translation>den Namen der Task</translation>
+        </message>
+        <message>
+            <source>'(' with the task's INTERVAL and PRIORITY</source>
+            <translation>'(' mit INTERVAL und PRIORITY der Task</translation>
+        </message>
+        <message>
+            <source>SINGLE, INTERVAL or PRIORITY</source>
+            <translation>SINGLE, INTERVAL oder PRIORITY</translation>
+        </message>
+        <message>
+            <source>the name of the program instance</source>
+            <translation>den Namen der Programminstanz</translation>
+        </message>
+        <message>
+            <source>the task name after WITH</source>
+            <translation>den Tasknamen nach WITH</translation>
+        </message>
+        <message>
+            <source>':' and the program type</source>
+            <translation>':' und den Programmtyp</translation>
+        </message>
+        <message>
+            <source>the program type</source>
+            <translation>den Programmtyp</translation>
+        </message>
+        <message>
+            <source>TASK, PROGRAM or %1</source>
+            <translation>TASK, PROGRAM oder %1</translation>
+        </message>
+        <message>
+            <source>This variable section has no END_VAR.</source>
+            <translation>Diesem Variablenabschnitt fehlt END_VAR.</translation>
+        </message>
+        <message>
+            <source>add END_VAR after its last declaration</source>
+            <translation>END_VAR nach seiner letzten Deklaration einfügen</translation>
+        </message>
+        <message>
+            <source>a variable name</source>
+            <translation>einen Variablennamen</translation>
+        </message>
+        <message>
+            <source>an address such as %IX0.0 after AT</source>
+            <translation>eine Adresse wie %IX0.0 nach AT</translation>
+        </message>
+        <message>
+            <source>':' and a type</source>
+            <translation>':' und einen Typ</translation>
+        </message>
+        <message>
+            <source>An initial value is given with ':=', not '='.</source>
+            <translation>Ein Anfangswert wird mit ':=' angegeben, nicht mit '='.</translation>
+        </message>
+        <message>
+            <source>write %1 : ... := value;</source>
+            <translation>%1 : ... := Wert; schreiben</translation>
+        </message>
+        <message>
+            <source>Missing ';' after the declaration of %1.</source>
+            <translation>Fehlendes ';' nach der Deklaration von %1.</translation>
+        </message>
+        <message>
+            <source>'[' and the index range, e.g. ARRAY[1..10]</source>
+            <translation>'[' und den Indexbereich, z. B. ARRAY[1..10]</translation>
+        </message>
+        <message>
+            <source>'..' between the bounds</source>
+            <translation>'..' zwischen den Grenzen</translation>
+        </message>
+        <message>
+            <source>This STRUCT has no END_STRUCT.</source>
+            <translation>Diesem STRUCT fehlt END_STRUCT.</translation>
+        </message>
+        <message>
+            <source>an enumeration value</source>
+            <translation>einen Aufzählungswert</translation>
+        </message>
+        <message>
+            <source>')' after the enumeration values</source>
+            <translation>')' nach den Aufzählungswerten</translation>
+        </message>
+        <message>
+            <source>the closing bracket of the string length</source>
+            <translation>die schließende Klammer der Stringlänge</translation>
+        </message>
+        <message>
+            <source>a type</source>
+            <translation>einen Typ</translation>
+        </message>
+        <message>
+            <source>')' after the repeated value</source>
+            <translation>')' nach dem wiederholten Wert</translation>
+        </message>
+        <message>
+            <source>']' at the end of the array's initial values</source>
+            <translation>']' am Ende der Anfangswerte des Felds</translation>
+        </message>
+        <message>
+            <source>a member name</source>
+            <translation>einen Komponentennamen</translation>
+        </message>
+        <message>
+            <source>')' at the end of the structure's initial values</source>
+            <translation>')' am Ende der Anfangswerte der Struktur</translation>
+        </message>
+        <message>
+            <source>INITIAL_STEP, STEP, TRANSITION or ACTION</source>
+            <translation>INITIAL_STEP, STEP, TRANSITION oder ACTION</translation>
+        </message>
+        <message>
+            <source>the name of the step</source>
+            <translation>den Namen des Schritts</translation>
+        </message>
+        <message>
+            <source>':' after the step name</source>
+            <translation>':' nach dem Schrittnamen</translation>
+        </message>
+        <message>
+            <source>an action name</source>
+            <translation>einen Aktionsnamen</translation>
+        </message>
+        <message>
+            <source>an action qualifier such as N, S, R, L or D</source>
+            <translation>ein Aktionsbestimmungszeichen wie N, S, R, L oder D</translation>
+        </message>
+        <message>
+            <source>a duration or an indicator variable</source>
+            <translation>eine Dauer oder eine Anzeigevariable</translation>
+        </message>
+        <message>
+            <source>Missing ';' after the action association.</source>
+            <translation>Fehlendes ';' nach der Aktionszuordnung.</translation>
+        </message>
+        <message>
+            <source>Step %1 has no END_STEP.</source>
+            <translation>Dem Schritt %1 fehlt END_STEP.</translation>
+        </message>
+        <message>
+            <source>a step name</source>
+            <translation>einen Schrittnamen</translation>
+        </message>
+        <message>
+            <source>')' after the step names</source>
+            <translation>')' nach den Schrittnamen</translation>
+        </message>
+        <message>
+            <source>':=' and the transition condition</source>
+            <translation>':=' und die Transitionsbedingung</translation>
+        </message>
+        <message>
+            <source>This TRANSITION has no END_TRANSITION.</source>
+            <translation>Dieser TRANSITION fehlt END_TRANSITION.</translation>
+        </message>
+        <message>
+            <source>Missing ';' at the end of the statement.</source>
+            <translation>Fehlendes ';' am Ende der Anweisung.</translation>
+        </message>
+        <message>
+            <source>every ST statement ends with ';'</source>
+            <translation>jede ST-Anweisung endet mit ';'</translation>
+        </message>
+        <message>
+            <source>'=' compares two values; to assign a value write ':='.</source>
+            <translation>'=' vergleicht zwei Werte; für eine Zuweisung ':=' schreiben.</translation>
+        </message>
+        <message>
+            <source>write %1 := ...;</source>
+            <translation>%1 := ...; schreiben</translation>
+        </message>
+        <message>
+            <source>Expected ':=' or a call after '%1'.</source>
+            <translation>':=' oder ein Aufruf nach '%1' erwartet.</translation>
+        </message>
+        <message>
+            <source>This %1 has no matching %2.</source>
+            <translation>Dieses %1 hat kein passendes %2.</translation>
+        </message>
+        <message>
+            <source>add %1; after the last statement that belongs to it</source>
+            <translation>%1; nach der letzten dazugehörigen Anweisung einfügen</translation>
+        </message>
+        <message>
+            <source>A condition compares with '=', not ':='.</source>
+            <translation>Eine Bedingung vergleicht mit '=', nicht mit ':='.</translation>
+        </message>
+        <message>
+            <source>a case label such as 1:, 2, 3: or 10..20:</source>
+            <translation>eine CASE-Marke wie 1:, 2, 3: oder 10..20:</translation>
+        </message>
+        <message>
+            <source>':' after the case label</source>
+            <translation>':' nach der CASE-Marke</translation>
+        </message>
+        <message>
+            <source>the control variable of the FOR loop</source>
+            <translation>die Laufvariable der FOR-Schleife</translation>
+        </message>
+        <message>
+            <source>':=' and the start value</source>
+            <translation>':=' und den Startwert</translation>
+        </message>
+        <message>
+            <source>This REPEAT has no UNTIL condition.</source>
+            <translation>Diesem REPEAT fehlt die UNTIL-Bedingung.</translation>
+        </message>
+        <message>
+            <source>a value</source>
+            <translation>einen Wert</translation>
+        </message>
+        <message>
+            <source>a value, a variable or a function call</source>
+            <translation>einen Wert, eine Variable oder einen Funktionsaufruf</translation>
+        </message>
+        <message>
+            <source>a member name or a bit number after '.'</source>
+            <translation>einen Komponentennamen oder eine Bitnummer nach '.'</translation>
+        </message>
+        <message>
+            <source>')' or ',' in the argument list</source>
+            <translation>')' oder ',' in der Argumentliste</translation>
+        </message>
+        <message>
+            <source>an IL operator such as LD, ST, ADD or JMP</source>
+            <translation>einen AWL-Operator wie LD, ST, ADD oder JMP</translation>
+        </message>
+        <message>
+            <source>An IL instruction takes one operand; %1 is left over.</source>
+            <translation>Eine AWL-Anweisung nimmt einen Operanden; %1 bleibt übrig.</translation>
+        </message>
+        <message>
+            <source>put each instruction on its own line</source>
+            <translation>jede Anweisung in eine eigene Zeile schreiben</translation>
+        </message>
+        <message>
+            <source>There is no global variable %1 for this VAR_EXTERNAL.</source>
+            <translation>Es gibt keine globale Variable %1 für diese VAR_EXTERNAL.</translation>
+        </message>
+        <message>
+            <source>declare it in VAR_GLOBAL</source>
+            <translation>in VAR_GLOBAL deklarieren</translation>
+        </message>
+        <message>
+            <source>%1 is declared as %2 here but as %3 in VAR_GLOBAL.</source>
+            <translation>%1 ist hier als %2 deklariert, in VAR_GLOBAL aber als %3.</translation>
+        </message>
+        <message>
+            <source>%1 is a sequential function chart; charts run with the next version of the interpreter.</source>
+            <translation>%1 ist in Ablaufsprache geschrieben; Abläufe laufen mit der nächsten Version des Interpreters.</translation>
+        </message>
+        <message>
+            <source>Only the first configuration (%1) runs.</source>
+            <translation>Nur die erste Konfiguration (%1) läuft.</translation>
+        </message>
+        <message>
+            <source>SINGLE needs a global BOOL variable.</source>
+            <translation>SINGLE braucht eine globale BOOL-Variable.</translation>
+        </message>
+        <message>
+            <source>There is no PROGRAM called %1.</source>
+            <translation>Es gibt kein PROGRAM namens %1.</translation>
+        </message>
+        <message>
+            <source>There is no task called %1.</source>
+            <translation>Es gibt keine Task namens %1.</translation>
+        </message>
+        <message>
+            <source>Recursion is not allowed in IEC 61131-3: %1 calls itself (%2).</source>
+            <translation>Rekursion ist in IEC 61131-3 nicht erlaubt: %1 ruft sich selbst auf (%2).</translation>
+        </message>
+        <message>
+            <source>The type %1 is declared twice.</source>
+            <translation>Der Typ %1 ist zweimal deklariert.</translation>
+        </message>
+        <message>
+            <source>There are two POUs called %1.</source>
+            <translation>Es gibt zwei POEs namens %1.</translation>
+        </message>
+        <message>
+            <source>%1 is already the name of a type.</source>
+            <translation>%1 ist bereits der Name eines Typs.</translation>
+        </message>
+        <message>
+            <source>The type %1 is defined in terms of itself.</source>
+            <translation>Der Typ %1 ist durch sich selbst definiert.</translation>
+        </message>
+        <message>
+            <source>%1 is a %2, not a type; only function blocks can be instantiated.</source>
+            <translation>%1 ist ein %2, kein Typ; nur Funktionsbausteine können instanziiert werden.</translation>
+        </message>
+        <message>
+            <source>Unknown type '%1'.</source>
+            <translation>Unbekannter Typ '%1'.</translation>
+        </message>
+        <message>
+            <source>A string holds 1 to 65535 characters, not %1.</source>
+            <translation>Ein String fasst 1 bis 65535 Zeichen, nicht %1.</translation>
+        </message>
+        <message>
+            <source>The array range %1..%2 is empty; the upper bound must not be below the lower one.</source>
+            <translation>Der Feldbereich %1..%2 ist leer; die obere Grenze darf nicht unter der unteren liegen.</translation>
+        </message>
+        <message>
+            <source>This array needs %1 MB; an array may use at most 256 MB.</source>
+            <translation>Dieses Feld braucht %1 MB; ein Feld darf höchstens 256 MB belegen.</translation>
+        </message>
+        <message>
+            <source>A subrange needs an integer type, not %1.</source>
+            <translation>Ein Unterbereich braucht einen Ganzzahltyp, nicht %1.</translation>
+        </message>
+        <message>
+            <source>The structure has two members called %1.</source>
+            <translation>Die Struktur hat zwei Komponenten namens %1.</translation>
+        </message>
+        <message>
+            <source>%1 contains an instance of itself, which would never end.</source>
+            <translation>%1 enthält eine Instanz von sich selbst, was nie enden würde.</translation>
+        </message>
+        <message>
+            <source>%1 is declared twice.</source>
+            <translation>%1 ist zweimal deklariert.</translation>
+        </message>
+        <message>
+            <source>A function cannot hold a function block instance (%1); use a function block instead.</source>
+            <translation>Eine Funktion kann keine Funktionsbausteininstanz (%1) enthalten; stattdessen einen Funktionsbaustein verwenden.</translation>
+        </message>
+        <message>
+            <source>The program needs more than 1 GB of memory for its variables.</source>
+            <translation>Das Programm braucht für seine Variablen mehr als 1 GB Speicher.</translation>
+        </message>
+        <message>
+            <source>The global variable %1 is declared twice.</source>
+            <translation>Die globale Variable %1 ist zweimal deklariert.</translation>
+        </message>
+        <message>
+            <source>The address %1 does not fit a variable of type %2.</source>
+            <translation>Die Adresse %1 passt nicht zu einer Variablen vom Typ %2.</translation>
+        </message>
+        <message>
+            <source>A %1 is initialised with a single value.</source>
+            <translation>Ein %1 wird mit einem einzelnen Wert initialisiert.</translation>
+        </message>
+        <message>
+            <source>There are more initial values than the array's %1 elements.</source>
+            <translation>Es gibt mehr Anfangswerte als die %1 Elemente des Felds.</translation>
+        </message>
+        <message>
+            <source>An array is initialised with a list in brackets, e.g. [1, 2, 3] or [10(0)].</source>
+            <translation>Ein Feld wird mit einer Liste in Klammern initialisiert, z. B. [1, 2, 3] oder [10(0)].</translation>
+        </message>
+        <message>
+            <source>%1 has no member %2.</source>
+            <translation>%1 hat keine Komponente %2.</translation>
+        </message>
+        <message>
+            <source>A structure is initialised with (member := value, ...).</source>
+            <translation>Eine Struktur wird mit (Komponente := Wert, ...) initialisiert.</translation>
+        </message>
+        <message>
+            <source>The text has %1 characters but the string holds only %2.</source>
+            <translation>Der Text hat %1 Zeichen, aber der String fasst nur %2.</translation>
+        </message>
+        <message>
+            <source>This must be a constant: a literal, a CONSTANT or an expression of them.</source>
+            <translation>Dies muss eine Konstante sein: ein Literal, eine CONSTANT oder ein Ausdruck daraus.</translation>
+        </message>
+        <message>
+            <source>This must be a constant integer.</source>
+            <translation>Dies muss eine ganzzahlige Konstante sein.</translation>
+        </message>
+        <message>
+            <source>%1 is a constant and cannot be changed.</source>
+            <translation>%1 ist eine Konstante und kann nicht geändert werden.</translation>
+        </message>
+        <message>
+            <source>%1 is an output of the function block and can only be read.</source>
+            <translation>%1 ist ein Ausgang des Funktionsbausteins und kann nur gelesen werden.</translation>
+        </message>
+        <message>
+            <source>%1 is internal to the function block.</source>
+            <translation>%1 ist intern im Funktionsbaustein.</translation>
+        </message>
+        <message>
+            <source>%1 has no value %2.</source>
+            <translation>%1 hat keinen Wert %2.</translation>
+        </message>
+        <message>
+            <source>%1 is a value of several enumerations.</source>
+            <translation>%1 ist ein Wert mehrerer Aufzählungen.</translation>
+        </message>
+        <message>
+            <source>write the type in front, e.g. Type#%1</source>
+            <translation>den Typ davor schreiben, z. B. Typ#%1</translation>
+        </message>
+        <message>
+            <source>%1 is a POU, not a variable.</source>
+            <translation>%1 ist eine POE, keine Variable.</translation>
+        </message>
+        <message>
+            <source>Unknown variable '%1'.</source>
+            <translation>Unbekannte Variable '%1'.</translation>
+        </message>
+        <message>
+            <source>declare it in a VAR section</source>
+            <translation>in einem VAR-Abschnitt deklarieren</translation>
+        </message>
+        <message>
+            <source>%1 is a %2 and has no members.</source>
+            <translation>%1 ist ein %2 und hat keine Komponenten.</translation>
+        </message>
+        <message>
+            <source>%1 has no bit %2.</source>
+            <translation>%1 hat kein Bit %2.</translation>
+        </message>
+        <message>
+            <source>%1 is not an array.</source>
+            <translation>%1 ist kein Feld.</translation>
+        </message>
+        <message>
+            <source>%1 has %2 dimension(s) but %3 index(es) are given.</source>
+            <translation>%1 hat %2 Dimension(en), aber %3 Index/Indizes sind angegeben.</translation>
+        </message>
+        <message>
+            <source>The index %1 is outside the range %2..%3 of %4.</source>
+            <translation>Der Index %1 liegt außerhalb des Bereichs %2..%3 von %4.</translation>
+        </message>
+        <message>
+            <source>An array index must be an integer, not %1.</source>
+            <translation>Ein Feldindex muss eine Ganzzahl sein, nicht %1.</translation>
+        </message>
+        <message>
+            <source>This is not a variable.</source>
+            <translation>Dies ist keine Variable.</translation>
+        </message>
+        <message>
+            <source>The value %1 is outside the range %2..%3 of %4.</source>
+            <translation>Der Wert %1 liegt außerhalb des Bereichs %2..%3 von %4.</translation>
+        </message>
+        <message>
+            <source>A function block instance cannot be assigned; call it instead.</source>
+            <translation>Einer Funktionsbausteininstanz kann nichts zugewiesen werden; stattdessen aufrufen.</translation>
+        </message>
+        <message>
+            <source>'**' needs numbers, not %1 and %2.</source>
+            <translation>'**' braucht Zahlen, nicht %1 und %2.</translation>
+        </message>
+        <message>
+            <source>'%1' cannot combine %2 and %3.</source>
+            <translation>'%1' kann %2 und %3 nicht verknüpfen.</translation>
+        </message>
+        <message>
+            <source>BOOL or a bit string (BYTE, WORD, ...)</source>
+            <translation>BOOL oder eine Bitfolge (BYTE, WORD, ...)</translation>
+        </message>
+        <message>
+            <source>integers</source>
+            <translation>Ganzzahlen</translation>
+        </message>
+        <message>
+            <source>numbers</source>
+            <translation>Zahlen</translation>
+        </message>
+        <message>
+            <source>'%1' needs %2, not %3.</source>
+            <translation>'%1' braucht %2, nicht %3.</translation>
+        </message>
+        <message>
+            <source>Division by zero.</source>
+            <translation>Division durch null.</translation>
+        </message>
+        <message>
+            <source>A %1 cannot be negated.</source>
+            <translation>Ein %1 kann nicht negiert werden.</translation>
+        </message>
+        <message>
+            <source>NOT needs BOOL or a bit string (BYTE, WORD, ...), not %1.</source>
+            <translation>NOT braucht BOOL oder eine Bitfolge (BYTE, WORD, ...), nicht %1.</translation>
+        </message>
+        <message>
+            <source>an integer literal</source>
+            <translation>ein Ganzzahlliteral</translation>
+        </message>
+        <message>
+            <source>'%1' is not a valid literal.</source>
+            <translation>'%1' ist kein gültiges Literal.</translation>
+        </message>
+        <message>
+            <source>A value of type %1 cannot be used as %2%3 without a conversion.</source>
+            <translation>Ein Wert vom Typ %1 kann nicht ohne Konvertierung als %2%3 verwendet werden.</translation>
+        </message>
+        <message>
+            <source>The value %1 does not fit into %2 (%3 to %4).</source>
+            <translation>Der Wert %1 passt nicht in %2 (%3 bis %4).</translation>
+        </message>
+        <message>
+            <source>The text has %1 characters but %2 holds only %3.</source>
+            <translation>Der Text hat %1 Zeichen, aber %2 fasst nur %3.</translation>
+        </message>
+        <message>
+            <source>A %1 cannot be converted to text.</source>
+            <translation>Ein %1 kann nicht in Text umgewandelt werden.</translation>
+        </message>
+        <message>
+            <source>Text cannot be converted to %1.</source>
+            <translation>Text kann nicht in %1 umgewandelt werden.</translation>
+        </message>
+        <message>
+            <source>A %1 cannot be converted to %2.</source>
+            <translation>Ein %1 kann nicht in %2 umgewandelt werden.</translation>
+        </message>
+        <message>
+            <source>convert it explicitly, e.g. %1_TO_%2(...)</source>
+            <translation>explizit umwandeln, z. B. %1_TO_%2(...)</translation>
+        </message>
+        <message>
+            <source>A function block call is a statement of its own.</source>
+            <translation>Ein Funktionsbausteinaufruf ist eine eigene Anweisung.</translation>
+        </message>
+        <message>
+            <source>The action %1 takes no arguments.</source>
+            <translation>Die Aktion %1 hat keine Argumente.</translation>
+        </message>
+        <message>
+            <source>%1 is a %2, not a function block; it cannot be called.</source>
+            <translation>%1 ist ein %2, kein Funktionsbaustein; es kann nicht aufgerufen werden.</translation>
+        </message>
+        <message>
+            <source>call %1(...); then read its outputs, e.g. %1.Q</source>
+            <translation>%1(...) aufrufen; dann seine Ausgänge lesen, z. B. %1.Q</translation>
+        </message>
+        <message>
+            <source>A program cannot be called from another POU; it runs in a task.</source>
+            <translation>Ein Programm kann nicht von einer anderen POE aufgerufen werden; es läuft in einer Task.</translation>
+        </message>
+        <message>
+            <source>%1 is a function block type; declare an instance (e.g. inst : %1;) and call that.</source>
+            <translation>%1 ist ein Funktionsbausteintyp; eine Instanz deklarieren (z. B. inst : %1;) und diese aufrufen.</translation>
+        </message>
+        <message>
+            <source>%1 has no outputs to connect with '=&gt;'.</source>
+            <translation>%1 hat keine Ausgänge, die mit '=&gt;' verbunden werden können.</translation>
+        </message>
+        <message>
+            <source>Unknown function '%1'.</source>
+            <translation>Unbekannte Funktion '%1'.</translation>
+        </message>
+        <message>
+            <source>%1 takes only %2 input(s).</source>
+            <translation>%1 hat nur %2 Eingang/Eingänge.</translation>
+        </message>
+        <message>
+            <source>%1 has no input or output called %2.</source>
+            <translation>%1 hat keinen Eingang oder Ausgang namens %2.</translation>
+        </message>
+        <message>
+            <source>%1 is not an output of %2; connect inputs with ':='.</source>
+            <translation>%1 ist kein Ausgang von %2; Eingänge mit ':=' verbinden.</translation>
+        </message>
+        <message>
+            <source>%1 is an output of %2; connect it with '=&gt;'.</source>
+            <translation>%1 ist ein Ausgang von %2; mit '=&gt;' verbinden.</translation>
+        </message>
+        <message>
+            <source>write %1 =&gt; variable</source>
+            <translation>%1 =&gt; Variable schreiben</translation>
+        </message>
+        <message>
+            <source>VAR_IN_OUT %1 needs a variable.</source>
+            <translation>VAR_IN_OUT %1 braucht eine Variable.</translation>
+        </message>
+        <message>
+            <source>%1 takes only %2 argument(s).</source>
+            <translation>%1 nimmt nur %2 Argument(e).</translation>
+        </message>
+        <message>
+            <source>%1 has no parameter called %2.</source>
+            <translation>%1 hat keinen Parameter namens %2.</translation>
+        </message>
+        <message>
+            <source>Connect inputs of %1 with ':=' and outputs with '=&gt;'.</source>
+            <translation>Eingänge von %1 mit ':=' und Ausgänge mit '=&gt;' verbinden.</translation>
+        </message>
+        <message>
+            <source>%1 needs a variable for its VAR_IN_OUT %2.</source>
+            <translation>%1 braucht eine Variable für seinen VAR_IN_OUT %2.</translation>
+        </message>
+        <message>
+            <source>%1 needs a REAL or LREAL, not %2.</source>
+            <translation>%1 braucht REAL oder LREAL, nicht %2.</translation>
+        </message>
+        <message>
+            <source>The inputs of %1 have types that do not go together (%2).</source>
+            <translation>Die Eingänge von %1 haben Typen, die nicht zusammenpassen (%2).</translation>
+        </message>
+        <message>
+            <source>%1 needs numbers, times or bit strings.</source>
+            <translation>%1 braucht Zahlen, Zeiten oder Bitfolgen.</translation>
+        </message>
+        <message>
+            <source>%1 has no input %2.</source>
+            <translation>%1 hat keinen Eingang %2.</translation>
+        </message>
+        <message>
+            <source>%1 needs a bit string (BYTE, WORD, DWORD, LWORD), not %2.</source>
+            <translation>%1 braucht eine Bitfolge (BYTE, WORD, DWORD, LWORD), nicht %2.</translation>
+        </message>
+        <message>
+            <source>convert it first, e.g. %1_TO_%2</source>
+            <translation>zuerst umwandeln, z. B. %1_TO_%2</translation>
+        </message>
+        <message>
+            <source>A length or position must be an integer, not %1.</source>
+            <translation>Eine Länge oder Position muss eine Ganzzahl sein, nicht %1.</translation>
+        </message>
+        <message>
+            <source>%1 needs a STRING or WSTRING, not %2.</source>
+            <translation>%1 braucht STRING oder WSTRING, nicht %2.</translation>
+        </message>
+        <message>
+            <source>This time function needs a %1, not %2.</source>
+            <translation>Diese Zeitfunktion braucht ein %1, nicht %2.</translation>
+        </message>
+        <message>
+            <source>ABS needs a number, not %1.</source>
+            <translation>ABS braucht eine Zahl, nicht %1.</translation>
+        </message>
+        <message>
+            <source>TRUNC needs a REAL or LREAL, not %1.</source>
+            <translation>TRUNC braucht REAL oder LREAL, nicht %1.</translation>
+        </message>
+        <message>
+            <source>(the G input of SEL)</source>
+            <translation>(der Eingang G von SEL)</translation>
+        </message>
+        <message>
+            <source>The selector K of MUX must be an integer.</source>
+            <translation>Der Selektor K von MUX muss eine Ganzzahl sein.</translation>
+        </message>
+        <message>
+            <source>CONCAT_DATE_TOD needs a DATE and a TIME_OF_DAY.</source>
+            <translation>CONCAT_DATE_TOD braucht ein DATE und ein TIME_OF_DAY.</translation>
+        </message>
+        <message>
+            <source>%1 takes one argument.</source>
+            <translation>%1 nimmt ein Argument.</translation>
+        </message>
+        <message>
+            <source>(the input of %1)</source>
+            <translation>(der Eingang von %1)</translation>
+        </message>
+        <message>
+            <source>%1 needs a bit string holding BCD digits.</source>
+            <translation>%1 braucht eine Bitfolge mit BCD-Ziffern.</translation>
+        </message>
+        <message>
+            <source>%1 takes %2%3 argument(s), not %4.</source>
+            <translation>%1 nimmt %2%3 Argument(e), nicht %4.</translation>
+        </message>
+        <message>
+            <source>at least </source>
+            <translation>mindestens </translation>
+        </message>
+        <message>
+            <source>An argument of %1 is missing.</source>
+            <translation>Ein Argument von %1 fehlt.</translation>
+        </message>
+        <message>
+            <source>A condition must be BOOL, not %1.</source>
+            <translation>Eine Bedingung muss BOOL sein, nicht %1.</translation>
+        </message>
+        <message>
+            <source>compare it, e.g. x &lt;&gt; 0</source>
+            <translation>vergleichen, z. B. x &lt;&gt; 0</translation>
+        </message>
+        <message>
+            <source>CASE needs an integer or an enumeration, not %1.</source>
+            <translation>CASE braucht eine Ganzzahl oder eine Aufzählung, nicht %1.</translation>
+        </message>
+        <message>
+            <source>The FOR loop needs an integer variable as its counter.</source>
+            <translation>Die FOR-Schleife braucht eine Ganzzahlvariable als Zähler.</translation>
+        </message>
+        <message>
+            <source>(the end value)</source>
+            <translation>(der Endwert)</translation>
+        </message>
+        <message>
+            <source>(the step)</source>
+            <translation>(die Schrittweite)</translation>
+        </message>
+        <message>
+            <source>A FOR loop with step 0 never ends.</source>
+            <translation>Eine FOR-Schleife mit Schrittweite 0 endet nie.</translation>
+        </message>
+        <message>
+            <source>%1 is only allowed inside a FOR, WHILE or REPEAT loop.</source>
+            <translation>%1 ist nur innerhalb einer FOR-, WHILE- oder REPEAT-Schleife erlaubt.</translation>
+        </message>
+        <message>
+            <source>%1 needs a current result; load one first with LD.</source>
+            <translation>%1 braucht ein aktuelles Ergebnis; zuerst eines mit LD laden.</translation>
+        </message>
+        <message>
+            <source>%1 needs an operand.</source>
+            <translation>%1 braucht einen Operanden.</translation>
+        </message>
+        <message>
+            <source>(the condition of %1)</source>
+            <translation>(die Bedingung von %1)</translation>
+        </message>
+        <message>
+            <source>The label %1 is defined twice.</source>
+            <translation>Die Marke %1 ist zweimal definiert.</translation>
+        </message>
+        <message>
+            <source>This ')' has no matching operator with '('.</source>
+            <translation>Diese ')' hat keinen passenden Operator mit '('.</translation>
+        </message>
+        <message>
+            <source>%1 needs a label to jump to.</source>
+            <translation>%1 braucht eine Sprungmarke.</translation>
+        </message>
+        <message>
+            <source>%1 is not a function block with an input %2.</source>
+            <translation>%1 ist kein Funktionsbaustein mit einem Eingang %2.</translation>
+        </message>
+        <message>
+            <source>This '(' is never closed with ')'.</source>
+            <translation>Diese '(' wird nie mit ')' geschlossen.</translation>
+        </message>
+        <message>
+            <source>There is no label %1 to jump to.</source>
+            <translation>Es gibt keine Marke %1, zu der gesprungen werden kann.</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::interp::Runtime</name>
+        <message>
+            <source>Integer division by zero.</source>
+            <translation>Ganzzahldivision durch null.</translation>
+        </message>
+        <message>
+            <source>Array index out of range.</source>
+            <translation>Feldindex außerhalb des Bereichs.</translation>
+        </message>
+        <message>
+            <source>The text does not fit into the string variable.</source>
+            <translation>Der Text passt nicht in die String-Variable.</translation>
+        </message>
+        <message>
+            <source>The program ran too long in one cycle; is there an endless loop?</source>
+            <translation>Das Programm lief in einem Zyklus zu lange; gibt es eine Endlosschleife?</translation>
+        </message>
+        <message>
+            <source>Calls are nested too deeply.</source>
+            <translation>Aufrufe sind zu tief verschachtelt.</translation>
+        </message>
+        <message>
+            <source>The program cannot run (it did not compile).</source>
+            <translation>Das Programm kann nicht laufen (es wurde nicht übersetzt).</translation>
+        </message>
+        <message>
+            <source>A value outside the subrange of its type was assigned.</source>
+            <translation>Ein Wert außerhalb des Unterbereichs seines Typs wurde zugewiesen.</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::AddDataTypeCommand</name>
+        <message>
+            <source>Add data type %1</source>
+            <translation>Datentyp %1 hinzufügen</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::AddPouCommand</name>
+        <message>
+            <source>Add POU %1</source>
+            <translation>Baustein %1 hinzufügen</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::AddPouPartCommand</name>
+        <message>
+            <source>Add action %1</source>
+            <translation>Aktion %1 hinzufügen</translation>
+        </message>
+        <message>
+            <source>Add transition %1</source>
+            <translation>Transition %1 hinzufügen</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::AddVariableCommand</name>
+        <message>
+            <source>Add variable %1</source>
+            <translation>Variable %1 hinzufügen</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::ChangeDataTypeCommand</name>
+        <message>
+            <source>Change data type %1</source>
+            <translation>Datentyp %1 ändern</translation>
+        </message>
+        <message>
+            <source>Rename %1 to %2</source>
+            <translation>%1 in %2 umbenennen</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::ChangeElementCommand</name>
+        <message>
+            <source>Change %1</source>
+            <translation>%1 ändern</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::ChangeVariableCommand</name>
+        <message>
+            <source>Change variable %1</source>
+            <translation>Variable %1 ändern</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::ConnectCommand</name>
+        <message>
+            <source>Connect</source>
+            <translation>Verbinden</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::DisconnectCommand</name>
+        <message>
+            <source>Disconnect</source>
+            <translation>Verbindung lösen</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::DuplicatePouCommand</name>
+        <message>
+            <source>Duplicate POU as %1</source>
+            <translation>Baustein als %1 duplizieren</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::InsertElementCommand</name>
+        <message>
+            <source>Insert %1</source>
+            <translation>%1 einfügen</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::MoveElementsCommand</name>
+        <message numerus="yes">
+            <source>Move %n element(s)</source>
+            <translation>
+                <numerusform>%n Element verschieben</numerusform>
+                <numerusform>%n Elemente verschieben</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::RemoveDataTypeCommand</name>
+        <message>
+            <source>Delete data type %1</source>
+            <translation>Datentyp %1 löschen</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::RemoveElementCommand</name>
+        <message>
+            <source>Delete %1</source>
+            <translation>%1 löschen</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::RemovePouCommand</name>
+        <message>
+            <source>Delete POU %1</source>
+            <translation>Baustein %1 löschen</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::RemovePouPartCommand</name>
+        <message>
+            <source>Delete action %1</source>
+            <translation>Aktion %1 löschen</translation>
+        </message>
+        <message>
+            <source>Delete transition %1</source>
+            <translation>Transition %1 löschen</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::RemoveVariableCommand</name>
+        <message>
+            <source>Delete variable %1</source>
+            <translation>Variable %1 löschen</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::RenamePouCommand</name>
+        <message>
+            <source>Rename %1 to %2</source>
+            <translation>%1 in %2 umbenennen</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::RenamePouPartCommand</name>
+        <message>
+            <source>Rename %1 to %2</source>
+            <translation>%1 in %2 umbenennen</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::SetBodyTextCommand</name>
+        <message>
+            <source>Edit text</source>
+            <translation>Text bearbeiten</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::SetInstancesCommand</name>
+        <message>
+            <source>Change configurations</source>
+            <translation>Konfigurationen ändern</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::SetInterfaceCommand</name>
+        <message>
+            <source>Edit declarations</source>
+            <translation>Deklarationen bearbeiten</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::plcopen::Reader</name>
+        <message>
+            <source>The elements are nested too deeply; the content below is skipped.</source>
+            <translation>Die Elemente sind zu tief verschachtelt; der Inhalt darunter wird übersprungen.</translation>
+        </message>
+        <message>
+            <source>The attribute %1="%2" of &lt;%3&gt; has an invalid value; it is kept as written.</source>
+            <translation>Das Attribut %1="%2" von &lt;%3&gt; hat einen ungültigen Wert; es bleibt wie geschrieben erhalten.</translation>
+        </message>
+        <message>
+            <source>&lt;%1&gt; lacks the required attribute '%2'.</source>
+            <translation>&lt;%1&gt; fehlt das erforderliche Attribut '%2'.</translation>
+        </message>
+        <message>
+            <source>&lt;%1&gt; lacks the required element &lt;%2&gt;.</source>
+            <translation>&lt;%1&gt; fehlt das erforderliche Element &lt;%2&gt;.</translation>
+        </message>
+        <message>
+            <source>Unknown attribute '%1' on &lt;%2&gt; is kept as it is.</source>
+            <translation>Das unbekannte Attribut '%1' an &lt;%2&gt; bleibt unverändert erhalten.</translation>
+        </message>
+        <message>
+            <source>Unknown attribute '%1' on &lt;%2&gt; is ignored.</source>
+            <translation>Das unbekannte Attribut '%1' an &lt;%2&gt; wird ignoriert.</translation>
+        </message>
+        <message>
+            <source>Unknown element &lt;%1&gt; in &lt;%2&gt; is kept as it is.</source>
+            <translation>Das unbekannte Element &lt;%1&gt; in &lt;%2&gt; bleibt unverändert erhalten.</translation>
+        </message>
+        <message>
+            <source>Unknown element &lt;%1&gt; in &lt;%2&gt; is ignored.</source>
+            <translation>Das unbekannte Element &lt;%1&gt; in &lt;%2&gt; wird ignoriert.</translation>
+        </message>
+        <message>
+            <source>A declaration in addData is nested too deeply to read; it is kept as it is.</source>
+            <translation>Eine Deklaration in addData ist zu tief verschachtelt; sie bleibt unverändert erhalten.</translation>
+        </message>
+        <message>
+            <source>&lt;%1&gt; names no data type.</source>
+            <translation>&lt;%1&gt; nennt keinen Datentyp.</translation>
+        </message>
+        <message>
+            <source>The data type &lt;%1&gt; is not in the PLCopen schema; it is kept by name.</source>
+            <translation>Der Datentyp &lt;%1&gt; gehört nicht zum PLCopen-Schema; er bleibt mit seinem Namen erhalten.</translation>
+        </message>
+        <message>
+            <source>The namespace '%1' is not PLCopen TC6 XML 2.01; the file is read anyway.</source>
+            <translation>Der Namensraum '%1' ist nicht PLCopen TC6 XML 2.01; die Datei wird trotzdem gelesen.</translation>
+        </message>
+        <message>
+            <source>The file is not well-formed XML: %1.</source>
+            <translation>Die Datei ist kein wohlgeformtes XML: %1.</translation>
+        </message>
+        <message>
+            <source>The root element is &lt;%1&gt;, not &lt;project&gt;: this is not a PLCopen XML file.</source>
+            <translation>Das Wurzelelement ist &lt;%1&gt;, nicht &lt;project&gt;: dies ist keine PLCopen-XML-Datei.</translation>
+        </message>
+        <message>
+            <source>Cannot open %1: %2.</source>
+            <translation>%1 kann nicht geöffnet werden: %2.</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::plcopen::Writer</name>
+        <message>
+            <source>Cannot save %1: %2.</source>
+            <translation>%1 kann nicht gespeichert werden: %2.</translation>
+        </message>
+    </context>
+    <context>
+        <name>main</name>
+        <message>
+            <source>Open Project</source>
+            <translation>Projekt öffnen</translation>
+        </message>
+    </context>
 </TS>

@@ -1,1493 +1,3232 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
-<context>
-    <name>NameRules</name>
-    <message>
-        <source>Enter a name.</source>
-        <translation>请输入名称。</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is not an IEC identifier: use letters, digits and single underscores, starting with a letter or an underscore and not ending with an underscore.</source>
-        <translation>&quot;%1&quot; 不是 IEC 标识符：只能使用字母、数字和单个下划线，以字母或下划线开头，且不能以下划线结尾。</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is a reserved word of IEC 61131-3.</source>
-        <translation>&quot;%1&quot; 是 IEC 61131-3 的保留字。</translation>
-    </message>
-    <message>
-        <source>A POU or data type named &quot;%1&quot; exists already.</source>
-        <translation>名为 &quot;%1&quot; 的 POU 或数据类型已存在。</translation>
-    </message>
-    <message>
-        <source>This POU has an action or transition named &quot;%1&quot; already.</source>
-        <translation>此 POU 已有名为 &quot;%1&quot; 的动作或转换。</translation>
-    </message>
-</context>
-<context>
-    <name>ProjectCommands</name>
-    <message>
-        <source>A function needs a return type.</source>
-        <translation>函数需要返回类型。</translation>
-    </message>
-    <message>
-        <source>The POU does not exist any more.</source>
-        <translation>该 POU 已不存在。</translation>
-    </message>
-    <message>
-        <source>The item does not exist any more.</source>
-        <translation>该项已不存在。</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::AddPouDialog</name>
-    <message>
-        <source>Add POU</source>
-        <translation>添加 POU</translation>
-    </message>
-    <message>
-        <source>Program</source>
-        <translation>程序</translation>
-    </message>
-    <message>
-        <source>Function Block</source>
-        <translation>功能块</translation>
-    </message>
-    <message>
-        <source>Function</source>
-        <translation>函数</translation>
-    </message>
-    <message>
-        <source>&amp;Name:</source>
-        <translation>名称(&amp;N)：</translation>
-    </message>
-    <message>
-        <source>&amp;Kind:</source>
-        <translation>类型(&amp;K)：</translation>
-    </message>
-    <message>
-        <source>&amp;Language:</source>
-        <translation>语言(&amp;L)：</translation>
-    </message>
-    <message>
-        <source>&amp;Return type:</source>
-        <translation>返回类型(&amp;R)：</translation>
-    </message>
-    <message>
-        <source>A function needs a return type.</source>
-        <translation>函数需要返回类型。</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::AddPouPartDialog</name>
-    <message>
-        <source>Add Action</source>
-        <translation>添加动作</translation>
-    </message>
-    <message>
-        <source>Add Transition</source>
-        <translation>添加转换</translation>
-    </message>
-    <message>
-        <source>&amp;Name:</source>
-        <translation>名称(&amp;N)：</translation>
-    </message>
-    <message>
-        <source>&amp;Language:</source>
-        <translation>语言(&amp;L)：</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::BuildController</name>
-    <message>
-        <source>%1 Hint: %2</source>
-        <translation>%1 提示：%2</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::DocumentArea</name>
-    <message>
-        <source>This body is written in %1. Its editor is not available in this version; the body is kept unchanged when the project is saved.</source>
-        <translation>此程序体使用 %1 编写。本版本尚未提供该语言的编辑器；保存项目时程序体保持不变。</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::MainWindow</name>
-    <message>
-        <source>&amp;File</source>
-        <translation>文件(&amp;F)</translation>
-    </message>
-    <message>
-        <source>&amp;Edit</source>
-        <translation>编辑(&amp;E)</translation>
-    </message>
-    <message>
-        <source>&amp;View</source>
-        <translation>视图(&amp;V)</translation>
-    </message>
-    <message>
-        <source>&amp;Project</source>
-        <translation>项目(&amp;P)</translation>
-    </message>
-    <message>
-        <source>&amp;Online</source>
-        <translation>在线(&amp;O)</translation>
-    </message>
-    <message>
-        <source>&amp;Help</source>
-        <translation>帮助(&amp;H)</translation>
-    </message>
-    <message>
-        <source>&amp;Quit</source>
-        <translation>退出(&amp;Q)</translation>
-    </message>
-    <message>
-        <source>&amp;Build</source>
-        <translation>编译(&amp;B)</translation>
-    </message>
-    <message>
-        <source>Login and &amp;Run</source>
-        <translation>登录并运行(&amp;R)</translation>
-    </message>
-    <message>
-        <source>&amp;Stop</source>
-        <translation>停止(&amp;S)</translation>
-    </message>
-    <message>
-        <source>Single &amp;Cycle</source>
-        <translation>单周期(&amp;C)</translation>
-    </message>
-    <message>
-        <source>&amp;About IEC Studio</source>
-        <translation>关于 IEC Studio(&amp;A)</translation>
-    </message>
-    <message>
-        <source>About &amp;Qt</source>
-        <translation>关于 &amp;Qt</translation>
-    </message>
-    <message>
-        <source>Project</source>
-        <translation>项目</translation>
-    </message>
-    <message>
-        <source>Messages</source>
-        <translation>消息</translation>
-    </message>
-    <message>
-        <source>About IEC Studio</source>
-        <translation>关于 IEC Studio</translation>
-    </message>
-    <message>
-        <source>&lt;h3&gt;IEC Studio %1&lt;/h3&gt;&lt;p&gt;An IDE for the five IEC 61131-3 languages: Ladder Diagram, Function Block Diagram with CFC, Sequential Function Chart, Instruction List and Structured Text.&lt;/p&gt;&lt;p&gt;Projects are stored as PLCopen TC6 XML v2.01.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;IEC Studio %1&lt;/h3&gt;&lt;p&gt;面向 IEC 61131-3 五种编程语言的集成开发环境：梯形图、功能块图(含 CFC)、顺序功能图、指令表和结构化文本。&lt;/p&gt;&lt;p&gt;项目以 PLCopen TC6 XML v2.01 格式保存。&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <source>&amp;Settings...</source>
-        <translation>设置(&amp;S)...</translation>
-    </message>
-    <message>
-        <source>&amp;New Project</source>
-        <translation>新建项目(&amp;N)</translation>
-    </message>
-    <message>
-        <source>&amp;Open...</source>
-        <translation>打开(&amp;O)...</translation>
-    </message>
-    <message>
-        <source>&amp;Save</source>
-        <translation>保存(&amp;S)</translation>
-    </message>
-    <message>
-        <source>Save &amp;As...</source>
-        <translation>另存为(&amp;A)...</translation>
-    </message>
-    <message>
-        <source>Untitled</source>
-        <translation>未命名</translation>
-    </message>
-    <message>
-        <source>%1[*] - IEC Studio</source>
-        <translation>%1[*] - IEC Studio</translation>
-    </message>
-    <message>
-        <source>%1 is not a PLCopen XML project.</source>
-        <translation>%1 不是 PLCopen XML 项目。</translation>
-    </message>
-    <message>
-        <source>Unsaved Changes</source>
-        <translation>未保存的更改</translation>
-    </message>
-    <message>
-        <source>The project has unsaved changes. Save them first?</source>
-        <translation>项目有未保存的更改。是否先保存？</translation>
-    </message>
-    <message>
-        <source>Open Project</source>
-        <translation>打开项目</translation>
-    </message>
-    <message>
-        <source>PLCopen XML projects (*.xml);;All files (*)</source>
-        <translation>PLCopen XML 项目 (*.xml);;所有文件 (*)</translation>
-    </message>
-    <message>
-        <source>The project could not be opened: %1</source>
-        <translation>无法打开项目：%1</translation>
-    </message>
-    <message>
-        <source>Save Project</source>
-        <translation>保存项目</translation>
-    </message>
-    <message>
-        <source>The project could not be saved: %1</source>
-        <translation>无法保存项目：%1</translation>
-    </message>
-    <message>
-        <source>Save Project As</source>
-        <translation>项目另存为</translation>
-    </message>
-    <message>
-        <source>PLCopen XML projects (*.xml)</source>
-        <translation>PLCopen XML 项目 (*.xml)</translation>
-    </message>
-    <message>
-        <source>&amp;Insert</source>
-        <translation>插入(&amp;I)</translation>
-    </message>
-    <message>
-        <source>&amp;Window</source>
-        <translation>窗口(&amp;W)</translation>
-    </message>
-    <message>
-        <source>Recent &amp;Projects</source>
-        <translation>最近的项目(&amp;P)</translation>
-    </message>
-    <message>
-        <source>&amp;Examples</source>
-        <translation>示例(&amp;E)</translation>
-    </message>
-    <message>
-        <source>Toolbar</source>
-        <translation>工具栏</translation>
-    </message>
-    <message>
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
-    </message>
-    <message>
-        <source>Autosave failed: %1</source>
-        <translation>自动保存失败：%1</translation>
-    </message>
-    <message>
-        <source>%1 does not exist any more; it was removed from the recent projects.</source>
-        <translation>%1 已不存在，已从最近的项目中移除。</translation>
-    </message>
-    <message>
-        <source>(untitled)</source>
-        <translation>(未命名)</translation>
-    </message>
-    <message>
-        <source>Recover Project</source>
-        <translation>恢复项目</translation>
-    </message>
-    <message>
-        <source>IEC Studio did not close properly. Recover the autosaved changes?</source>
-        <translation>IEC Studio 未正常关闭。是否恢复自动保存的更改？</translation>
-    </message>
-    <message>
-        <source>Project: %1
+    <context>
+        <name>ImportExport</name>
+        <message>
+            <source>%1 is not a PLCopen XML project.</source>
+            <translation>%1 不是 PLCopen XML 项目。</translation>
+        </message>
+        <message>
+            <source>%1 cannot be read: %2</source>
+            <translation>无法读取 %1：%2</translation>
+        </message>
+        <message>
+            <source>%1 exists already; the imported one is named %2.</source>
+            <translation>%1 已存在；导入的对象命名为 %2。</translation>
+        </message>
+        <message>
+            <source>The imported configurations were left out; the project keeps its own.</source>
+            <translation>导入的配置未被合并；项目保留其自身的配置。</translation>
+        </message>
+        <message numerus="yes">
+            <source>Import %n object(s)</source>
+            <translation>
+                <numerusform>导入 %n 个对象</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>%1 cannot be written: %2</source>
+            <translation>无法写入 %1：%2</translation>
+        </message>
+    </context>
+    <context>
+        <name>ModelCompletionProvider</name>
+        <message>
+            <source>Global variables</source>
+            <translation>全局变量</translation>
+        </message>
+        <message>
+            <source>Local variables</source>
+            <translation>局部变量</translation>
+        </message>
+        <message>
+            <source>Programs</source>
+            <translation>程序</translation>
+        </message>
+        <message>
+            <source>Function blocks</source>
+            <translation>功能块</translation>
+        </message>
+        <message>
+            <source>Functions</source>
+            <translation>函数</translation>
+        </message>
+    </context>
+    <context>
+        <name>NameRules</name>
+        <message>
+            <source>Enter a name.</source>
+            <translation>请输入名称。</translation>
+        </message>
+        <message>
+            <source>"%1" is not an IEC identifier: use letters, digits and single underscores, starting with a letter or an underscore and not ending with an underscore.</source>
+            <translation>"%1" 不是 IEC 标识符：只能使用字母、数字和单个下划线，以字母或下划线开头，且不能以下划线结尾。</translation>
+        </message>
+        <message>
+            <source>"%1" is a reserved word of IEC 61131-3.</source>
+            <translation>"%1" 是 IEC 61131-3 的保留字。</translation>
+        </message>
+        <message>
+            <source>A POU or data type named "%1" exists already.</source>
+            <translation>名为 "%1" 的 POU 或数据类型已存在。</translation>
+        </message>
+        <message>
+            <source>This POU has an action or transition named "%1" already.</source>
+            <translation>此 POU 已有名为 "%1" 的动作或转换。</translation>
+        </message>
+    </context>
+    <context>
+        <name>ProjectCommands</name>
+        <message>
+            <source>A function needs a return type.</source>
+            <translation>函数需要返回类型。</translation>
+        </message>
+        <message>
+            <source>The POU does not exist any more.</source>
+            <translation>该程序组织单元已不存在。</translation>
+        </message>
+        <message>
+            <source>The item does not exist any more.</source>
+            <translation>该项已不存在。</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::AddPouDialog</name>
+        <message>
+            <source>Add POU</source>
+            <translation>添加 POU</translation>
+        </message>
+        <message>
+            <source>Program</source>
+            <translation>程序</translation>
+        </message>
+        <message>
+            <source>Function Block</source>
+            <translation>功能块</translation>
+        </message>
+        <message>
+            <source>Function</source>
+            <translation>函数</translation>
+        </message>
+        <message>
+            <source>&amp;Name:</source>
+            <translation>名称(&amp;N)：</translation>
+        </message>
+        <message>
+            <source>&amp;Kind:</source>
+            <translation>类型(&amp;K)：</translation>
+        </message>
+        <message>
+            <source>&amp;Language:</source>
+            <translation>语言(&amp;L)：</translation>
+        </message>
+        <message>
+            <source>&amp;Return type:</source>
+            <translation>返回类型(&amp;R)：</translation>
+        </message>
+        <message>
+            <source>A function needs a return type.</source>
+            <translation>函数需要返回类型。</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::AddPouPartDialog</name>
+        <message>
+            <source>Add Action</source>
+            <translation>添加动作</translation>
+        </message>
+        <message>
+            <source>Add Transition</source>
+            <translation>添加转换</translation>
+        </message>
+        <message>
+            <source>&amp;Name:</source>
+            <translation>名称(&amp;N)：</translation>
+        </message>
+        <message>
+            <source>&amp;Language:</source>
+            <translation>语言(&amp;L)：</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::AutoDeclare</name>
+        <message>
+            <source>The POU does not exist any more.</source>
+            <translation>该程序组织单元已不存在。</translation>
+        </message>
+        <message>
+            <source>Declare %1</source>
+            <translation>声明 %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::AutoDeclareDialog</name>
+        <message>
+            <source>Declare Variable</source>
+            <translation>声明变量</translation>
+        </message>
+        <message>
+            <source>&amp;Name:</source>
+            <translation>名称(&amp;N)：</translation>
+        </message>
+        <message>
+            <source>&amp;Class:</source>
+            <translation>类别(&amp;C)：</translation>
+        </message>
+        <message>
+            <source>&amp;Type:</source>
+            <translation>类型(&amp;T)：</translation>
+        </message>
+        <message>
+            <source>&amp;Initial value:</source>
+            <translation>初始值(&amp;I)：</translation>
+        </message>
+        <message>
+            <source>C&amp;omment:</source>
+            <translation>注释(&amp;O)：</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::BuildController</name>
+        <message>
+            <source>%1 Hint: %2</source>
+            <translation>%1 提示：%2</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::DocumentArea</name>
+        <message>
+            <source>This body is written in %1. Its editor is not available in this version; the body is kept unchanged when the project is saved.</source>
+            <translation>此程序体使用 %1 编写。本版本尚未提供该语言的编辑器；保存项目时程序体保持不变。</translation>
+        </message>
+        <message>
+            <source>Declare Variable...</source>
+            <translation>声明变量...</translation>
+        </message>
+        <message>
+            <source>%1 is declared already.</source>
+            <translation>%1 已经声明。</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::ImportExportActions</name>
+        <message>
+            <source>&amp;Import...</source>
+            <translation>导入(&amp;I)...</translation>
+        </message>
+        <message>
+            <source>&amp;Export Project...</source>
+            <translation>导出项目(&amp;E)...</translation>
+        </message>
+        <message>
+            <source>Export Se&amp;lection...</source>
+            <translation>导出所选(&amp;L)...</translation>
+        </message>
+        <message>
+            <source>Imported %1: %2 POU(s), %3 data type(s).</source>
+            <translation>已导入 %1：%2 个程序组织单元，%3 个数据类型。</translation>
+        </message>
+        <message>
+            <source>Nothing could be read from %1.</source>
+            <translation>无法从 %1 读取任何内容。</translation>
+        </message>
+        <message>
+            <source>Import</source>
+            <translation>导入</translation>
+        </message>
+        <message>
+            <source>PLCopen XML or IEC text (*.xml *.st *.iec *.txt);;PLCopen XML (*.xml);;IEC 61131-3 text (*.st *.iec *.txt)</source>
+            <translation>PLCopen XML 或 IEC 文本 (*.xml *.st *.iec *.txt);;PLCopen XML (*.xml);;IEC 61131-3 文本 (*.st *.iec *.txt)</translation>
+        </message>
+        <message>
+            <source>PLCopen XML (*.xml)</source>
+            <translation>PLCopen XML (*.xml)</translation>
+        </message>
+        <message>
+            <source>IEC 61131-3 text (*.st)</source>
+            <translation>IEC 61131-3 文本 (*.st)</translation>
+        </message>
+        <message>
+            <source>Export</source>
+            <translation>导出</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::MainWindow</name>
+        <message>
+            <source>&amp;File</source>
+            <translation>文件(&amp;F)</translation>
+        </message>
+        <message>
+            <source>&amp;Edit</source>
+            <translation>编辑(&amp;E)</translation>
+        </message>
+        <message>
+            <source>&amp;View</source>
+            <translation>视图(&amp;V)</translation>
+        </message>
+        <message>
+            <source>&amp;Project</source>
+            <translation>项目(&amp;P)</translation>
+        </message>
+        <message>
+            <source>&amp;Online</source>
+            <translation>在线(&amp;O)</translation>
+        </message>
+        <message>
+            <source>&amp;Help</source>
+            <translation>帮助(&amp;H)</translation>
+        </message>
+        <message>
+            <source>&amp;Quit</source>
+            <translation>退出(&amp;Q)</translation>
+        </message>
+        <message>
+            <source>&amp;Build</source>
+            <translation>编译(&amp;B)</translation>
+        </message>
+        <message>
+            <source>Login and &amp;Run</source>
+            <translation>登录并运行(&amp;R)</translation>
+        </message>
+        <message>
+            <source>&amp;Stop</source>
+            <translation>停止(&amp;S)</translation>
+        </message>
+        <message>
+            <source>Single &amp;Cycle</source>
+            <translation>单周期(&amp;C)</translation>
+        </message>
+        <message>
+            <source>&amp;About IEC Studio</source>
+            <translation>关于 IEC Studio(&amp;A)</translation>
+        </message>
+        <message>
+            <source>About &amp;Qt</source>
+            <translation>关于 &amp;Qt</translation>
+        </message>
+        <message>
+            <source>Project</source>
+            <translation>项目</translation>
+        </message>
+        <message>
+            <source>Messages</source>
+            <translation>消息</translation>
+        </message>
+        <message>
+            <source>About IEC Studio</source>
+            <translation>关于 IEC Studio</translation>
+        </message>
+        <message>
+            <source>&lt;h3&gt;IEC Studio %1&lt;/h3&gt;&lt;p&gt;An IDE for the five IEC 61131-3 languages: Ladder Diagram, Function Block Diagram with CFC, Sequential Function Chart, Instruction List and Structured Text.&lt;/p&gt;&lt;p&gt;Projects are stored as PLCopen TC6 XML v2.01.&lt;/p&gt;</source>
+            <translation>&lt;h3&gt;IEC Studio %1&lt;/h3&gt;&lt;p&gt;面向 IEC 61131-3 五种编程语言的集成开发环境：梯形图、功能块图(含 CFC)、顺序功能图、指令表和结构化文本。&lt;/p&gt;&lt;p&gt;项目以 PLCopen TC6 XML v2.01 格式保存。&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>&amp;Settings...</source>
+            <translation>设置(&amp;S)...</translation>
+        </message>
+        <message>
+            <source>&amp;New Project</source>
+            <translation>新建项目(&amp;N)</translation>
+        </message>
+        <message>
+            <source>&amp;Open...</source>
+            <translation>打开(&amp;O)...</translation>
+        </message>
+        <message>
+            <source>&amp;Save</source>
+            <translation>保存(&amp;S)</translation>
+        </message>
+        <message>
+            <source>Save &amp;As...</source>
+            <translation>另存为(&amp;A)...</translation>
+        </message>
+        <message>
+            <source>Untitled</source>
+            <translation>未命名</translation>
+        </message>
+        <message>
+            <source>%1[*] - IEC Studio</source>
+            <translation>%1[*] - IEC Studio</translation>
+        </message>
+        <message>
+            <source>%1 is not a PLCopen XML project.</source>
+            <translation>%1 不是 PLCopen XML 项目。</translation>
+        </message>
+        <message>
+            <source>Unsaved Changes</source>
+            <translation>未保存的更改</translation>
+        </message>
+        <message>
+            <source>The project has unsaved changes. Save them first?</source>
+            <translation>项目有未保存的更改。是否先保存？</translation>
+        </message>
+        <message>
+            <source>Open Project</source>
+            <translation>打开项目</translation>
+        </message>
+        <message>
+            <source>PLCopen XML projects (*.xml);;All files (*)</source>
+            <translation>PLCopen XML 项目 (*.xml);;所有文件 (*)</translation>
+        </message>
+        <message>
+            <source>The project could not be opened: %1</source>
+            <translation>无法打开项目：%1</translation>
+        </message>
+        <message>
+            <source>Save Project</source>
+            <translation>保存项目</translation>
+        </message>
+        <message>
+            <source>The project could not be saved: %1</source>
+            <translation>无法保存项目：%1</translation>
+        </message>
+        <message>
+            <source>Save Project As</source>
+            <translation>项目另存为</translation>
+        </message>
+        <message>
+            <source>PLCopen XML projects (*.xml)</source>
+            <translation>PLCopen XML 项目 (*.xml)</translation>
+        </message>
+        <message>
+            <source>&amp;Insert</source>
+            <translation>插入(&amp;I)</translation>
+        </message>
+        <message>
+            <source>&amp;Window</source>
+            <translation>窗口(&amp;W)</translation>
+        </message>
+        <message>
+            <source>Recent &amp;Projects</source>
+            <translation>最近的项目(&amp;P)</translation>
+        </message>
+        <message>
+            <source>&amp;Examples</source>
+            <translation>示例(&amp;E)</translation>
+        </message>
+        <message>
+            <source>Toolbar</source>
+            <translation>工具栏</translation>
+        </message>
+        <message>
+            <source>%1 (%2)</source>
+            <translation>%1 (%2)</translation>
+        </message>
+        <message>
+            <source>Autosave failed: %1</source>
+            <translation>自动保存失败：%1</translation>
+        </message>
+        <message>
+            <source>%1 does not exist any more; it was removed from the recent projects.</source>
+            <translation>%1 已不存在，已从最近的项目中移除。</translation>
+        </message>
+        <message>
+            <source>(untitled)</source>
+            <translation>(未命名)</translation>
+        </message>
+        <message>
+            <source>Recover Project</source>
+            <translation>恢复项目</translation>
+        </message>
+        <message>
+            <source>IEC Studio did not close properly. Recover the autosaved changes?</source>
+            <translation>IEC Studio 未正常关闭。是否恢复自动保存的更改？</translation>
+        </message>
+        <message>
+            <source>Project: %1
 Autosaved: %2</source>
-        <translation>项目：%1
+            <translation>项目：%1
 自动保存于：%2</translation>
-    </message>
-    <message>
-        <source>&amp;Recover</source>
-        <translation>恢复(&amp;R)</translation>
-    </message>
-    <message>
-        <source>Ask &amp;Later</source>
-        <translation>稍后询问(&amp;L)</translation>
-    </message>
-    <message>
-        <source>The project could not be recovered: %1</source>
-        <translation>无法恢复项目：%1</translation>
-    </message>
-    <message>
-        <source>Build finished. Errors: %1, warnings: %2.</source>
-        <translation>编译完成。错误：%1，警告：%2。</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::MessagesPane</name>
-    <message>
-        <source>%1, line %2, column %3</source>
-        <translation>%1，第 %2 行，第 %3 列</translation>
-    </message>
-    <message>
-        <source>%1, line %2</source>
-        <translation>%1，第 %2 行</translation>
-    </message>
-    <message>
-        <source>%1, element %2</source>
-        <translation>%1，元素 %2</translation>
-    </message>
-    <message>
-        <source>Info</source>
-        <translation>信息</translation>
-    </message>
-    <message>
-        <source>Warning</source>
-        <translation>警告</translation>
-    </message>
-    <message>
-        <source>Error</source>
-        <translation>错误</translation>
-    </message>
-    <message>
-        <source>Severity</source>
-        <translation>级别</translation>
-    </message>
-    <message>
-        <source>Description</source>
-        <translation>描述</translation>
-    </message>
-    <message>
-        <source>Location</source>
-        <translation>位置</translation>
-    </message>
-    <message>
-        <source>Errors: %1, warnings: %2</source>
-        <translation>错误：%1，警告：%2</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::ProjectTreeActions</name>
-    <message>
-        <source>Add &amp;POU...</source>
-        <translation>添加 POU(&amp;P)...</translation>
-    </message>
-    <message>
-        <source>Add &amp;Action...</source>
-        <translation>添加动作(&amp;A)...</translation>
-    </message>
-    <message>
-        <source>Add &amp;Transition...</source>
-        <translation>添加转换(&amp;T)...</translation>
-    </message>
-    <message>
-        <source>&amp;Rename...</source>
-        <translation>重命名(&amp;R)...</translation>
-    </message>
-    <message>
-        <source>&amp;Delete</source>
-        <translation>删除(&amp;D)</translation>
-    </message>
-    <message>
-        <source>D&amp;uplicate</source>
-        <translation>复制(&amp;U)</translation>
-    </message>
-    <message>
-        <source>Add POU</source>
-        <translation>添加 POU</translation>
-    </message>
-    <message>
-        <source>Rename %1</source>
-        <translation>重命名 %1</translation>
-    </message>
-    <message>
-        <source>Delete</source>
-        <translation>删除</translation>
-    </message>
-    <message>
-        <source>Delete %1? Edit → Undo brings it back.</source>
-        <translation>删除 %1？可通过 编辑 → 撤销 恢复。</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::ProjectTreeModel</name>
-    <message>
-        <source>Programs</source>
-        <translation>程序</translation>
-    </message>
-    <message>
-        <source>Function Blocks</source>
-        <translation>功能块</translation>
-    </message>
-    <message>
-        <source>Functions</source>
-        <translation>函数</translation>
-    </message>
-    <message>
-        <source>Data Types</source>
-        <translation>数据类型</translation>
-    </message>
-    <message>
-        <source>Global Variables</source>
-        <translation>全局变量</translation>
-    </message>
-    <message>
-        <source>Configurations</source>
-        <translation>配置</translation>
-    </message>
-    <message>
-        <source>%1 (PRG)</source>
-        <translation>%1 (PRG)</translation>
-    </message>
-    <message>
-        <source>%1 (FB)</source>
-        <translation>%1 (FB)</translation>
-    </message>
-    <message>
-        <source>%1 (FUN)</source>
-        <translation>%1 (FUN)</translation>
-    </message>
-    <message>
-        <source>%1, written in %2</source>
-        <translation>%1，使用 %2 编写</translation>
-    </message>
-    <message>
-        <source>Structured Text (ST)</source>
-        <translation>结构化文本 (ST)</translation>
-    </message>
-    <message>
-        <source>Instruction List (IL)</source>
-        <translation>指令表 (IL)</translation>
-    </message>
-    <message>
-        <source>Ladder Diagram (LD)</source>
-        <translation>梯形图 (LD)</translation>
-    </message>
-    <message>
-        <source>Function Block Diagram (FBD)</source>
-        <translation>功能块图 (FBD)</translation>
-    </message>
-    <message>
-        <source>Sequential Function Chart (SFC)</source>
-        <translation>顺序功能图 (SFC)</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::RecentFilesMenu</name>
-    <message>
-        <source>(none)</source>
-        <translation>(无)</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::RecoveryManager</name>
-    <message>
-        <source>Cannot create the folder %1.</source>
-        <translation>无法创建文件夹 %1。</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::RenameDialog</name>
-    <message>
-        <source>Rename %1</source>
-        <translation>重命名 %1</translation>
-    </message>
-    <message>
-        <source>&amp;New name:</source>
-        <translation>新名称(&amp;N)：</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::SettingsDialog</name>
-    <message>
-        <source>Settings</source>
-        <translation>设置</translation>
-    </message>
-    <message>
-        <source>System language</source>
-        <translation>系统语言</translation>
-    </message>
-    <message>
-        <source> pt</source>
-        <translation> 磅</translation>
-    </message>
-    <message>
-        <source> px</source>
-        <translation> 像素</translation>
-    </message>
-    <message>
-        <source> min</source>
-        <translation> 分钟</translation>
-    </message>
-    <message>
-        <source>Off</source>
-        <translation>关闭</translation>
-    </message>
-    <message>
-        <source>User interface language:</source>
-        <translation>界面语言：</translation>
-    </message>
-    <message>
-        <source>Editor font:</source>
-        <translation>编辑器字体：</translation>
-    </message>
-    <message>
-        <source>Editor font size:</source>
-        <translation>编辑器字号：</translation>
-    </message>
-    <message>
-        <source>Diagram grid size:</source>
-        <translation>图形网格大小：</translation>
-    </message>
-    <message>
-        <source>Autosave every:</source>
-        <translation>自动保存间隔：</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::UndoActions</name>
-    <message>
-        <source>&amp;Undo Typing</source>
-        <translation>撤销输入(&amp;U)</translation>
-    </message>
-    <message>
-        <source>&amp;Redo Typing</source>
-        <translation>重做输入(&amp;R)</translation>
-    </message>
-    <message>
-        <source>&amp;Undo %1</source>
-        <translation>撤销 %1(&amp;U)</translation>
-    </message>
-    <message>
-        <source>&amp;Undo</source>
-        <translation>撤销(&amp;U)</translation>
-    </message>
-    <message>
-        <source>&amp;Redo %1</source>
-        <translation>重做 %1(&amp;R)</translation>
-    </message>
-    <message>
-        <source>&amp;Redo</source>
-        <translation>重做(&amp;R)</translation>
-    </message>
-</context>
-<context>
-    <name>iec::app::WindowMenu</name>
-    <message>
-        <source>&amp;Next Document</source>
-        <translation>下一个文档(&amp;N)</translation>
-    </message>
-    <message>
-        <source>&amp;Previous Document</source>
-        <translation>上一个文档(&amp;P)</translation>
-    </message>
-    <message>
-        <source>&amp;Close All Documents</source>
-        <translation>关闭所有文档(&amp;C)</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::AliasPage</name>
-    <message>
-        <source>Base type:</source>
-        <translation>基本类型：</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::ArrayPage</name>
-    <message>
-        <source>Low</source>
-        <translation>下限</translation>
-    </message>
-    <message>
-        <source>High</source>
-        <translation>上限</translation>
-    </message>
-    <message>
-        <source>Dimensions</source>
-        <translation>维数</translation>
-    </message>
-    <message>
-        <source>Element type:</source>
-        <translation>元素类型：</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::CodeEditor</name>
-    <message>
-        <source>Go to Definition</source>
-        <translation>转到定义</translation>
-    </message>
-    <message>
-        <source>Complete</source>
-        <translation>自动完成</translation>
-    </message>
-    <message>
-        <source>Input Assistant...</source>
-        <translation>输入助手...</translation>
-    </message>
-    <message>
-        <source>Toggle Comment</source>
-        <translation>切换注释</translation>
-    </message>
-    <message>
-        <source>Fold All</source>
-        <translation>全部折叠</translation>
-    </message>
-    <message>
-        <source>Unfold All</source>
-        <translation>全部展开</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::DataTypeEditor</name>
-    <message>
-        <source>Name:</source>
-        <translation>名称：</translation>
-    </message>
-    <message>
-        <source>Kind:</source>
-        <translation>类别：</translation>
-    </message>
-    <message>
-        <source>Initial value:</source>
-        <translation>初始值：</translation>
-    </message>
-    <message>
-        <source>(the default of the type)</source>
-        <translation>(该类型的默认值)</translation>
-    </message>
-    <message>
-        <source>Structure</source>
-        <translation>结构体</translation>
-    </message>
-    <message>
-        <source>Enumeration</source>
-        <translation>枚举</translation>
-    </message>
-    <message>
-        <source>Array</source>
-        <translation>数组</translation>
-    </message>
-    <message>
-        <source>Subrange</source>
-        <translation>子范围</translation>
-    </message>
-    <message>
-        <source>Alias</source>
-        <translation>别名</translation>
-    </message>
-    <message>
-        <source>String</source>
-        <translation>字符串</translation>
-    </message>
-    <message>
-        <source>IEC text:</source>
-        <translation>IEC 文本：</translation>
-    </message>
-    <message>
-        <source>IEC text as last applied (correct the marked fields to apply):</source>
-        <translation>最近一次应用的 IEC 文本(请更正标记的字段以应用)：</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::DataTypeValidator</name>
-    <message>
-        <source>A POU or data type named &quot;%1&quot; exists already.</source>
-        <translation>名为 &quot;%1&quot; 的 POU 或数据类型已存在。</translation>
-    </message>
-    <message>
-        <source>A structure needs at least one member.</source>
-        <translation>结构体至少需要一个成员。</translation>
-    </message>
-    <message>
-        <source>There is a member named &quot;%1&quot; already.</source>
-        <translation>已有名为 &quot;%1&quot; 的成员。</translation>
-    </message>
-    <message>
-        <source>An enumeration needs at least one value.</source>
-        <translation>枚举至少需要一个值。</translation>
-    </message>
-    <message>
-        <source>The value &quot;%1&quot; is listed already.</source>
-        <translation>值 &quot;%1&quot; 已列出。</translation>
-    </message>
-    <message>
-        <source>Enter a whole number, or leave it empty.</source>
-        <translation>请输入整数，或留空。</translation>
-    </message>
-    <message>
-        <source>An array needs at least one dimension.</source>
-        <translation>数组至少需要一个维。</translation>
-    </message>
-    <message>
-        <source>Enter a length from 1 to 65535, or leave it empty for the default.</source>
-        <translation>请输入 1 到 65535 之间的长度，或留空使用默认值。</translation>
-    </message>
-    <message>
-        <source>Choose an integer type such as INT, DINT or UINT.</source>
-        <translation>请选择整数类型，如 INT、DINT 或 UINT。</translation>
-    </message>
-    <message>
-        <source>The upper bound %1 is less than the lower bound %2.</source>
-        <translation>上限 %1 小于下限 %2。</translation>
-    </message>
-    <message>
-        <source>Enter a bound.</source>
-        <translation>请输入边界。</translation>
-    </message>
-    <message>
-        <source>Enter a whole number or the name of a constant.</source>
-        <translation>请输入整数或常量名称。</translation>
-    </message>
-    <message>
-        <source>Enter a type.</source>
-        <translation>请输入类型。</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is not a type.</source>
-        <translation>&quot;%1&quot; 不是类型。</translation>
-    </message>
-    <message>
-        <source>A type cannot contain itself.</source>
-        <translation>类型不能包含自身。</translation>
-    </message>
-    <message>
-        <source>Unknown type &quot;%1&quot;.</source>
-        <translation>未知类型 &quot;%1&quot;。</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is not a valid initial value.</source>
-        <translation>&quot;%1&quot; 不是有效的初始值。</translation>
-    </message>
-    <message>
-        <source>Enter a name.</source>
-        <translation>请输入名称。</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is not an IEC identifier: use letters, digits and single underscores, starting with a letter or an underscore and not ending with an underscore.</source>
-        <translation>&quot;%1&quot; 不是 IEC 标识符：只能使用字母、数字和单个下划线，以字母或下划线开头，且不能以下划线结尾。</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is a reserved word of IEC 61131-3.</source>
-        <translation>&quot;%1&quot; 是 IEC 61131-3 的保留字。</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::DeclarationEditor</name>
-    <message>
-        <source>Table</source>
-        <translation>表格</translation>
-    </message>
-    <message>
-        <source>Text</source>
-        <translation>文本</translation>
-    </message>
-    <message>
-        <source>Add Variable</source>
-        <translation>添加变量</translation>
-    </message>
-    <message>
-        <source>Remove</source>
-        <translation>删除</translation>
-    </message>
-    <message>
-        <source>Move Up</source>
-        <translation>上移</translation>
-    </message>
-    <message>
-        <source>Move Down</source>
-        <translation>下移</translation>
-    </message>
-    <message>
-        <source>Row %1: %2</source>
-        <translation>第 %1 行：%2</translation>
-    </message>
-    <message>
-        <source>Line %1, column %2: %3</source>
-        <translation>第 %1 行，第 %2 列：%3</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::DeclarationRows</name>
-    <message>
-        <source>&quot;%1&quot; is not a variable class.</source>
-        <translation>&quot;%1&quot; 不是变量类别。</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is not a data type.</source>
-        <translation>&quot;%1&quot; 不是数据类型。</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is not an initial value for %2.</source>
-        <translation>&quot;%1&quot; 不是 %2 的初始值。</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::DeclarationTableModel</name>
-    <message>
-        <source>Name</source>
-        <translation>名称</translation>
-    </message>
-    <message>
-        <source>Class</source>
-        <translation>类别</translation>
-    </message>
-    <message>
-        <source>Type</source>
-        <translation>类型</translation>
-    </message>
-    <message>
-        <source>Initial Value</source>
-        <translation>初始值</translation>
-    </message>
-    <message>
-        <source>Address</source>
-        <translation>地址</translation>
-    </message>
-    <message>
-        <source>Comment</source>
-        <translation>注释</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::DeclarationText</name>
-    <message>
-        <source>VAR_ACCESS and VAR_CONFIG belong in a configuration, not in a POU.</source>
-        <translation>VAR_ACCESS 和 VAR_CONFIG 属于配置，而不属于 POU。</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is not a valid name: use letters, digits and single underscores, and no keyword.</source>
-        <translation>&quot;%1&quot; 不是有效的名称：请使用字母、数字和单个下划线，且不能是关键字。</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; is not an address such as %IX0.0, %QW3 or %MD10.</source>
-        <translation>&quot;%1&quot; 不是地址(例如 %IX0.0、%QW3 或 %MD10)。</translation>
-    </message>
-    <message>
-        <source>%1 is declared twice.</source>
-        <translation>%1 被声明了两次。</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::EnumPage</name>
-    <message>
-        <source>Name</source>
-        <translation>名称</translation>
-    </message>
-    <message>
-        <source>Value (optional)</source>
-        <translation>值(可选)</translation>
-    </message>
-    <message>
-        <source>Values</source>
-        <translation>值</translation>
-    </message>
-    <message>
-        <source>Base type (optional):</source>
-        <translation>基本类型(可选)：</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::FindReplaceBar</name>
-    <message>
-        <source>Find</source>
-        <translation>查找</translation>
-    </message>
-    <message>
-        <source>Replace with</source>
-        <translation>替换为</translation>
-    </message>
-    <message>
-        <source>Match case</source>
-        <translation>区分大小写</translation>
-    </message>
-    <message>
-        <source>Whole words</source>
-        <translation>全字匹配</translation>
-    </message>
-    <message>
-        <source>Previous</source>
-        <translation>上一个</translation>
-    </message>
-    <message>
-        <source>Next</source>
-        <translation>下一个</translation>
-    </message>
-    <message>
-        <source>Replace</source>
-        <translation>替换</translation>
-    </message>
-    <message>
-        <source>Replace All</source>
-        <translation>全部替换</translation>
-    </message>
-    <message>
-        <source>Close</source>
-        <translation>关闭</translation>
-    </message>
-    <message>
-        <source>Find:</source>
-        <translation>查找：</translation>
-    </message>
-    <message>
-        <source>Replace:</source>
-        <translation>替换：</translation>
-    </message>
-    <message>
-        <source>Not found</source>
-        <translation>未找到</translation>
-    </message>
-    <message>
-        <source>Search wrapped</source>
-        <translation>已从头继续查找</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n replaced</source>
-        <translation>
-            <numerusform>已替换 %n 处</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::InputAssistantDialog</name>
-    <message>
-        <source>Input Assistant</source>
-        <translation>输入助手</translation>
-    </message>
-    <message>
-        <source>Operators</source>
-        <translation>运算符</translation>
-    </message>
-    <message>
-        <source>Operands</source>
-        <translation>操作数</translation>
-    </message>
-    <message>
-        <source>Functions</source>
-        <translation>函数</translation>
-    </message>
-    <message>
-        <source>Function blocks</source>
-        <translation>功能块</translation>
-    </message>
-    <message>
-        <source>Filter</source>
-        <translation>筛选</translation>
-    </message>
-    <message>
-        <source>Name</source>
-        <translation>名称</translation>
-    </message>
-    <message>
-        <source>Description</source>
-        <translation>描述</translation>
-    </message>
-    <message>
-        <source>IL operators</source>
-        <translation>IL 运算符</translation>
-    </message>
-    <message>
-        <source>ST operators</source>
-        <translation>ST 运算符</translation>
-    </message>
-    <message>
-        <source>Variables</source>
-        <translation>变量</translation>
-    </message>
-    <message>
-        <source>Boolean constants</source>
-        <translation>布尔常量</translation>
-    </message>
-    <message>
-        <source>User-defined functions</source>
-        <translation>用户定义的函数</translation>
-    </message>
-    <message>
-        <source>User-defined function blocks</source>
-        <translation>用户定义的功能块</translation>
-    </message>
-    <message>
-        <source>Programs</source>
-        <translation>程序</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::RowTable</name>
-    <message>
-        <source>Add</source>
-        <translation>添加</translation>
-    </message>
-    <message>
-        <source>Add a row below the current one</source>
-        <translation>在当前行下方添加一行</translation>
-    </message>
-    <message>
-        <source>Remove</source>
-        <translation>删除</translation>
-    </message>
-    <message>
-        <source>Remove the current row</source>
-        <translation>删除当前行</translation>
-    </message>
-    <message>
-        <source>Up</source>
-        <translation>上移</translation>
-    </message>
-    <message>
-        <source>Move the current row up</source>
-        <translation>将当前行上移</translation>
-    </message>
-    <message>
-        <source>Down</source>
-        <translation>下移</translation>
-    </message>
-    <message>
-        <source>Move the current row down</source>
-        <translation>将当前行下移</translation>
-    </message>
-    <message>
-        <source>Row %1, %2: %3</source>
-        <translation>第 %1 行，%2：%3</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::StandardLibrary</name>
-    <message>
-        <source>Arithmetic</source>
-        <translation>算术</translation>
-    </message>
-    <message>
-        <source>Numeric</source>
-        <translation>数值</translation>
-    </message>
-    <message>
-        <source>Bit shift</source>
-        <translation>移位</translation>
-    </message>
-    <message>
-        <source>Selection</source>
-        <translation>选择</translation>
-    </message>
-    <message>
-        <source>Comparison</source>
-        <translation>比较</translation>
-    </message>
-    <message>
-        <source>String</source>
-        <translation>字符串</translation>
-    </message>
-    <message>
-        <source>Type conversion</source>
-        <translation>类型转换</translation>
-    </message>
-    <message>
-        <source>Bistable</source>
-        <translation>双稳态</translation>
-    </message>
-    <message>
-        <source>Edge detection</source>
-        <translation>边沿检测</translation>
-    </message>
-    <message>
-        <source>Counters</source>
-        <translation>计数器</translation>
-    </message>
-    <message>
-        <source>Timers</source>
-        <translation>定时器</translation>
-    </message>
-    <message>
-        <source>Load the operand into the current result</source>
-        <translation>将操作数装入当前结果</translation>
-    </message>
-    <message>
-        <source>Store the current result in the operand</source>
-        <translation>将当前结果存入操作数</translation>
-    </message>
-    <message>
-        <source>Set the Boolean operand to TRUE if the current result is TRUE</source>
-        <translation>当前结果为 TRUE 时将布尔操作数置位为 TRUE</translation>
-    </message>
-    <message>
-        <source>Reset the Boolean operand to FALSE if the current result is TRUE</source>
-        <translation>当前结果为 TRUE 时将布尔操作数复位为 FALSE</translation>
-    </message>
-    <message>
-        <source>Bitwise AND</source>
-        <translation>按位与</translation>
-    </message>
-    <message>
-        <source>Bitwise OR</source>
-        <translation>按位或</translation>
-    </message>
-    <message>
-        <source>Bitwise exclusive OR</source>
-        <translation>按位异或</translation>
-    </message>
-    <message>
-        <source>Addition</source>
-        <translation>加法</translation>
-    </message>
-    <message>
-        <source>Subtraction</source>
-        <translation>减法</translation>
-    </message>
-    <message>
-        <source>Multiplication</source>
-        <translation>乘法</translation>
-    </message>
-    <message>
-        <source>Division</source>
-        <translation>除法</translation>
-    </message>
-    <message>
-        <source>Greater than (&gt;)</source>
-        <translation>大于 (&gt;)</translation>
-    </message>
-    <message>
-        <source>Greater than or equal (&gt;=)</source>
-        <translation>大于等于 (&gt;=)</translation>
-    </message>
-    <message>
-        <source>Equal (=)</source>
-        <translation>等于 (=)</translation>
-    </message>
-    <message>
-        <source>Not equal (&lt;&gt;)</source>
-        <translation>不等于 (&lt;&gt;)</translation>
-    </message>
-    <message>
-        <source>Less than or equal (&lt;=)</source>
-        <translation>小于等于 (&lt;=)</translation>
-    </message>
-    <message>
-        <source>Less than (&lt;)</source>
-        <translation>小于 (&lt;)</translation>
-    </message>
-    <message>
-        <source>Jump to the label</source>
-        <translation>跳转到标号</translation>
-    </message>
-    <message>
-        <source>Call a function block instance</source>
-        <translation>调用功能块实例</translation>
-    </message>
-    <message>
-        <source>Return to the calling POU</source>
-        <translation>返回调用它的 POU</translation>
-    </message>
-    <message>
-        <source>Evaluate the deferred operation</source>
-        <translation>计算被推迟的运算</translation>
-    </message>
-    <message>
-        <source>negated operand</source>
-        <translation>取反的操作数</translation>
-    </message>
-    <message>
-        <source>deferred until )</source>
-        <translation>推迟到 ) 执行</translation>
-    </message>
-    <message>
-        <source>only if the current result is TRUE</source>
-        <translation>仅当当前结果为 TRUE 时</translation>
-    </message>
-    <message>
-        <source>only if the current result is FALSE</source>
-        <translation>仅当当前结果为 FALSE 时</translation>
-    </message>
-    <message>
-        <source>Assignment</source>
-        <translation>赋值</translation>
-    </message>
-    <message>
-        <source>Modulo</source>
-        <translation>取模</translation>
-    </message>
-    <message>
-        <source>Negation</source>
-        <translation>取反</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::StringPage</name>
-    <message>
-        <source>Characters:</source>
-        <translation>字符：</translation>
-    </message>
-    <message>
-        <source>Length (optional):</source>
-        <translation>长度(可选)：</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::StructPage</name>
-    <message>
-        <source>Name</source>
-        <translation>名称</translation>
-    </message>
-    <message>
-        <source>Type</source>
-        <translation>类型</translation>
-    </message>
-    <message>
-        <source>Initial value</source>
-        <translation>初始值</translation>
-    </message>
-    <message>
-        <source>Comment</source>
-        <translation>注释</translation>
-    </message>
-    <message>
-        <source>Members</source>
-        <translation>成员</translation>
-    </message>
-</context>
-<context>
-    <name>iec::editors::SubrangePage</name>
-    <message>
-        <source>Base type:</source>
-        <translation>基本类型：</translation>
-    </message>
-    <message>
-        <source>Low:</source>
-        <translation>下限：</translation>
-    </message>
-    <message>
-        <source>High:</source>
-        <translation>上限：</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::AddDataTypeCommand</name>
-    <message>
-        <source>Add data type %1</source>
-        <translation>添加数据类型 %1</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::AddPouCommand</name>
-    <message>
-        <source>Add POU %1</source>
-        <translation>添加 POU %1</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::AddPouPartCommand</name>
-    <message>
-        <source>Add action %1</source>
-        <translation>添加动作 %1</translation>
-    </message>
-    <message>
-        <source>Add transition %1</source>
-        <translation>添加转换 %1</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::AddVariableCommand</name>
-    <message>
-        <source>Add variable %1</source>
-        <translation>添加变量 %1</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::ChangeDataTypeCommand</name>
-    <message>
-        <source>Change data type %1</source>
-        <translation>修改数据类型 %1</translation>
-    </message>
-    <message>
-        <source>Rename %1 to %2</source>
-        <translation>将 %1 重命名为 %2</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::ChangeElementCommand</name>
-    <message>
-        <source>Change %1</source>
-        <translation>修改 %1</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::ChangeVariableCommand</name>
-    <message>
-        <source>Change variable %1</source>
-        <translation>修改变量 %1</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::ConnectCommand</name>
-    <message>
-        <source>Connect</source>
-        <translation>连接</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::DisconnectCommand</name>
-    <message>
-        <source>Disconnect</source>
-        <translation>断开连接</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::DuplicatePouCommand</name>
-    <message>
-        <source>Duplicate POU as %1</source>
-        <translation>复制 POU 为 %1</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::InsertElementCommand</name>
-    <message>
-        <source>Insert %1</source>
-        <translation>插入 %1</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::MoveElementsCommand</name>
-    <message numerus="yes">
-        <source>Move %n element(s)</source>
-        <translation>
-            <numerusform>移动 %n 个元素</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::RemoveDataTypeCommand</name>
-    <message>
-        <source>Delete data type %1</source>
-        <translation>删除数据类型 %1</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::RemoveElementCommand</name>
-    <message>
-        <source>Delete %1</source>
-        <translation>删除 %1</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::RemovePouCommand</name>
-    <message>
-        <source>Delete POU %1</source>
-        <translation>删除 POU %1</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::RemovePouPartCommand</name>
-    <message>
-        <source>Delete action %1</source>
-        <translation>删除动作 %1</translation>
-    </message>
-    <message>
-        <source>Delete transition %1</source>
-        <translation>删除转换 %1</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::RemoveVariableCommand</name>
-    <message>
-        <source>Delete variable %1</source>
-        <translation>删除变量 %1</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::RenamePouCommand</name>
-    <message>
-        <source>Rename %1 to %2</source>
-        <translation>将 %1 重命名为 %2</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::RenamePouPartCommand</name>
-    <message>
-        <source>Rename %1 to %2</source>
-        <translation>将 %1 重命名为 %2</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::SetBodyTextCommand</name>
-    <message>
-        <source>Edit text</source>
-        <translation>编辑文本</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::SetInterfaceCommand</name>
-    <message>
-        <source>Edit declarations</source>
-        <translation>编辑声明</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::plcopen::Reader</name>
-    <message>
-        <source>The elements are nested too deeply; the content below is skipped.</source>
-        <translation>元素嵌套过深；其下的内容被跳过。</translation>
-    </message>
-    <message>
-        <source>The attribute %1=&quot;%2&quot; of &lt;%3&gt; has an invalid value; it is kept as written.</source>
-        <translation>&lt;%3&gt; 的属性 %1=&quot;%2&quot; 的值无效；按原样保留。</translation>
-    </message>
-    <message>
-        <source>&lt;%1&gt; lacks the required attribute &apos;%2&apos;.</source>
-        <translation>&lt;%1&gt; 缺少必需的属性 &apos;%2&apos;。</translation>
-    </message>
-    <message>
-        <source>&lt;%1&gt; lacks the required element &lt;%2&gt;.</source>
-        <translation>&lt;%1&gt; 缺少必需的元素 &lt;%2&gt;。</translation>
-    </message>
-    <message>
-        <source>Unknown attribute &apos;%1&apos; on &lt;%2&gt; is kept as it is.</source>
-        <translation>&lt;%2&gt; 上的未知属性 &apos;%1&apos; 按原样保留。</translation>
-    </message>
-    <message>
-        <source>Unknown attribute &apos;%1&apos; on &lt;%2&gt; is ignored.</source>
-        <translation>&lt;%2&gt; 上的未知属性 &apos;%1&apos; 被忽略。</translation>
-    </message>
-    <message>
-        <source>Unknown element &lt;%1&gt; in &lt;%2&gt; is kept as it is.</source>
-        <translation>&lt;%2&gt; 中的未知元素 &lt;%1&gt; 按原样保留。</translation>
-    </message>
-    <message>
-        <source>Unknown element &lt;%1&gt; in &lt;%2&gt; is ignored.</source>
-        <translation>&lt;%2&gt; 中的未知元素 &lt;%1&gt; 被忽略。</translation>
-    </message>
-    <message>
-        <source>A declaration in addData is nested too deeply to read; it is kept as it is.</source>
-        <translation>addData 中的声明嵌套过深，无法读取；按原样保留。</translation>
-    </message>
-    <message>
-        <source>&lt;%1&gt; names no data type.</source>
-        <translation>&lt;%1&gt; 没有指定数据类型。</translation>
-    </message>
-    <message>
-        <source>The data type &lt;%1&gt; is not in the PLCopen schema; it is kept by name.</source>
-        <translation>数据类型 &lt;%1&gt; 不属于 PLCopen 模式；按名称保留。</translation>
-    </message>
-    <message>
-        <source>The namespace &apos;%1&apos; is not PLCopen TC6 XML 2.01; the file is read anyway.</source>
-        <translation>命名空间 &apos;%1&apos; 不是 PLCopen TC6 XML 2.01；仍然读取该文件。</translation>
-    </message>
-    <message>
-        <source>The file is not well-formed XML: %1.</source>
-        <translation>该文件不是格式正确的 XML：%1。</translation>
-    </message>
-    <message>
-        <source>The root element is &lt;%1&gt;, not &lt;project&gt;: this is not a PLCopen XML file.</source>
-        <translation>根元素是 &lt;%1&gt; 而不是 &lt;project&gt;：这不是 PLCopen XML 文件。</translation>
-    </message>
-    <message>
-        <source>Cannot open %1: %2.</source>
-        <translation>无法打开 %1：%2。</translation>
-    </message>
-</context>
-<context>
-    <name>iec::model::plcopen::Writer</name>
-    <message>
-        <source>Cannot save %1: %2.</source>
-        <translation>无法保存 %1：%2。</translation>
-    </message>
-</context>
-<context>
-    <name>main</name>
-    <message>
-        <source>Open Project</source>
-        <translation>打开项目</translation>
-    </message>
-</context>
+        </message>
+        <message>
+            <source>&amp;Recover</source>
+            <translation>恢复(&amp;R)</translation>
+        </message>
+        <message>
+            <source>Ask &amp;Later</source>
+            <translation>稍后询问(&amp;L)</translation>
+        </message>
+        <message>
+            <source>The project could not be recovered: %1</source>
+            <translation>无法恢复项目：%1</translation>
+        </message>
+        <message>
+            <source>Build finished. Errors: %1, warnings: %2.</source>
+            <translation>编译完成。错误：%1，警告：%2。</translation>
+        </message>
+        <message>
+            <source>Watch</source>
+            <translation>监视</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::MessagesPane</name>
+        <message>
+            <source>%1, line %2, column %3</source>
+            <translation>%1，第 %2 行，第 %3 列</translation>
+        </message>
+        <message>
+            <source>%1, line %2</source>
+            <translation>%1，第 %2 行</translation>
+        </message>
+        <message>
+            <source>%1, element %2</source>
+            <translation>%1，元素 %2</translation>
+        </message>
+        <message>
+            <source>Info</source>
+            <translation>信息</translation>
+        </message>
+        <message>
+            <source>Warning</source>
+            <translation>警告</translation>
+        </message>
+        <message>
+            <source>Error</source>
+            <translation>错误</translation>
+        </message>
+        <message>
+            <source>Severity</source>
+            <translation>级别</translation>
+        </message>
+        <message>
+            <source>Description</source>
+            <translation>描述</translation>
+        </message>
+        <message>
+            <source>Location</source>
+            <translation>位置</translation>
+        </message>
+        <message>
+            <source>Errors: %1, warnings: %2</source>
+            <translation>错误：%1，警告：%2</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::OnlineController</name>
+        <message>
+            <source>Log&amp;out</source>
+            <translation>注销(&amp;O)</translation>
+        </message>
+        <message>
+            <source>Run &amp;N Cycles...</source>
+            <translation>运行 N 个周期(&amp;N)...</translation>
+        </message>
+        <message>
+            <source>Reset &amp;Warm</source>
+            <translation>热复位(&amp;W)</translation>
+        </message>
+        <message>
+            <source>Reset C&amp;old</source>
+            <translation>冷复位(&amp;O)</translation>
+        </message>
+        <message>
+            <source>C&amp;ycle Time</source>
+            <translation>周期时间(&amp;Y)</translation>
+        </message>
+        <message>
+            <source>S&amp;peed</source>
+            <translation>速度(&amp;P)</translation>
+        </message>
+        <message>
+            <source>%1 ms</source>
+            <translation>%1 ms</translation>
+        </message>
+        <message>
+            <source>&amp;Real Time</source>
+            <translation>实时(&amp;R)</translation>
+        </message>
+        <message>
+            <source>&amp;10 Times Faster</source>
+            <translation>快 10 倍(&amp;1)</translation>
+        </message>
+        <message>
+            <source>As &amp;Fast as Possible</source>
+            <translation>尽可能快(&amp;F)</translation>
+        </message>
+        <message>
+            <source>The cycle time takes effect at login and at a reset.</source>
+            <translation>周期时间在登录和复位时生效。</translation>
+        </message>
+        <message>
+            <source>Login refused: the project has errors. See the Messages pane.</source>
+            <translation>拒绝登录:项目有错误。请查看消息窗口。</translation>
+        </message>
+        <message>
+            <source>Logged in. F5 runs the program, F8 runs one cycle.</source>
+            <translation>已登录。F5 运行程序,F8 执行一个周期。</translation>
+        </message>
+        <message>
+            <source>Logged out.</source>
+            <translation>已注销。</translation>
+        </message>
+        <message>
+            <source>Run N Cycles</source>
+            <translation>运行 N 个周期</translation>
+        </message>
+        <message>
+            <source>Number of cycles:</source>
+            <translation>周期数:</translation>
+        </message>
+        <message>
+            <source>Log in to write values.</source>
+            <translation>请先登录再写入值。</translation>
+        </message>
+        <message>
+            <source>Log in to force values.</source>
+            <translation>请先登录再强制值。</translation>
+        </message>
+        <message>
+            <source>The new cycle time takes effect at the next reset.</source>
+            <translation>新的周期时间在下次复位时生效。</translation>
+        </message>
+        <message>
+            <source>Runtime fault in cycle %1: %2 The program stopped; Reset starts it again.</source>
+            <translation>第 %1 周期运行时故障:%2 程序已停止;复位后可重新启动。</translation>
+        </message>
+        <message>
+            <source>The program stopped: %1</source>
+            <translation>程序已停止:%1</translation>
+        </message>
+        <message>
+            <source>Offline</source>
+            <translation>离线</translation>
+        </message>
+        <message>
+            <source>real time</source>
+            <translation>实时</translation>
+        </message>
+        <message>
+            <source>10x</source>
+            <translation>10 倍</translation>
+        </message>
+        <message>
+            <source>full speed</source>
+            <translation>全速</translation>
+        </message>
+        <message>
+            <source>FAULT</source>
+            <translation>故障</translation>
+        </message>
+        <message>
+            <source>RUN</source>
+            <translation>运行</translation>
+        </message>
+        <message>
+            <source>STOP</source>
+            <translation>停止</translation>
+        </message>
+        <message>
+            <source>ONLINE %1 | cycle %2 | t = %3 s | %4 ms, %5</source>
+            <translation>在线 %1 | 周期 %2 | t = %3 s | %4 ms, %5</translation>
+        </message>
+        <message>
+            <source> | changed since login</source>
+            <translation> | 登录后已更改</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::ProjectTreeActions</name>
+        <message>
+            <source>Add &amp;POU...</source>
+            <translation>添加 POU(&amp;P)...</translation>
+        </message>
+        <message>
+            <source>Add &amp;Action...</source>
+            <translation>添加动作(&amp;A)...</translation>
+        </message>
+        <message>
+            <source>Add &amp;Transition...</source>
+            <translation>添加转换(&amp;T)...</translation>
+        </message>
+        <message>
+            <source>&amp;Rename...</source>
+            <translation>重命名(&amp;R)...</translation>
+        </message>
+        <message>
+            <source>&amp;Delete</source>
+            <translation>删除(&amp;D)</translation>
+        </message>
+        <message>
+            <source>D&amp;uplicate</source>
+            <translation>复制(&amp;U)</translation>
+        </message>
+        <message>
+            <source>Add POU</source>
+            <translation>添加 POU</translation>
+        </message>
+        <message>
+            <source>Rename %1</source>
+            <translation>重命名 %1</translation>
+        </message>
+        <message>
+            <source>Delete</source>
+            <translation>删除</translation>
+        </message>
+        <message>
+            <source>Delete %1? Edit → Undo brings it back.</source>
+            <translation>删除 %1？可通过 编辑 → 撤销 恢复。</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::ProjectTreeModel</name>
+        <message>
+            <source>Programs</source>
+            <translation>程序</translation>
+        </message>
+        <message>
+            <source>Function Blocks</source>
+            <translation>功能块</translation>
+        </message>
+        <message>
+            <source>Functions</source>
+            <translation>函数</translation>
+        </message>
+        <message>
+            <source>Data Types</source>
+            <translation>数据类型</translation>
+        </message>
+        <message>
+            <source>Global Variables</source>
+            <translation>全局变量</translation>
+        </message>
+        <message>
+            <source>Configurations</source>
+            <translation>配置</translation>
+        </message>
+        <message>
+            <source>%1 (PRG)</source>
+            <translation>%1 (PRG)</translation>
+        </message>
+        <message>
+            <source>%1 (FB)</source>
+            <translation>%1 (FB)</translation>
+        </message>
+        <message>
+            <source>%1 (FUN)</source>
+            <translation>%1 (FUN)</translation>
+        </message>
+        <message>
+            <source>%1, written in %2</source>
+            <translation>%1，使用 %2 编写</translation>
+        </message>
+        <message>
+            <source>Structured Text (ST)</source>
+            <translation>结构化文本 (ST)</translation>
+        </message>
+        <message>
+            <source>Instruction List (IL)</source>
+            <translation>指令表 (IL)</translation>
+        </message>
+        <message>
+            <source>Ladder Diagram (LD)</source>
+            <translation>梯形图 (LD)</translation>
+        </message>
+        <message>
+            <source>Function Block Diagram (FBD)</source>
+            <translation>功能块图 (FBD)</translation>
+        </message>
+        <message>
+            <source>Sequential Function Chart (SFC)</source>
+            <translation>顺序功能图 (SFC)</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::RecentFilesMenu</name>
+        <message>
+            <source>(none)</source>
+            <translation>(无)</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::RecoveryManager</name>
+        <message>
+            <source>Cannot create the folder %1.</source>
+            <translation>无法创建文件夹 %1。</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::RenameDialog</name>
+        <message>
+            <source>Rename %1</source>
+            <translation>重命名 %1</translation>
+        </message>
+        <message>
+            <source>&amp;New name:</source>
+            <translation>新名称(&amp;N)：</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::RuntimeWorker</name>
+        <message>
+            <source>There is no variable called %1.</source>
+            <translation>没有名为 %1 的变量。</translation>
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1:%2</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::SettingsDialog</name>
+        <message>
+            <source>Settings</source>
+            <translation>设置</translation>
+        </message>
+        <message>
+            <source>System language</source>
+            <translation>系统语言</translation>
+        </message>
+        <message>
+            <source> pt</source>
+            <translation> 磅</translation>
+        </message>
+        <message>
+            <source> px</source>
+            <translation> 像素</translation>
+        </message>
+        <message>
+            <source> min</source>
+            <translation> 分钟</translation>
+        </message>
+        <message>
+            <source>Off</source>
+            <translation>关闭</translation>
+        </message>
+        <message>
+            <source>User interface language:</source>
+            <translation>界面语言：</translation>
+        </message>
+        <message>
+            <source>Editor font:</source>
+            <translation>编辑器字体：</translation>
+        </message>
+        <message>
+            <source>Editor font size:</source>
+            <translation>编辑器字号：</translation>
+        </message>
+        <message>
+            <source>Diagram grid size:</source>
+            <translation>图形网格大小：</translation>
+        </message>
+        <message>
+            <source>Autosave every:</source>
+            <translation>自动保存间隔：</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::UndoActions</name>
+        <message>
+            <source>&amp;Undo Typing</source>
+            <translation>撤销输入(&amp;U)</translation>
+        </message>
+        <message>
+            <source>&amp;Redo Typing</source>
+            <translation>重做输入(&amp;R)</translation>
+        </message>
+        <message>
+            <source>&amp;Undo %1</source>
+            <translation>撤销 %1(&amp;U)</translation>
+        </message>
+        <message>
+            <source>&amp;Undo</source>
+            <translation>撤销(&amp;U)</translation>
+        </message>
+        <message>
+            <source>&amp;Redo %1</source>
+            <translation>重做 %1(&amp;R)</translation>
+        </message>
+        <message>
+            <source>&amp;Redo</source>
+            <translation>重做(&amp;R)</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::WatchModel</name>
+        <message>
+            <source>(no such variable)</source>
+            <translation>(无此变量)</translation>
+        </message>
+        <message>
+            <source>%1 (forced)</source>
+            <translation>%1(已强制)</translation>
+        </message>
+        <message>
+            <source>Type the value to write or force, then choose Write or Force.</source>
+            <translation>输入要写入或强制的值,然后选择“写入”或“强制”。</translation>
+        </message>
+        <message>
+            <source>Expression</source>
+            <translation>表达式</translation>
+        </message>
+        <message>
+            <source>Type</source>
+            <translation>类型</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>值</translation>
+        </message>
+        <message>
+            <source>Prepared value</source>
+            <translation>预备值</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::WatchPane</name>
+        <message>
+            <source>Variable to watch, e.g. Main.Counter</source>
+            <translation>要监视的变量,例如 Main.Counter</translation>
+        </message>
+        <message>
+            <source>Add</source>
+            <translation>添加</translation>
+        </message>
+        <message>
+            <source>Write</source>
+            <translation>写入</translation>
+        </message>
+        <message>
+            <source>Write the prepared values once, at the start of the next cycle (Ctrl+F7)</source>
+            <translation>在下一个周期开始时写入一次预备值 (Ctrl+F7)</translation>
+        </message>
+        <message>
+            <source>Force</source>
+            <translation>强制</translation>
+        </message>
+        <message>
+            <source>Hold the prepared values every cycle until released (F7)</source>
+            <translation>在每个周期保持预备值,直到释放 (F7)</translation>
+        </message>
+        <message>
+            <source>Release</source>
+            <translation>释放</translation>
+        </message>
+        <message>
+            <source>Release the forces of the selected variables (Alt+F7)</source>
+            <translation>释放所选变量的强制 (Alt+F7)</translation>
+        </message>
+        <message>
+            <source>Release All</source>
+            <translation>全部释放</translation>
+        </message>
+        <message>
+            <source>Remove</source>
+            <translation>移除</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::WindowMenu</name>
+        <message>
+            <source>&amp;Next Document</source>
+            <translation>下一个文档(&amp;N)</translation>
+        </message>
+        <message>
+            <source>&amp;Previous Document</source>
+            <translation>上一个文档(&amp;P)</translation>
+        </message>
+        <message>
+            <source>&amp;Close All Documents</source>
+            <translation>关闭所有文档(&amp;C)</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::AliasPage</name>
+        <message>
+            <source>Base type:</source>
+            <translation>基本类型：</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::ArrayPage</name>
+        <message>
+            <source>Low</source>
+            <translation>下限</translation>
+        </message>
+        <message>
+            <source>High</source>
+            <translation>上限</translation>
+        </message>
+        <message>
+            <source>Dimensions</source>
+            <translation>维数</translation>
+        </message>
+        <message>
+            <source>Element type:</source>
+            <translation>元素类型：</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::CodeEditor</name>
+        <message>
+            <source>Go to Definition</source>
+            <translation>转到定义</translation>
+        </message>
+        <message>
+            <source>Complete</source>
+            <translation>自动完成</translation>
+        </message>
+        <message>
+            <source>Input Assistant...</source>
+            <translation>输入助手...</translation>
+        </message>
+        <message>
+            <source>Toggle Comment</source>
+            <translation>切换注释</translation>
+        </message>
+        <message>
+            <source>Fold All</source>
+            <translation>全部折叠</translation>
+        </message>
+        <message>
+            <source>Unfold All</source>
+            <translation>全部展开</translation>
+        </message>
+        <message>
+            <source>Add to Watch</source>
+            <translation>添加到监视</translation>
+        </message>
+        <message>
+            <source>The program is online, so its text cannot be changed. Choose Online &gt; Logout to edit it.</source>
+            <translation>程序处于在线状态,不能修改其文本。请选择“在线 &gt; 注销”后再编辑。</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::DataTypeEditor</name>
+        <message>
+            <source>Name:</source>
+            <translation>名称:</translation>
+        </message>
+        <message>
+            <source>Kind:</source>
+            <translation>类别：</translation>
+        </message>
+        <message>
+            <source>Initial value:</source>
+            <translation>初始值：</translation>
+        </message>
+        <message>
+            <source>(the default of the type)</source>
+            <translation>(该类型的默认值)</translation>
+        </message>
+        <message>
+            <source>Structure</source>
+            <translation>结构体</translation>
+        </message>
+        <message>
+            <source>Enumeration</source>
+            <translation>枚举</translation>
+        </message>
+        <message>
+            <source>Array</source>
+            <translation>数组</translation>
+        </message>
+        <message>
+            <source>Subrange</source>
+            <translation>子范围</translation>
+        </message>
+        <message>
+            <source>Alias</source>
+            <translation>别名</translation>
+        </message>
+        <message>
+            <source>String</source>
+            <translation>字符串</translation>
+        </message>
+        <message>
+            <source>IEC text:</source>
+            <translation>IEC 文本：</translation>
+        </message>
+        <message>
+            <source>IEC text as last applied (correct the marked fields to apply):</source>
+            <translation>最近一次应用的 IEC 文本(请更正标记的字段以应用)：</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::DataTypeValidator</name>
+        <message>
+            <source>A POU or data type named "%1" exists already.</source>
+            <translation>名为 "%1" 的 POU 或数据类型已存在。</translation>
+        </message>
+        <message>
+            <source>A structure needs at least one member.</source>
+            <translation>结构体至少需要一个成员。</translation>
+        </message>
+        <message>
+            <source>There is a member named "%1" already.</source>
+            <translation>已有名为 "%1" 的成员。</translation>
+        </message>
+        <message>
+            <source>An enumeration needs at least one value.</source>
+            <translation>枚举至少需要一个值。</translation>
+        </message>
+        <message>
+            <source>The value "%1" is listed already.</source>
+            <translation>值 "%1" 已列出。</translation>
+        </message>
+        <message>
+            <source>Enter a whole number, or leave it empty.</source>
+            <translation>请输入整数，或留空。</translation>
+        </message>
+        <message>
+            <source>An array needs at least one dimension.</source>
+            <translation>数组至少需要一个维。</translation>
+        </message>
+        <message>
+            <source>Enter a length from 1 to 65535, or leave it empty for the default.</source>
+            <translation>请输入 1 到 65535 之间的长度，或留空使用默认值。</translation>
+        </message>
+        <message>
+            <source>Choose an integer type such as INT, DINT or UINT.</source>
+            <translation>请选择整数类型，如 INT、DINT 或 UINT。</translation>
+        </message>
+        <message>
+            <source>The upper bound %1 is less than the lower bound %2.</source>
+            <translation>上限 %1 小于下限 %2。</translation>
+        </message>
+        <message>
+            <source>Enter a bound.</source>
+            <translation>请输入边界。</translation>
+        </message>
+        <message>
+            <source>Enter a whole number or the name of a constant.</source>
+            <translation>请输入整数或常量名称。</translation>
+        </message>
+        <message>
+            <source>Enter a type.</source>
+            <translation>请输入类型。</translation>
+        </message>
+        <message>
+            <source>"%1" is not a type.</source>
+            <translation>"%1" 不是类型。</translation>
+        </message>
+        <message>
+            <source>A type cannot contain itself.</source>
+            <translation>类型不能包含自身。</translation>
+        </message>
+        <message>
+            <source>Unknown type "%1".</source>
+            <translation>未知类型 "%1"。</translation>
+        </message>
+        <message>
+            <source>"%1" is not a valid initial value.</source>
+            <translation>"%1" 不是有效的初始值。</translation>
+        </message>
+        <message>
+            <source>Enter a name.</source>
+            <translation>请输入名称。</translation>
+        </message>
+        <message>
+            <source>"%1" is not an IEC identifier: use letters, digits and single underscores, starting with a letter or an underscore and not ending with an underscore.</source>
+            <translation>"%1" 不是 IEC 标识符：只能使用字母、数字和单个下划线，以字母或下划线开头，且不能以下划线结尾。</translation>
+        </message>
+        <message>
+            <source>"%1" is a reserved word of IEC 61131-3.</source>
+            <translation>"%1" 是 IEC 61131-3 的保留字。</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::DeclarationEditor</name>
+        <message>
+            <source>Table</source>
+            <translation>表格</translation>
+        </message>
+        <message>
+            <source>Text</source>
+            <translation>文本</translation>
+        </message>
+        <message>
+            <source>Add Variable</source>
+            <translation>添加变量</translation>
+        </message>
+        <message>
+            <source>Remove</source>
+            <translation>移除</translation>
+        </message>
+        <message>
+            <source>Move Up</source>
+            <translation>上移</translation>
+        </message>
+        <message>
+            <source>Move Down</source>
+            <translation>下移</translation>
+        </message>
+        <message>
+            <source>Row %1: %2</source>
+            <translation>第 %1 行：%2</translation>
+        </message>
+        <message>
+            <source>Line %1, column %2: %3</source>
+            <translation>第 %1 行，第 %2 列：%3</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::DeclarationRows</name>
+        <message>
+            <source>"%1" is not a variable class.</source>
+            <translation>"%1" 不是变量类别。</translation>
+        </message>
+        <message>
+            <source>"%1" is not a data type.</source>
+            <translation>"%1" 不是数据类型。</translation>
+        </message>
+        <message>
+            <source>"%1" is not an initial value for %2.</source>
+            <translation>"%1" 不是 %2 的初始值。</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::DeclarationTableModel</name>
+        <message>
+            <source>Name</source>
+            <translation>名称</translation>
+        </message>
+        <message>
+            <source>Class</source>
+            <translation>类别</translation>
+        </message>
+        <message>
+            <source>Type</source>
+            <translation>类型</translation>
+        </message>
+        <message>
+            <source>Initial Value</source>
+            <translation>初始值</translation>
+        </message>
+        <message>
+            <source>Address</source>
+            <translation>地址</translation>
+        </message>
+        <message>
+            <source>Comment</source>
+            <translation>注释</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::DeclarationText</name>
+        <message>
+            <source>VAR_ACCESS and VAR_CONFIG belong in a configuration, not in a POU.</source>
+            <translation>VAR_ACCESS 和 VAR_CONFIG 属于配置，而不属于 POU。</translation>
+        </message>
+        <message>
+            <source>"%1" is not a valid name: use letters, digits and single underscores, and no keyword.</source>
+            <translation>"%1" 不是有效的名称：请使用字母、数字和单个下划线，且不能是关键字。</translation>
+        </message>
+        <message>
+            <source>"%1" is not an address such as %IX0.0, %QW3 or %MD10.</source>
+            <translation>"%1" 不是地址(例如 %IX0.0、%QW3 或 %MD10)。</translation>
+        </message>
+        <message>
+            <source>%1 is declared twice.</source>
+            <translation>%1 被声明了两次。</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::DiagramExport</name>
+        <message>
+            <source>Cannot write %1.</source>
+            <translation>无法写入 %1。</translation>
+        </message>
+        <message>
+            <source>Unknown picture type '%1': use .svg, .png or .pdf.</source>
+            <translation>未知的图片类型 '%1':请使用 .svg、.png 或 .pdf。</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::EnumPage</name>
+        <message>
+            <source>Name</source>
+            <translation>名称</translation>
+        </message>
+        <message>
+            <source>Value (optional)</source>
+            <translation>值(可选)</translation>
+        </message>
+        <message>
+            <source>Values</source>
+            <translation>值</translation>
+        </message>
+        <message>
+            <source>Base type (optional):</source>
+            <translation>基本类型(可选)：</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::FindReplaceBar</name>
+        <message>
+            <source>Find</source>
+            <translation>查找</translation>
+        </message>
+        <message>
+            <source>Replace with</source>
+            <translation>替换为</translation>
+        </message>
+        <message>
+            <source>Match case</source>
+            <translation>区分大小写</translation>
+        </message>
+        <message>
+            <source>Whole words</source>
+            <translation>全字匹配</translation>
+        </message>
+        <message>
+            <source>Previous</source>
+            <translation>上一个</translation>
+        </message>
+        <message>
+            <source>Next</source>
+            <translation>下一个</translation>
+        </message>
+        <message>
+            <source>Replace</source>
+            <translation>替换</translation>
+        </message>
+        <message>
+            <source>Replace All</source>
+            <translation>全部替换</translation>
+        </message>
+        <message>
+            <source>Close</source>
+            <translation>关闭</translation>
+        </message>
+        <message>
+            <source>Find:</source>
+            <translation>查找：</translation>
+        </message>
+        <message>
+            <source>Replace:</source>
+            <translation>替换：</translation>
+        </message>
+        <message>
+            <source>Not found</source>
+            <translation>未找到</translation>
+        </message>
+        <message>
+            <source>Search wrapped</source>
+            <translation>已从头继续查找</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n replaced</source>
+            <translation>
+                <numerusform>已替换 %n 处</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::InputAssistantDialog</name>
+        <message>
+            <source>Input Assistant</source>
+            <translation>输入助手</translation>
+        </message>
+        <message>
+            <source>Operators</source>
+            <translation>运算符</translation>
+        </message>
+        <message>
+            <source>Operands</source>
+            <translation>操作数</translation>
+        </message>
+        <message>
+            <source>Functions</source>
+            <translation>函数</translation>
+        </message>
+        <message>
+            <source>Function blocks</source>
+            <translation>功能块</translation>
+        </message>
+        <message>
+            <source>Filter</source>
+            <translation>筛选</translation>
+        </message>
+        <message>
+            <source>Name</source>
+            <translation>名称</translation>
+        </message>
+        <message>
+            <source>Description</source>
+            <translation>描述</translation>
+        </message>
+        <message>
+            <source>IL operators</source>
+            <translation>IL 运算符</translation>
+        </message>
+        <message>
+            <source>ST operators</source>
+            <translation>ST 运算符</translation>
+        </message>
+        <message>
+            <source>Variables</source>
+            <translation>变量</translation>
+        </message>
+        <message>
+            <source>Boolean constants</source>
+            <translation>布尔常量</translation>
+        </message>
+        <message>
+            <source>User-defined functions</source>
+            <translation>用户定义的函数</translation>
+        </message>
+        <message>
+            <source>User-defined function blocks</source>
+            <translation>用户定义的功能块</translation>
+        </message>
+        <message>
+            <source>Programs</source>
+            <translation>程序</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::RowTable</name>
+        <message>
+            <source>Add</source>
+            <translation>添加</translation>
+        </message>
+        <message>
+            <source>Add a row below the current one</source>
+            <translation>在当前行下方添加一行</translation>
+        </message>
+        <message>
+            <source>Remove</source>
+            <translation>移除</translation>
+        </message>
+        <message>
+            <source>Remove the current row</source>
+            <translation>删除当前行</translation>
+        </message>
+        <message>
+            <source>Up</source>
+            <translation>上移</translation>
+        </message>
+        <message>
+            <source>Move the current row up</source>
+            <translation>将当前行上移</translation>
+        </message>
+        <message>
+            <source>Down</source>
+            <translation>下移</translation>
+        </message>
+        <message>
+            <source>Move the current row down</source>
+            <translation>将当前行下移</translation>
+        </message>
+        <message>
+            <source>Row %1, %2: %3</source>
+            <translation>第 %1 行，%2：%3</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::StandardLibrary</name>
+        <message>
+            <source>Arithmetic</source>
+            <translation>算术</translation>
+        </message>
+        <message>
+            <source>Numeric</source>
+            <translation>数值</translation>
+        </message>
+        <message>
+            <source>Bit shift</source>
+            <translation>移位</translation>
+        </message>
+        <message>
+            <source>Selection</source>
+            <translation>选择</translation>
+        </message>
+        <message>
+            <source>Comparison</source>
+            <translation>比较</translation>
+        </message>
+        <message>
+            <source>String</source>
+            <translation>字符串</translation>
+        </message>
+        <message>
+            <source>Type conversion</source>
+            <translation>类型转换</translation>
+        </message>
+        <message>
+            <source>Bistable</source>
+            <translation>双稳态</translation>
+        </message>
+        <message>
+            <source>Edge detection</source>
+            <translation>边沿检测</translation>
+        </message>
+        <message>
+            <source>Counters</source>
+            <translation>计数器</translation>
+        </message>
+        <message>
+            <source>Timers</source>
+            <translation>定时器</translation>
+        </message>
+        <message>
+            <source>Load the operand into the current result</source>
+            <translation>将操作数装入当前结果</translation>
+        </message>
+        <message>
+            <source>Store the current result in the operand</source>
+            <translation>将当前结果存入操作数</translation>
+        </message>
+        <message>
+            <source>Set the Boolean operand to TRUE if the current result is TRUE</source>
+            <translation>当前结果为 TRUE 时将布尔操作数置位为 TRUE</translation>
+        </message>
+        <message>
+            <source>Reset the Boolean operand to FALSE if the current result is TRUE</source>
+            <translation>当前结果为 TRUE 时将布尔操作数复位为 FALSE</translation>
+        </message>
+        <message>
+            <source>Bitwise AND</source>
+            <translation>按位与</translation>
+        </message>
+        <message>
+            <source>Bitwise OR</source>
+            <translation>按位或</translation>
+        </message>
+        <message>
+            <source>Bitwise exclusive OR</source>
+            <translation>按位异或</translation>
+        </message>
+        <message>
+            <source>Addition</source>
+            <translation>加法</translation>
+        </message>
+        <message>
+            <source>Subtraction</source>
+            <translation>减法</translation>
+        </message>
+        <message>
+            <source>Multiplication</source>
+            <translation>乘法</translation>
+        </message>
+        <message>
+            <source>Division</source>
+            <translation>除法</translation>
+        </message>
+        <message>
+            <source>Greater than (&gt;)</source>
+            <translation>大于 (&gt;)</translation>
+        </message>
+        <message>
+            <source>Greater than or equal (&gt;=)</source>
+            <translation>大于等于 (&gt;=)</translation>
+        </message>
+        <message>
+            <source>Equal (=)</source>
+            <translation>等于 (=)</translation>
+        </message>
+        <message>
+            <source>Not equal (&lt;&gt;)</source>
+            <translation>不等于 (&lt;&gt;)</translation>
+        </message>
+        <message>
+            <source>Less than or equal (&lt;=)</source>
+            <translation>小于等于 (&lt;=)</translation>
+        </message>
+        <message>
+            <source>Less than (&lt;)</source>
+            <translation>小于 (&lt;)</translation>
+        </message>
+        <message>
+            <source>Jump to the label</source>
+            <translation>跳转到标号</translation>
+        </message>
+        <message>
+            <source>Call a function block instance</source>
+            <translation>调用功能块实例</translation>
+        </message>
+        <message>
+            <source>Return to the calling POU</source>
+            <translation>返回调用它的 POU</translation>
+        </message>
+        <message>
+            <source>Evaluate the deferred operation</source>
+            <translation>计算被推迟的运算</translation>
+        </message>
+        <message>
+            <source>negated operand</source>
+            <translation>取反的操作数</translation>
+        </message>
+        <message>
+            <source>deferred until )</source>
+            <translation>推迟到 ) 执行</translation>
+        </message>
+        <message>
+            <source>only if the current result is TRUE</source>
+            <translation>仅当当前结果为 TRUE 时</translation>
+        </message>
+        <message>
+            <source>only if the current result is FALSE</source>
+            <translation>仅当当前结果为 FALSE 时</translation>
+        </message>
+        <message>
+            <source>Assignment</source>
+            <translation>赋值</translation>
+        </message>
+        <message>
+            <source>Modulo</source>
+            <translation>取模</translation>
+        </message>
+        <message>
+            <source>Negation</source>
+            <translation>取反</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::StringPage</name>
+        <message>
+            <source>Characters:</source>
+            <translation>字符：</translation>
+        </message>
+        <message>
+            <source>Length (optional):</source>
+            <translation>长度(可选)：</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::StructPage</name>
+        <message>
+            <source>Name</source>
+            <translation>名称</translation>
+        </message>
+        <message>
+            <source>Type</source>
+            <translation>类型</translation>
+        </message>
+        <message>
+            <source>Initial value</source>
+            <translation>初始值</translation>
+        </message>
+        <message>
+            <source>Comment</source>
+            <translation>注释</translation>
+        </message>
+        <message>
+            <source>Members</source>
+            <translation>成员</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::SubrangePage</name>
+        <message>
+            <source>Base type:</source>
+            <translation>基本类型：</translation>
+        </message>
+        <message>
+            <source>Low:</source>
+            <translation>下限：</translation>
+        </message>
+        <message>
+            <source>High:</source>
+            <translation>上限：</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::TextEditorWidget</name>
+        <message>
+            <source>Online: %1, cycle %2</source>
+            <translation>在线:%1,周期 %2</translation>
+        </message>
+        <message>
+            <source>no instance</source>
+            <translation>无实例</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::sfc::ActionAssociationsDialog</name>
+        <message>
+            <source>IEC Actions of the Step</source>
+            <translation>步的 IEC 动作</translation>
+        </message>
+        <message>
+            <source>Qualifier</source>
+            <translation>限定符</translation>
+        </message>
+        <message>
+            <source>Time</source>
+            <translation>时间</translation>
+        </message>
+        <message>
+            <source>Action or variable</source>
+            <translation>动作或变量</translation>
+        </message>
+        <message>
+            <source>Indicator</source>
+            <translation>指示变量</translation>
+        </message>
+        <message>
+            <source>Add</source>
+            <translation>添加</translation>
+        </message>
+        <message>
+            <source>Remove</source>
+            <translation>移除</translation>
+        </message>
+        <message>
+            <source>Move Up</source>
+            <translation>上移</translation>
+        </message>
+        <message>
+            <source>Move Down</source>
+            <translation>下移</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::sfc::SfcEditor</name>
+        <message>
+            <source>Step-Transition (after)</source>
+            <translation>步-转换(之后)</translation>
+        </message>
+        <message>
+            <source>Step-Transition (before)</source>
+            <translation>步-转换(之前)</translation>
+        </message>
+        <message>
+            <source>Alternative Branch (right)</source>
+            <translation>选择分支(右)</translation>
+        </message>
+        <message>
+            <source>Alternative Branch (left)</source>
+            <translation>选择分支(左)</translation>
+        </message>
+        <message>
+            <source>Parallel Branch (right)</source>
+            <translation>并行分支(右)</translation>
+        </message>
+        <message>
+            <source>Parallel Branch (left)</source>
+            <translation>并行分支(左)</translation>
+        </message>
+        <message>
+            <source>Jump…</source>
+            <translation>跳转…</translation>
+        </message>
+        <message>
+            <source>Transition-Jump…</source>
+            <translation>转换-跳转…</translation>
+        </message>
+        <message>
+            <source>Macro Step</source>
+            <translation>宏步</translation>
+        </message>
+        <message>
+            <source>Delete</source>
+            <translation>删除</translation>
+        </message>
+        <message>
+            <source>Cut</source>
+            <translation>剪切</translation>
+        </message>
+        <message>
+            <source>Copy</source>
+            <translation>复制</translation>
+        </message>
+        <message>
+            <source>Paste</source>
+            <translation>粘贴</translation>
+        </message>
+        <message>
+            <source>Step Properties…</source>
+            <translation>步属性…</translation>
+        </message>
+        <message>
+            <source>Select a step first.</source>
+            <translation>请先选择一个步。</translation>
+        </message>
+        <message>
+            <source>IEC Actions…</source>
+            <translation>IEC 动作…</translation>
+        </message>
+        <message>
+            <source>Edit Condition</source>
+            <translation>编辑转换条件</translation>
+        </message>
+        <message>
+            <source>Select a transition first.</source>
+            <translation>请先选择一个转换。</translation>
+        </message>
+        <message>
+            <source>Transition Priority…</source>
+            <translation>转换优先级…</translation>
+        </message>
+        <message>
+            <source>Transition Priority</source>
+            <translation>转换优先级</translation>
+        </message>
+        <message>
+            <source>Priority (0: none, branches are tried from left to right):</source>
+            <translation>优先级(0:无,分支从左到右依次判断):</translation>
+        </message>
+        <message>
+            <source>Leave Macro</source>
+            <translation>退出宏</translation>
+        </message>
+        <message>
+            <source>Zoom In</source>
+            <translation>放大</translation>
+        </message>
+        <message>
+            <source>Zoom Out</source>
+            <translation>缩小</translation>
+        </message>
+        <message>
+            <source>Fit to Window</source>
+            <translation>适合窗口</translation>
+        </message>
+        <message>
+            <source>Export Picture…</source>
+            <translation>导出图片…</translation>
+        </message>
+        <message>
+            <source>Export Chart</source>
+            <translation>导出顺序功能图</translation>
+        </message>
+        <message>
+            <source>SVG picture (*.svg);;PNG picture (*.png);;PDF document (*.pdf)</source>
+            <translation>SVG 图片 (*.svg);;PNG 图片 (*.png);;PDF 文档 (*.pdf)</translation>
+        </message>
+        <message>
+            <source>Print…</source>
+            <translation>打印…</translation>
+        </message>
+        <message>
+            <source>The chart cannot be changed while online. Log out first (Online → Logout).</source>
+            <translation>在线时不能修改顺序功能图。请先注销(在线 → 注销)。</translation>
+        </message>
+        <message>
+            <source>This body is not a chart.</source>
+            <translation>该程序体不是顺序功能图。</translation>
+        </message>
+        <message>
+            <source>New chart</source>
+            <translation>新建顺序功能图</translation>
+        </message>
+        <message>
+            <source>Insert step-transition</source>
+            <translation>插入步-转换</translation>
+        </message>
+        <message>
+            <source>Insert alternative branch</source>
+            <translation>插入选择分支</translation>
+        </message>
+        <message>
+            <source>Insert parallel branch</source>
+            <translation>插入并行分支</translation>
+        </message>
+        <message>
+            <source>Insert jump</source>
+            <translation>插入跳转</translation>
+        </message>
+        <message>
+            <source>Insert transition-jump</source>
+            <translation>插入转换-跳转</translation>
+        </message>
+        <message>
+            <source>Insert macro step</source>
+            <translation>插入宏步</translation>
+        </message>
+        <message>
+            <source>There is nothing to paste.</source>
+            <translation>没有可粘贴的内容。</translation>
+        </message>
+        <message>
+            <source>Change step</source>
+            <translation>修改步</translation>
+        </message>
+        <message>
+            <source>Add action</source>
+            <translation>添加动作</translation>
+        </message>
+        <message>
+            <source>Change action</source>
+            <translation>修改动作</translation>
+        </message>
+        <message>
+            <source>Remove action</source>
+            <translation>移除动作</translation>
+        </message>
+        <message>
+            <source>Move action</source>
+            <translation>移动动作</translation>
+        </message>
+        <message>
+            <source>Change condition</source>
+            <translation>修改转换条件</translation>
+        </message>
+        <message>
+            <source>Change priority</source>
+            <translation>修改优先级</translation>
+        </message>
+        <message>
+            <source>Add %1 action %2</source>
+            <translation>添加%1动作 %2</translation>
+        </message>
+        <message>
+            <source>Select a macro step first.</source>
+            <translation>请先选择一个宏步。</translation>
+        </message>
+        <message>
+            <source>Inside macro step %1</source>
+            <translation>宏步 %1 内部</translation>
+        </message>
+        <message>
+            <source>An ST expression, or the name of a transition of the POU. Enter applies, Esc cancels.</source>
+            <translation>ST 表达式,或该 POU 中某个转换的名称。回车确认,Esc 取消。</translation>
+        </message>
+        <message>
+            <source>Change actions</source>
+            <translation>修改动作</translation>
+        </message>
+        <message>
+            <source>The chart has no step to jump to.</source>
+            <translation>顺序功能图中没有可跳转的步。</translation>
+        </message>
+        <message>
+            <source>Jump</source>
+            <translation>跳转</translation>
+        </message>
+        <message>
+            <source>Jump to step:</source>
+            <translation>跳转到步:</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::sfc::SfcEdits</name>
+        <message>
+            <source>Select a step or a transition first.</source>
+            <translation>请先选择一个步或转换。</translation>
+        </message>
+        <message>
+            <source>Nothing can follow a jump. Select the transition before it.</source>
+            <translation>跳转之后不能再有元素。请选择跳转前面的转换。</translation>
+        </message>
+        <message>
+            <source>Nothing can go before the initial step. Insert after it instead.</source>
+            <translation>初始步之前不能插入元素。请在其后插入。</translation>
+        </message>
+        <message>
+            <source>Select a step (or steps from one to another) to add a parallel branch.</source>
+            <translation>请选择一个步(或从一个步到另一个步的范围)以添加并行分支。</translation>
+        </message>
+        <message>
+            <source>Select a transition (or a range from a transition to a transition) to add an alternative branch.</source>
+            <translation>请选择一个转换(或从一个转换到另一个转换的范围)以添加选择分支。</translation>
+        </message>
+        <message>
+            <source>The chart is not empty.</source>
+            <translation>顺序功能图不为空。</translation>
+        </message>
+        <message>
+            <source>There is no step '%1' to jump to.</source>
+            <translation>没有可跳转的步 '%1'。</translation>
+        </message>
+        <message>
+            <source>Select the transition the jump follows.</source>
+            <translation>请选择跳转之前的转换。</translation>
+        </message>
+        <message>
+            <source>A jump can only follow the last transition of a chain or branch.</source>
+            <translation>跳转只能位于链或分支的最后一个转换之后。</translation>
+        </message>
+        <message>
+            <source>Select the step the transition and jump follow.</source>
+            <translation>请选择转换和跳转之前的步。</translation>
+        </message>
+        <message>
+            <source>A transition-jump can only follow the last step of a chain or of an alternative branch.</source>
+            <translation>转换-跳转只能位于链或选择分支的最后一个步之后。</translation>
+        </message>
+        <message>
+            <source>Select what to delete first.</source>
+            <translation>请先选择要删除的内容。</translation>
+        </message>
+        <message>
+            <source>The initial step cannot be deleted on its own. Delete what follows it, or the whole chart.</source>
+            <translation>初始步不能单独删除。请删除其后的内容,或删除整个顺序功能图。</translation>
+        </message>
+        <message>
+            <source>Deleting this would leave two steps or two transitions in a row. Select a step together with its transition.</source>
+            <translation>删除后会出现两个相连的步或两个相连的转换。请同时选择步及其转换。</translation>
+        </message>
+        <message>
+            <source>Select a step first.</source>
+            <translation>请先选择一个步。</translation>
+        </message>
+        <message>
+            <source>'%1' is not a valid step name: use letters, digits and single underscores, starting with a letter.</source>
+            <translation>'%1' 不是有效的步名称:请使用字母、数字和单个下划线,并以字母开头。</translation>
+        </message>
+        <message>
+            <source>There is already a step named '%1'.</source>
+            <translation>已存在名为 '%1' 的步。</translation>
+        </message>
+        <message>
+            <source>Only the first step of the chart is the initial step.</source>
+            <translation>只有顺序功能图的第一个步是初始步。</translation>
+        </message>
+        <message>
+            <source>This step has IEC actions. Remove them before making it a simplified step.</source>
+            <translation>该步有 IEC 动作。请先移除它们,再将其设为简化步。</translation>
+        </message>
+        <message>
+            <source>'%1' is not an action qualifier.</source>
+            <translation>'%1' 不是动作限定符。</translation>
+        </message>
+        <message>
+            <source>The qualifier %1 needs a time, such as T#5s.</source>
+            <translation>限定符 %1 需要一个时间,例如 T#5s。</translation>
+        </message>
+        <message>
+            <source>'%1' is not an action or variable name.</source>
+            <translation>'%1' 不是动作名或变量名。</translation>
+        </message>
+        <message>
+            <source>A simplified step has no IEC actions. Make it an IEC step in its properties first.</source>
+            <translation>简化步没有 IEC 动作。请先在其属性中将其设为 IEC 步。</translation>
+        </message>
+        <message>
+            <source>The step has no such action.</source>
+            <translation>该步没有此动作。</translation>
+        </message>
+        <message>
+            <source>The action cannot move there.</source>
+            <translation>该动作不能移到那里。</translation>
+        </message>
+        <message>
+            <source>Select a transition first.</source>
+            <translation>请先选择一个转换。</translation>
+        </message>
+        <message>
+            <source>A transition needs a condition, such as TRUE or Level &gt; 50.</source>
+            <translation>转换需要一个条件,例如 TRUE 或 Level &gt; 50。</translation>
+        </message>
+        <message>
+            <source>'%1' is not a valid transition name.</source>
+            <translation>'%1' 不是有效的转换名称。</translation>
+        </message>
+        <message>
+            <source>Select steps and transitions of one chain to copy.</source>
+            <translation>请选择同一条链中的步和转换进行复制。</translation>
+        </message>
+        <message>
+            <source>There is nothing to paste.</source>
+            <translation>没有可粘贴的内容。</translation>
+        </message>
+        <message>
+            <source>Select where to paste first.</source>
+            <translation>请先选择粘贴位置。</translation>
+        </message>
+        <message>
+            <source>The copied part does not fit here: after a step paste a part that starts with a transition, after a transition one that starts with a step.</source>
+            <translation>复制的部分不适合放在这里:在步之后粘贴以转换开头的部分,在转换之后粘贴以步开头的部分。</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::sfc::SfcItem</name>
+        <message>
+            <source>Initial step %1</source>
+            <translation>初始步 %1</translation>
+        </message>
+        <message>
+            <source>Step %1</source>
+            <translation>步 %1</translation>
+        </message>
+        <message>
+            <source>Entry action: %1</source>
+            <translation>入口动作:%1</translation>
+        </message>
+        <message>
+            <source>Exit action: %1</source>
+            <translation>出口动作:%1</translation>
+        </message>
+        <message>
+            <source>Active action: %1</source>
+            <translation>活动动作:%1</translation>
+        </message>
+        <message>
+            <source>Time: minimum %1, maximum %2</source>
+            <translation>时间:最小 %1,最大 %2</translation>
+        </message>
+        <message>
+            <source>Macro step %1 (double-click to open)</source>
+            <translation>宏步 %1(双击打开)</translation>
+        </message>
+        <message>
+            <source>Transition: %1</source>
+            <translation>转换:%1</translation>
+        </message>
+        <message>
+            <source>Jump to step %1</source>
+            <translation>跳转到步 %1</translation>
+        </message>
+        <message>
+            <source>Jump to step %1, which does not exist</source>
+            <translation>跳转到不存在的步 %1</translation>
+        </message>
+        <message>
+            <source>Parallel branch (start)</source>
+            <translation>并行分支(开始)</translation>
+        </message>
+        <message>
+            <source>Parallel branch (end)</source>
+            <translation>并行分支(结束)</translation>
+        </message>
+        <message>
+            <source>Alternative branch (start)</source>
+            <translation>选择分支(开始)</translation>
+        </message>
+        <message>
+            <source>Alternative branch (end)</source>
+            <translation>选择分支(结束)</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::sfc::StepPropertiesDialog</name>
+        <message>
+            <source>Initial step</source>
+            <translation>初始步</translation>
+        </message>
+        <message>
+            <source>Simplified step (no IEC actions)</source>
+            <translation>简化步(无 IEC 动作)</translation>
+        </message>
+        <message>
+            <source>Step Properties</source>
+            <translation>步属性</translation>
+        </message>
+        <message>
+            <source>e.g. T#2s</source>
+            <translation>例如 T#2s</translation>
+        </message>
+        <message>
+            <source>e.g. T#10s</source>
+            <translation>例如 T#10s</translation>
+        </message>
+        <message>
+            <source>Name:</source>
+            <translation>名称:</translation>
+        </message>
+        <message>
+            <source>Entry action (E):</source>
+            <translation>入口动作 (E):</translation>
+        </message>
+        <message>
+            <source>Exit action (X):</source>
+            <translation>出口动作 (X):</translation>
+        </message>
+        <message>
+            <source>Active action:</source>
+            <translation>活动动作:</translation>
+        </message>
+        <message>
+            <source>Minimum time:</source>
+            <translation>最小时间:</translation>
+        </message>
+        <message>
+            <source>Maximum time:</source>
+            <translation>最大时间:</translation>
+        </message>
+        <message>
+            <source>Comment:</source>
+            <translation>注释:</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::interp::Compiler</name>
+        <message>
+            <source>a statement</source>
+            <translation>一条语句</translation>
+        </message>
+        <message>
+            <source>VAR ... END_VAR</source>
+            <translation>VAR ... END_VAR</translation>
+        </message>
+        <message>
+            <source>the end of the text</source>
+            <translation>文本结尾</translation>
+        </message>
+        <message>
+            <source>'%1' is not valid IEC 61131-3 text.</source>
+            <translation>'%1' 不是有效的 IEC 61131-3 文本。</translation>
+        </message>
+        <message>
+            <source>Expected %1 but found %2.</source>
+            <translation>应为 %1，但找到的是 %2。</translation>
+        </message>
+        <message>
+            <source>close the string on the same line, and write $$ for a dollar sign</source>
+            <translation>在同一行内结束字符串，美元符号写作 $$</translation>
+        </message>
+        <message>
+            <source>check the digits and units of the literal, e.g. 16#FF or T#1s500ms</source>
+            <translation>检查字面量的数字和单位，例如 16#FF 或 T#1s500ms</translation>
+        </message>
+        <message>
+            <source>PROGRAM, FUNCTION_BLOCK, FUNCTION, TYPE or CONFIGURATION</source>
+            <translation>PROGRAM、FUNCTION_BLOCK、FUNCTION、TYPE 或 CONFIGURATION</translation>
+        </message>
+        <message>
+            <source>the name of the POU</source>
+            <translation>POU 的名称</translation>
+        </message>
+        <message>
+            <source>A FUNCTION needs a result type after its name.</source>
+            <translation>FUNCTION 的名称后需要结果类型。</translation>
+        </message>
+        <message>
+            <source>write e.g. FUNCTION %1 : INT</source>
+            <translation>写成例如 FUNCTION %1 : INT</translation>
+        </message>
+        <message>
+            <source>the name of the action</source>
+            <translation>动作的名称</translation>
+        </message>
+        <message>
+            <source>%1 has no %2.</source>
+            <translation>%1 没有 %2。</translation>
+        </message>
+        <message>
+            <source>add %1 after its last statement</source>
+            <translation>在其最后一条语句后添加 %1</translation>
+        </message>
+        <message>
+            <source>the name of a type</source>
+            <translation>类型的名称</translation>
+        </message>
+        <message>
+            <source>':' after the type name</source>
+            <translation>类型名称后的 ':'</translation>
+        </message>
+        <message>
+            <source>Missing ';' after the declaration of type %1.</source>
+            <translation>类型 %1 的声明后缺少 ';'。</translation>
+        </message>
+        <message>
+            <source>the name of the configuration</source>
+            <translation>配置的名称</translation>
+        </message>
+        <message>
+            <source>the name of the resource</source>
+            <translation>资源的名称</translation>
+        </message>
+        <message>
+            <source>the processor type after ON</source>
+            <translation>ON 后面的处理器类型</translation>
+        </message>
+        <message>
+            <source>the name of the task</source>
+            <translation>任务的名称</translation>
+        </message>
+        <message>
+            <source>'(' with the task's INTERVAL and PRIORITY</source>
+            <translation>带有任务 INTERVAL 和 PRIORITY 的 '('</translation>
+        </message>
+        <message>
+            <source>SINGLE, INTERVAL or PRIORITY</source>
+            <translation>SINGLE、INTERVAL 或 PRIORITY</translation>
+        </message>
+        <message>
+            <source>the name of the program instance</source>
+            <translation>程序实例的名称</translation>
+        </message>
+        <message>
+            <source>the task name after WITH</source>
+            <translation>WITH 后面的任务名称</translation>
+        </message>
+        <message>
+            <source>':' and the program type</source>
+            <translation>':' 和程序类型</translation>
+        </message>
+        <message>
+            <source>the program type</source>
+            <translation>程序类型</translation>
+        </message>
+        <message>
+            <source>TASK, PROGRAM or %1</source>
+            <translation>TASK、PROGRAM 或 %1</translation>
+        </message>
+        <message>
+            <source>This variable section has no END_VAR.</source>
+            <translation>此变量段没有 END_VAR。</translation>
+        </message>
+        <message>
+            <source>add END_VAR after its last declaration</source>
+            <translation>在其最后一个声明后添加 END_VAR</translation>
+        </message>
+        <message>
+            <source>a variable name</source>
+            <translation>变量名</translation>
+        </message>
+        <message>
+            <source>an address such as %IX0.0 after AT</source>
+            <translation>AT 后面的地址，例如 %IX0.0</translation>
+        </message>
+        <message>
+            <source>':' and a type</source>
+            <translation>':' 和类型</translation>
+        </message>
+        <message>
+            <source>An initial value is given with ':=', not '='.</source>
+            <translation>初始值用 ':=' 给出，而不是 '='。</translation>
+        </message>
+        <message>
+            <source>write %1 : ... := value;</source>
+            <translation>写成 %1 : ... := 值;</translation>
+        </message>
+        <message>
+            <source>Missing ';' after the declaration of %1.</source>
+            <translation>%1 的声明后缺少 ';'。</translation>
+        </message>
+        <message>
+            <source>'[' and the index range, e.g. ARRAY[1..10]</source>
+            <translation>'[' 和下标范围，例如 ARRAY[1..10]</translation>
+        </message>
+        <message>
+            <source>'..' between the bounds</source>
+            <translation>上下限之间的 '..'</translation>
+        </message>
+        <message>
+            <source>This STRUCT has no END_STRUCT.</source>
+            <translation>此 STRUCT 没有 END_STRUCT。</translation>
+        </message>
+        <message>
+            <source>an enumeration value</source>
+            <translation>枚举值</translation>
+        </message>
+        <message>
+            <source>')' after the enumeration values</source>
+            <translation>枚举值后面的 ')'</translation>
+        </message>
+        <message>
+            <source>the closing bracket of the string length</source>
+            <translation>字符串长度的右括号</translation>
+        </message>
+        <message>
+            <source>a type</source>
+            <translation>类型</translation>
+        </message>
+        <message>
+            <source>')' after the repeated value</source>
+            <translation>重复值后面的 ')'</translation>
+        </message>
+        <message>
+            <source>']' at the end of the array's initial values</source>
+            <translation>数组初始值末尾的 ']'</translation>
+        </message>
+        <message>
+            <source>a member name</source>
+            <translation>成员名</translation>
+        </message>
+        <message>
+            <source>')' at the end of the structure's initial values</source>
+            <translation>结构初始值末尾的 ')'</translation>
+        </message>
+        <message>
+            <source>INITIAL_STEP, STEP, TRANSITION or ACTION</source>
+            <translation>INITIAL_STEP、STEP、TRANSITION 或 ACTION</translation>
+        </message>
+        <message>
+            <source>the name of the step</source>
+            <translation>步的名称</translation>
+        </message>
+        <message>
+            <source>':' after the step name</source>
+            <translation>步名称后的 ':'</translation>
+        </message>
+        <message>
+            <source>an action name</source>
+            <translation>动作名称</translation>
+        </message>
+        <message>
+            <source>an action qualifier such as N, S, R, L or D</source>
+            <translation>动作限定符，例如 N、S、R、L 或 D</translation>
+        </message>
+        <message>
+            <source>a duration or an indicator variable</source>
+            <translation>时间或指示变量</translation>
+        </message>
+        <message>
+            <source>Missing ';' after the action association.</source>
+            <translation>动作关联后缺少 ';'。</translation>
+        </message>
+        <message>
+            <source>Step %1 has no END_STEP.</source>
+            <translation>步 %1 没有 END_STEP。</translation>
+        </message>
+        <message>
+            <source>a step name</source>
+            <translation>步名称</translation>
+        </message>
+        <message>
+            <source>')' after the step names</source>
+            <translation>步名称后面的 ')'</translation>
+        </message>
+        <message>
+            <source>':=' and the transition condition</source>
+            <translation>':=' 和转换条件</translation>
+        </message>
+        <message>
+            <source>This TRANSITION has no END_TRANSITION.</source>
+            <translation>此 TRANSITION 没有 END_TRANSITION。</translation>
+        </message>
+        <message>
+            <source>Missing ';' at the end of the statement.</source>
+            <translation>语句末尾缺少 ';'。</translation>
+        </message>
+        <message>
+            <source>every ST statement ends with ';'</source>
+            <translation>每条 ST 语句都以 ';' 结尾</translation>
+        </message>
+        <message>
+            <source>'=' compares two values; to assign a value write ':='.</source>
+            <translation>'=' 用于比较两个值；赋值请写 ':='。</translation>
+        </message>
+        <message>
+            <source>write %1 := ...;</source>
+            <translation>写成 %1 := ...;</translation>
+        </message>
+        <message>
+            <source>Expected ':=' or a call after '%1'.</source>
+            <translation>'%1' 后面应为 ':=' 或调用。</translation>
+        </message>
+        <message>
+            <source>This %1 has no matching %2.</source>
+            <translation>此 %1 没有对应的 %2。</translation>
+        </message>
+        <message>
+            <source>add %1; after the last statement that belongs to it</source>
+            <translation>在属于它的最后一条语句后添加 %1;</translation>
+        </message>
+        <message>
+            <source>A condition compares with '=', not ':='.</source>
+            <translation>条件用 '=' 比较，而不是 ':='。</translation>
+        </message>
+        <message>
+            <source>a case label such as 1:, 2, 3: or 10..20:</source>
+            <translation>CASE 标号，例如 1:、2, 3: 或 10..20:</translation>
+        </message>
+        <message>
+            <source>':' after the case label</source>
+            <translation>CASE 标号后的 ':'</translation>
+        </message>
+        <message>
+            <source>the control variable of the FOR loop</source>
+            <translation>FOR 循环的控制变量</translation>
+        </message>
+        <message>
+            <source>':=' and the start value</source>
+            <translation>':=' 和起始值</translation>
+        </message>
+        <message>
+            <source>This REPEAT has no UNTIL condition.</source>
+            <translation>此 REPEAT 没有 UNTIL 条件。</translation>
+        </message>
+        <message>
+            <source>a value</source>
+            <translation>一个值</translation>
+        </message>
+        <message>
+            <source>a value, a variable or a function call</source>
+            <translation>值、变量或函数调用</translation>
+        </message>
+        <message>
+            <source>a member name or a bit number after '.'</source>
+            <translation>'.' 后面的成员名或位号</translation>
+        </message>
+        <message>
+            <source>')' or ',' in the argument list</source>
+            <translation>参数列表中的 ')' 或 ','</translation>
+        </message>
+        <message>
+            <source>an IL operator such as LD, ST, ADD or JMP</source>
+            <translation>指令表操作符，例如 LD、ST、ADD 或 JMP</translation>
+        </message>
+        <message>
+            <source>An IL instruction takes one operand; %1 is left over.</source>
+            <translation>指令表指令只有一个操作数；%1 是多余的。</translation>
+        </message>
+        <message>
+            <source>put each instruction on its own line</source>
+            <translation>每条指令单独写一行</translation>
+        </message>
+        <message>
+            <source>There is no global variable %1 for this VAR_EXTERNAL.</source>
+            <translation>没有与此 VAR_EXTERNAL 对应的全局变量 %1。</translation>
+        </message>
+        <message>
+            <source>declare it in VAR_GLOBAL</source>
+            <translation>在 VAR_GLOBAL 中声明</translation>
+        </message>
+        <message>
+            <source>%1 is declared as %2 here but as %3 in VAR_GLOBAL.</source>
+            <translation>%1 在此处声明为 %2，但在 VAR_GLOBAL 中声明为 %3。</translation>
+        </message>
+        <message>
+            <source>%1 is a sequential function chart; charts run with the next version of the interpreter.</source>
+            <translation>%1 是顺序功能图；顺序功能图将在下一版解释器中运行。</translation>
+        </message>
+        <message>
+            <source>Only the first configuration (%1) runs.</source>
+            <translation>只运行第一个配置（%1）。</translation>
+        </message>
+        <message>
+            <source>SINGLE needs a global BOOL variable.</source>
+            <translation>SINGLE 需要一个全局 BOOL 变量。</translation>
+        </message>
+        <message>
+            <source>There is no PROGRAM called %1.</source>
+            <translation>没有名为 %1 的 PROGRAM。</translation>
+        </message>
+        <message>
+            <source>There is no task called %1.</source>
+            <translation>没有名为 %1 的任务。</translation>
+        </message>
+        <message>
+            <source>Recursion is not allowed in IEC 61131-3: %1 calls itself (%2).</source>
+            <translation>IEC 61131-3 不允许递归：%1 调用了自身（%2）。</translation>
+        </message>
+        <message>
+            <source>The type %1 is declared twice.</source>
+            <translation>类型 %1 被声明了两次。</translation>
+        </message>
+        <message>
+            <source>There are two POUs called %1.</source>
+            <translation>有两个名为 %1 的 POU。</translation>
+        </message>
+        <message>
+            <source>%1 is already the name of a type.</source>
+            <translation>%1 已经是一个类型的名称。</translation>
+        </message>
+        <message>
+            <source>The type %1 is defined in terms of itself.</source>
+            <translation>类型 %1 是用自身定义的。</translation>
+        </message>
+        <message>
+            <source>%1 is a %2, not a type; only function blocks can be instantiated.</source>
+            <translation>%1 是 %2，不是类型；只有功能块可以实例化。</translation>
+        </message>
+        <message>
+            <source>Unknown type '%1'.</source>
+            <translation>未知类型 '%1'。</translation>
+        </message>
+        <message>
+            <source>A string holds 1 to 65535 characters, not %1.</source>
+            <translation>字符串可容纳 1 到 65535 个字符，而不是 %1。</translation>
+        </message>
+        <message>
+            <source>The array range %1..%2 is empty; the upper bound must not be below the lower one.</source>
+            <translation>数组范围 %1..%2 为空；上限不能小于下限。</translation>
+        </message>
+        <message>
+            <source>This array needs %1 MB; an array may use at most 256 MB.</source>
+            <translation>此数组需要 %1 MB；数组最多只能使用 256 MB。</translation>
+        </message>
+        <message>
+            <source>A subrange needs an integer type, not %1.</source>
+            <translation>子范围需要整数类型，而不是 %1。</translation>
+        </message>
+        <message>
+            <source>The structure has two members called %1.</source>
+            <translation>该结构有两个名为 %1 的成员。</translation>
+        </message>
+        <message>
+            <source>%1 contains an instance of itself, which would never end.</source>
+            <translation>%1 包含自身的实例，这将无穷无尽。</translation>
+        </message>
+        <message>
+            <source>%1 is declared twice.</source>
+            <translation>%1 被声明了两次。</translation>
+        </message>
+        <message>
+            <source>A function cannot hold a function block instance (%1); use a function block instead.</source>
+            <translation>函数不能包含功能块实例（%1）；请改用功能块。</translation>
+        </message>
+        <message>
+            <source>The program needs more than 1 GB of memory for its variables.</source>
+            <translation>该程序的变量需要超过 1 GB 的内存。</translation>
+        </message>
+        <message>
+            <source>The global variable %1 is declared twice.</source>
+            <translation>全局变量 %1 被声明了两次。</translation>
+        </message>
+        <message>
+            <source>The address %1 does not fit a variable of type %2.</source>
+            <translation>地址 %1 与类型为 %2 的变量不匹配。</translation>
+        </message>
+        <message>
+            <source>A %1 is initialised with a single value.</source>
+            <translation>%1 用单个值初始化。</translation>
+        </message>
+        <message>
+            <source>There are more initial values than the array's %1 elements.</source>
+            <translation>初始值多于数组的 %1 个元素。</translation>
+        </message>
+        <message>
+            <source>An array is initialised with a list in brackets, e.g. [1, 2, 3] or [10(0)].</source>
+            <translation>数组用方括号中的列表初始化，例如 [1, 2, 3] 或 [10(0)]。</translation>
+        </message>
+        <message>
+            <source>%1 has no member %2.</source>
+            <translation>%1 没有成员 %2。</translation>
+        </message>
+        <message>
+            <source>A structure is initialised with (member := value, ...).</source>
+            <translation>结构用 (成员 := 值, ...) 初始化。</translation>
+        </message>
+        <message>
+            <source>The text has %1 characters but the string holds only %2.</source>
+            <translation>文本有 %1 个字符，但字符串只能容纳 %2 个。</translation>
+        </message>
+        <message>
+            <source>This must be a constant: a literal, a CONSTANT or an expression of them.</source>
+            <translation>此处必须是常量：字面量、CONSTANT 或由它们组成的表达式。</translation>
+        </message>
+        <message>
+            <source>This must be a constant integer.</source>
+            <translation>此处必须是整数常量。</translation>
+        </message>
+        <message>
+            <source>%1 is a constant and cannot be changed.</source>
+            <translation>%1 是常量，不能修改。</translation>
+        </message>
+        <message>
+            <source>%1 is an output of the function block and can only be read.</source>
+            <translation>%1 是功能块的输出，只能读取。</translation>
+        </message>
+        <message>
+            <source>%1 is internal to the function block.</source>
+            <translation>%1 是功能块的内部变量。</translation>
+        </message>
+        <message>
+            <source>%1 has no value %2.</source>
+            <translation>%1 没有值 %2。</translation>
+        </message>
+        <message>
+            <source>%1 is a value of several enumerations.</source>
+            <translation>%1 是多个枚举的值。</translation>
+        </message>
+        <message>
+            <source>write the type in front, e.g. Type#%1</source>
+            <translation>在前面写上类型，例如 Type#%1</translation>
+        </message>
+        <message>
+            <source>%1 is a POU, not a variable.</source>
+            <translation>%1 是 POU，不是变量。</translation>
+        </message>
+        <message>
+            <source>Unknown variable '%1'.</source>
+            <translation>未知变量 '%1'。</translation>
+        </message>
+        <message>
+            <source>declare it in a VAR section</source>
+            <translation>在 VAR 段中声明</translation>
+        </message>
+        <message>
+            <source>%1 is a %2 and has no members.</source>
+            <translation>%1 是 %2，没有成员。</translation>
+        </message>
+        <message>
+            <source>%1 has no bit %2.</source>
+            <translation>%1 没有第 %2 位。</translation>
+        </message>
+        <message>
+            <source>%1 is not an array.</source>
+            <translation>%1 不是数组。</translation>
+        </message>
+        <message>
+            <source>%1 has %2 dimension(s) but %3 index(es) are given.</source>
+            <translation>%1 有 %2 维，但给出了 %3 个下标。</translation>
+        </message>
+        <message>
+            <source>The index %1 is outside the range %2..%3 of %4.</source>
+            <translation>下标 %1 超出 %4 的范围 %2..%3。</translation>
+        </message>
+        <message>
+            <source>An array index must be an integer, not %1.</source>
+            <translation>数组下标必须是整数，而不是 %1。</translation>
+        </message>
+        <message>
+            <source>This is not a variable.</source>
+            <translation>这不是变量。</translation>
+        </message>
+        <message>
+            <source>The value %1 is outside the range %2..%3 of %4.</source>
+            <translation>值 %1 超出 %4 的范围 %2..%3。</translation>
+        </message>
+        <message>
+            <source>A function block instance cannot be assigned; call it instead.</source>
+            <translation>不能给功能块实例赋值；请调用它。</translation>
+        </message>
+        <message>
+            <source>'**' needs numbers, not %1 and %2.</source>
+            <translation>'**' 需要数字，而不是 %1 和 %2。</translation>
+        </message>
+        <message>
+            <source>'%1' cannot combine %2 and %3.</source>
+            <translation>'%1' 不能组合 %2 和 %3。</translation>
+        </message>
+        <message>
+            <source>BOOL or a bit string (BYTE, WORD, ...)</source>
+            <translation>BOOL 或位串（BYTE、WORD 等）</translation>
+        </message>
+        <message>
+            <source>integers</source>
+            <translation>整数</translation>
+        </message>
+        <message>
+            <source>numbers</source>
+            <translation>数字</translation>
+        </message>
+        <message>
+            <source>'%1' needs %2, not %3.</source>
+            <translation>'%1' 需要 %2，而不是 %3。</translation>
+        </message>
+        <message>
+            <source>Division by zero.</source>
+            <translation>除以零。</translation>
+        </message>
+        <message>
+            <source>A %1 cannot be negated.</source>
+            <translation>%1 不能取负。</translation>
+        </message>
+        <message>
+            <source>NOT needs BOOL or a bit string (BYTE, WORD, ...), not %1.</source>
+            <translation>NOT 需要 BOOL 或位串（BYTE、WORD 等），而不是 %1。</translation>
+        </message>
+        <message>
+            <source>an integer literal</source>
+            <translation>整数字面量</translation>
+        </message>
+        <message>
+            <source>'%1' is not a valid literal.</source>
+            <translation>'%1' 不是有效的字面量。</translation>
+        </message>
+        <message>
+            <source>A value of type %1 cannot be used as %2%3 without a conversion.</source>
+            <translation>类型为 %1 的值不经转换不能用作 %2%3。</translation>
+        </message>
+        <message>
+            <source>The value %1 does not fit into %2 (%3 to %4).</source>
+            <translation>值 %1 超出 %2 的范围（%3 到 %4）。</translation>
+        </message>
+        <message>
+            <source>The text has %1 characters but %2 holds only %3.</source>
+            <translation>文本有 %1 个字符，但 %2 只能容纳 %3 个。</translation>
+        </message>
+        <message>
+            <source>A %1 cannot be converted to text.</source>
+            <translation>%1 不能转换为文本。</translation>
+        </message>
+        <message>
+            <source>Text cannot be converted to %1.</source>
+            <translation>文本不能转换为 %1。</translation>
+        </message>
+        <message>
+            <source>A %1 cannot be converted to %2.</source>
+            <translation>%1 不能转换为 %2。</translation>
+        </message>
+        <message>
+            <source>convert it explicitly, e.g. %1_TO_%2(...)</source>
+            <translation>请显式转换，例如 %1_TO_%2(...)</translation>
+        </message>
+        <message>
+            <source>A function block call is a statement of its own.</source>
+            <translation>功能块调用必须是单独的一条语句。</translation>
+        </message>
+        <message>
+            <source>The action %1 takes no arguments.</source>
+            <translation>动作 %1 不接受参数。</translation>
+        </message>
+        <message>
+            <source>%1 is a %2, not a function block; it cannot be called.</source>
+            <translation>%1 是 %2，不是功能块，不能调用。</translation>
+        </message>
+        <message>
+            <source>call %1(...); then read its outputs, e.g. %1.Q</source>
+            <translation>调用 %1(...)；然后读取其输出，例如 %1.Q</translation>
+        </message>
+        <message>
+            <source>A program cannot be called from another POU; it runs in a task.</source>
+            <translation>程序不能被其他 POU 调用；它在任务中运行。</translation>
+        </message>
+        <message>
+            <source>%1 is a function block type; declare an instance (e.g. inst : %1;) and call that.</source>
+            <translation>%1 是功能块类型；请声明一个实例（例如 inst : %1;）并调用该实例。</translation>
+        </message>
+        <message>
+            <source>%1 has no outputs to connect with '=&gt;'.</source>
+            <translation>%1 没有可用 '=&gt;' 连接的输出。</translation>
+        </message>
+        <message>
+            <source>Unknown function '%1'.</source>
+            <translation>未知函数 '%1'。</translation>
+        </message>
+        <message>
+            <source>%1 takes only %2 input(s).</source>
+            <translation>%1 只有 %2 个输入。</translation>
+        </message>
+        <message>
+            <source>%1 has no input or output called %2.</source>
+            <translation>%1 没有名为 %2 的输入或输出。</translation>
+        </message>
+        <message>
+            <source>%1 is not an output of %2; connect inputs with ':='.</source>
+            <translation>%1 不是 %2 的输出；输入请用 ':=' 连接。</translation>
+        </message>
+        <message>
+            <source>%1 is an output of %2; connect it with '=&gt;'.</source>
+            <translation>%1 是 %2 的输出；请用 '=&gt;' 连接。</translation>
+        </message>
+        <message>
+            <source>write %1 =&gt; variable</source>
+            <translation>写成 %1 =&gt; 变量</translation>
+        </message>
+        <message>
+            <source>VAR_IN_OUT %1 needs a variable.</source>
+            <translation>VAR_IN_OUT %1 需要一个变量。</translation>
+        </message>
+        <message>
+            <source>%1 takes only %2 argument(s).</source>
+            <translation>%1 只接受 %2 个参数。</translation>
+        </message>
+        <message>
+            <source>%1 has no parameter called %2.</source>
+            <translation>%1 没有名为 %2 的参数。</translation>
+        </message>
+        <message>
+            <source>Connect inputs of %1 with ':=' and outputs with '=&gt;'.</source>
+            <translation>%1 的输入用 ':=' 连接，输出用 '=&gt;' 连接。</translation>
+        </message>
+        <message>
+            <source>%1 needs a variable for its VAR_IN_OUT %2.</source>
+            <translation>%1 的 VAR_IN_OUT %2 需要一个变量。</translation>
+        </message>
+        <message>
+            <source>%1 needs a REAL or LREAL, not %2.</source>
+            <translation>%1 需要 REAL 或 LREAL，而不是 %2。</translation>
+        </message>
+        <message>
+            <source>The inputs of %1 have types that do not go together (%2).</source>
+            <translation>%1 的输入类型互不兼容（%2）。</translation>
+        </message>
+        <message>
+            <source>%1 needs numbers, times or bit strings.</source>
+            <translation>%1 需要数字、时间或位串。</translation>
+        </message>
+        <message>
+            <source>%1 has no input %2.</source>
+            <translation>%1 没有输入 %2。</translation>
+        </message>
+        <message>
+            <source>%1 needs a bit string (BYTE, WORD, DWORD, LWORD), not %2.</source>
+            <translation>%1 需要位串（BYTE、WORD、DWORD、LWORD），而不是 %2。</translation>
+        </message>
+        <message>
+            <source>convert it first, e.g. %1_TO_%2</source>
+            <translation>先进行转换，例如 %1_TO_%2</translation>
+        </message>
+        <message>
+            <source>A length or position must be an integer, not %1.</source>
+            <translation>长度或位置必须是整数，而不是 %1。</translation>
+        </message>
+        <message>
+            <source>%1 needs a STRING or WSTRING, not %2.</source>
+            <translation>%1 需要 STRING 或 WSTRING，而不是 %2。</translation>
+        </message>
+        <message>
+            <source>This time function needs a %1, not %2.</source>
+            <translation>此时间函数需要 %1，而不是 %2。</translation>
+        </message>
+        <message>
+            <source>ABS needs a number, not %1.</source>
+            <translation>ABS 需要数字，而不是 %1。</translation>
+        </message>
+        <message>
+            <source>TRUNC needs a REAL or LREAL, not %1.</source>
+            <translation>TRUNC 需要 REAL 或 LREAL，而不是 %1。</translation>
+        </message>
+        <message>
+            <source>(the G input of SEL)</source>
+            <translation>（SEL 的 G 输入）</translation>
+        </message>
+        <message>
+            <source>The selector K of MUX must be an integer.</source>
+            <translation>MUX 的选择器 K 必须是整数。</translation>
+        </message>
+        <message>
+            <source>CONCAT_DATE_TOD needs a DATE and a TIME_OF_DAY.</source>
+            <translation>CONCAT_DATE_TOD 需要一个 DATE 和一个 TIME_OF_DAY。</translation>
+        </message>
+        <message>
+            <source>%1 takes one argument.</source>
+            <translation>%1 只接受一个参数。</translation>
+        </message>
+        <message>
+            <source>(the input of %1)</source>
+            <translation>（%1 的输入）</translation>
+        </message>
+        <message>
+            <source>%1 needs a bit string holding BCD digits.</source>
+            <translation>%1 需要包含 BCD 数字的位串。</translation>
+        </message>
+        <message>
+            <source>%1 takes %2%3 argument(s), not %4.</source>
+            <translation>%1 接受 %2%3 个参数，而不是 %4 个。</translation>
+        </message>
+        <message>
+            <source>at least </source>
+            <translation>至少 </translation>
+        </message>
+        <message>
+            <source>An argument of %1 is missing.</source>
+            <translation>缺少 %1 的一个参数。</translation>
+        </message>
+        <message>
+            <source>A condition must be BOOL, not %1.</source>
+            <translation>条件必须是 BOOL，而不是 %1。</translation>
+        </message>
+        <message>
+            <source>compare it, e.g. x &lt;&gt; 0</source>
+            <translation>进行比较，例如 x &lt;&gt; 0</translation>
+        </message>
+        <message>
+            <source>CASE needs an integer or an enumeration, not %1.</source>
+            <translation>CASE 需要整数或枚举，而不是 %1。</translation>
+        </message>
+        <message>
+            <source>The FOR loop needs an integer variable as its counter.</source>
+            <translation>FOR 循环需要一个整数变量作为计数器。</translation>
+        </message>
+        <message>
+            <source>(the end value)</source>
+            <translation>（终值）</translation>
+        </message>
+        <message>
+            <source>(the step)</source>
+            <translation>（步长）</translation>
+        </message>
+        <message>
+            <source>A FOR loop with step 0 never ends.</source>
+            <translation>步长为 0 的 FOR 循环永远不会结束。</translation>
+        </message>
+        <message>
+            <source>%1 is only allowed inside a FOR, WHILE or REPEAT loop.</source>
+            <translation>%1 只能用在 FOR、WHILE 或 REPEAT 循环内。</translation>
+        </message>
+        <message>
+            <source>%1 needs a current result; load one first with LD.</source>
+            <translation>%1 需要当前结果；请先用 LD 装载一个值。</translation>
+        </message>
+        <message>
+            <source>%1 needs an operand.</source>
+            <translation>%1 需要一个操作数。</translation>
+        </message>
+        <message>
+            <source>(the condition of %1)</source>
+            <translation>（%1 的条件）</translation>
+        </message>
+        <message>
+            <source>The label %1 is defined twice.</source>
+            <translation>标号 %1 被定义了两次。</translation>
+        </message>
+        <message>
+            <source>This ')' has no matching operator with '('.</source>
+            <translation>此 ')' 没有对应的带 '(' 的操作符。</translation>
+        </message>
+        <message>
+            <source>%1 needs a label to jump to.</source>
+            <translation>%1 需要一个跳转标号。</translation>
+        </message>
+        <message>
+            <source>%1 is not a function block with an input %2.</source>
+            <translation>%1 不是具有输入 %2 的功能块。</translation>
+        </message>
+        <message>
+            <source>This '(' is never closed with ')'.</source>
+            <translation>此 '(' 从未用 ')' 闭合。</translation>
+        </message>
+        <message>
+            <source>There is no label %1 to jump to.</source>
+            <translation>没有可跳转的标号 %1。</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::interp::Runtime</name>
+        <message>
+            <source>Integer division by zero.</source>
+            <translation>整数除以零。</translation>
+        </message>
+        <message>
+            <source>Array index out of range.</source>
+            <translation>数组下标越界。</translation>
+        </message>
+        <message>
+            <source>The text does not fit into the string variable.</source>
+            <translation>文本超出字符串变量的容量。</translation>
+        </message>
+        <message>
+            <source>The program ran too long in one cycle; is there an endless loop?</source>
+            <translation>程序在一个周期内运行时间过长；是否有死循环？</translation>
+        </message>
+        <message>
+            <source>Calls are nested too deeply.</source>
+            <translation>调用嵌套太深。</translation>
+        </message>
+        <message>
+            <source>The program cannot run (it did not compile).</source>
+            <translation>程序无法运行（编译未通过）。</translation>
+        </message>
+        <message>
+            <source>A value outside the subrange of its type was assigned.</source>
+            <translation>赋给变量的值超出了其类型的子范围。</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::AddDataTypeCommand</name>
+        <message>
+            <source>Add data type %1</source>
+            <translation>添加数据类型 %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::AddPouCommand</name>
+        <message>
+            <source>Add POU %1</source>
+            <translation>添加 POU %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::AddPouPartCommand</name>
+        <message>
+            <source>Add action %1</source>
+            <translation>添加动作 %1</translation>
+        </message>
+        <message>
+            <source>Add transition %1</source>
+            <translation>添加转换 %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::AddVariableCommand</name>
+        <message>
+            <source>Add variable %1</source>
+            <translation>添加变量 %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::ChangeDataTypeCommand</name>
+        <message>
+            <source>Change data type %1</source>
+            <translation>修改数据类型 %1</translation>
+        </message>
+        <message>
+            <source>Rename %1 to %2</source>
+            <translation>将 %1 重命名为 %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::ChangeElementCommand</name>
+        <message>
+            <source>Change %1</source>
+            <translation>修改 %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::ChangeVariableCommand</name>
+        <message>
+            <source>Change variable %1</source>
+            <translation>修改变量 %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::ConnectCommand</name>
+        <message>
+            <source>Connect</source>
+            <translation>连接</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::DisconnectCommand</name>
+        <message>
+            <source>Disconnect</source>
+            <translation>断开连接</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::DuplicatePouCommand</name>
+        <message>
+            <source>Duplicate POU as %1</source>
+            <translation>复制 POU 为 %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::InsertElementCommand</name>
+        <message>
+            <source>Insert %1</source>
+            <translation>插入 %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::MoveElementsCommand</name>
+        <message numerus="yes">
+            <source>Move %n element(s)</source>
+            <translation>
+                <numerusform>移动 %n 个元素</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::RemoveDataTypeCommand</name>
+        <message>
+            <source>Delete data type %1</source>
+            <translation>删除数据类型 %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::RemoveElementCommand</name>
+        <message>
+            <source>Delete %1</source>
+            <translation>删除 %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::RemovePouCommand</name>
+        <message>
+            <source>Delete POU %1</source>
+            <translation>删除 POU %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::RemovePouPartCommand</name>
+        <message>
+            <source>Delete action %1</source>
+            <translation>删除动作 %1</translation>
+        </message>
+        <message>
+            <source>Delete transition %1</source>
+            <translation>删除转换 %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::RemoveVariableCommand</name>
+        <message>
+            <source>Delete variable %1</source>
+            <translation>删除变量 %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::RenamePouCommand</name>
+        <message>
+            <source>Rename %1 to %2</source>
+            <translation>将 %1 重命名为 %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::RenamePouPartCommand</name>
+        <message>
+            <source>Rename %1 to %2</source>
+            <translation>将 %1 重命名为 %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::SetBodyTextCommand</name>
+        <message>
+            <source>Edit text</source>
+            <translation>编辑文本</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::SetInstancesCommand</name>
+        <message>
+            <source>Change configurations</source>
+            <translation>更改配置</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::SetInterfaceCommand</name>
+        <message>
+            <source>Edit declarations</source>
+            <translation>编辑声明</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::plcopen::Reader</name>
+        <message>
+            <source>The elements are nested too deeply; the content below is skipped.</source>
+            <translation>元素嵌套过深；其下的内容被跳过。</translation>
+        </message>
+        <message>
+            <source>The attribute %1="%2" of &lt;%3&gt; has an invalid value; it is kept as written.</source>
+            <translation>&lt;%3&gt; 的属性 %1="%2" 的值无效；按原样保留。</translation>
+        </message>
+        <message>
+            <source>&lt;%1&gt; lacks the required attribute '%2'.</source>
+            <translation>&lt;%1&gt; 缺少必需的属性 '%2'。</translation>
+        </message>
+        <message>
+            <source>&lt;%1&gt; lacks the required element &lt;%2&gt;.</source>
+            <translation>&lt;%1&gt; 缺少必需的元素 &lt;%2&gt;。</translation>
+        </message>
+        <message>
+            <source>Unknown attribute '%1' on &lt;%2&gt; is kept as it is.</source>
+            <translation>&lt;%2&gt; 上的未知属性 '%1' 按原样保留。</translation>
+        </message>
+        <message>
+            <source>Unknown attribute '%1' on &lt;%2&gt; is ignored.</source>
+            <translation>&lt;%2&gt; 上的未知属性 '%1' 被忽略。</translation>
+        </message>
+        <message>
+            <source>Unknown element &lt;%1&gt; in &lt;%2&gt; is kept as it is.</source>
+            <translation>&lt;%2&gt; 中的未知元素 &lt;%1&gt; 按原样保留。</translation>
+        </message>
+        <message>
+            <source>Unknown element &lt;%1&gt; in &lt;%2&gt; is ignored.</source>
+            <translation>&lt;%2&gt; 中的未知元素 &lt;%1&gt; 被忽略。</translation>
+        </message>
+        <message>
+            <source>A declaration in addData is nested too deeply to read; it is kept as it is.</source>
+            <translation>addData 中的声明嵌套过深，无法读取；按原样保留。</translation>
+        </message>
+        <message>
+            <source>&lt;%1&gt; names no data type.</source>
+            <translation>&lt;%1&gt; 没有指定数据类型。</translation>
+        </message>
+        <message>
+            <source>The data type &lt;%1&gt; is not in the PLCopen schema; it is kept by name.</source>
+            <translation>数据类型 &lt;%1&gt; 不属于 PLCopen 模式；按名称保留。</translation>
+        </message>
+        <message>
+            <source>The namespace '%1' is not PLCopen TC6 XML 2.01; the file is read anyway.</source>
+            <translation>命名空间 '%1' 不是 PLCopen TC6 XML 2.01；仍然读取该文件。</translation>
+        </message>
+        <message>
+            <source>The file is not well-formed XML: %1.</source>
+            <translation>该文件不是格式正确的 XML：%1。</translation>
+        </message>
+        <message>
+            <source>The root element is &lt;%1&gt;, not &lt;project&gt;: this is not a PLCopen XML file.</source>
+            <translation>根元素是 &lt;%1&gt; 而不是 &lt;project&gt;：这不是 PLCopen XML 文件。</translation>
+        </message>
+        <message>
+            <source>Cannot open %1: %2.</source>
+            <translation>无法打开 %1：%2。</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::plcopen::Writer</name>
+        <message>
+            <source>Cannot save %1: %2.</source>
+            <translation>无法保存 %1：%2。</translation>
+        </message>
+    </context>
+    <context>
+        <name>main</name>
+        <message>
+            <source>Open Project</source>
+            <translation>打开项目</translation>
+        </message>
+    </context>
 </TS>

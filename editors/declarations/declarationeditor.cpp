@@ -252,6 +252,21 @@ void DeclarationEditor::selectRow(int row)
         m_table->setCurrentIndex(m_tableModel->index(row, int(DeclarationColumn::Name)));
 }
 
+bool DeclarationEditor::showVariable(const QString &name)
+{
+    const std::vector<DeclarationRow> &rows = m_tableModel->rows();
+    for (size_t row = 0; row < rows.size(); ++row) {
+        if (rows[row].name.compare(name, Qt::CaseInsensitive) != 0)
+            continue;
+        showTable();
+        selectRow(int(row));
+        m_table->scrollTo(m_table->currentIndex());
+        m_table->setFocus(Qt::OtherFocusReason);
+        return true;
+    }
+    return false;
+}
+
 void DeclarationEditor::addRow()
 {
     std::vector<DeclarationRow> rows = m_tableModel->rows();

@@ -55,6 +55,9 @@ public:
 
     // Applies text typed but not yet applied (the text waits for a pause).
     void flushPendingEdit();
+    // Go to definition: shows the table with the variable's row current and focused. False when
+    // the POU declares no variable of that name.
+    bool showVariable(const QString &name);
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;

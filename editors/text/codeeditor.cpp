@@ -658,6 +658,7 @@ void CodeEditor::applyFoldVisibility()
 void CodeEditor::paintEvent(QPaintEvent *event)
 {
     QPlainTextEdit::paintEvent(event);
+    paintOnlineChips(event);
     if (!m_hasHiddenBlocks)
         return;
     // A "…" box after each folded line.
@@ -689,6 +690,8 @@ void CodeEditor::paintEvent(QPaintEvent *event)
 
 void CodeEditor::keyPressEvent(QKeyEvent *event)
 {
+    if (refuseEditWhileOnline(event))
+        return;
     const bool popupVisible = m_completer->popup()->isVisible();
     if (popupVisible) {
         switch (event->key()) {
@@ -823,6 +826,10 @@ void CodeEditor::handleTab(bool backward)
 
 void CodeEditor::toggleComment()
 {
+    if (m_online) {
+        Q_EMIT editRefused(onlineEditRefusal());
+        return;
+    }
     QTextCursor cursor = textCursor();
     const QTextBlock first = document()->findBlock(cursor.selectionStart());
     QTextBlock last = document()->findBlock(cursor.selectionEnd());
@@ -931,6 +938,10 @@ void CodeEditor::insertCompletion(const QString &text)
 
 void CodeEditor::openInputAssistant()
 {
+    if (m_online) {
+        Q_EMIT editRefused(onlineEditRefusal());
+        return;
+    }
     if (m_assistant)
         m_assistant->close();
     auto *dialog = new InputAssistantDialog(m_language, m_provider, this);
@@ -1006,14 +1017,90 @@ void CodeEditor::contextMenuEvent(QContextMenuEvent *event)
     assistant->setShortcut(Qt::Key_F2);
     QAction *comment = menu->addAction(tr("Toggle Comment"), this, &CodeEditor::toggleComment);
     comment->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Slash));
+    // Commands the application adds to the editor (Declare Variable...).
+    menu->addActions(actions());
     menu->addSeparator();
     menu->addAction(tr("Fold All"), this, [this] {
         for (const FoldRange &range : std::as_const(m_foldRanges))
             fold(range.firstLine);
     });
     menu->addAction(tr("Unfold All"), this, &CodeEditor::unfoldAll);
+    menu->addSeparator();
+    const QString watchPath = identifierPathAt(cursorForPosition(event->pos()).position());
+    QAction *watch = menu->addAction(tr("Add to Watch"), this, [this, watchPath] { Q_EMIT addToWatchRequested(watchPath); });
+    watch->setEnabled(!watchPath.isEmpty());
     menu->exec(event->globalPos());
     delete menu;
+}
+
+// ---- online mode ----------------------------------------------------------------------------
+
+QString CodeEditor::onlineEditRefusal()
+{
+    return tr("The program is online, so its text cannot be changed. Choose Online > Logout to edit it.");
+}
+
+void CodeEditor::setOnline(bool online)
+{
+    if (online == m_online)
+        return;
+    m_online = online;
+    setReadOnly(online);
+    // Read-only hides the text cursor, which online mode still uses to point at variables.
+    setTextInteractionFlags(online ? Qt::TextSelectableByMouse | Qt::TextSelectableByKeyboard
+                                   : Qt::TextEditorInteraction);
+    if (!online)
+        m_onlineChips.clear();
+    viewport()->update();
+}
+
+void CodeEditor::setOnlineChips(std::vector<QList<OnlineChip>> chipsByLine)
+{
+    if (chipsByLine == m_onlineChips)
+        return;
+    m_onlineChips = std::move(chipsByLine);
+    viewport()->update();
+}
+
+bool CodeEditor::refuseEditWhileOnline(const QKeyEvent *event)
+{
+    if (!m_online)
+        return false;
+    const int key = event->key();
+    const bool changesText = (!event->text().isEmpty() && event->text().front().isPrint()
+                                 && !(event->modifiers() & (Qt::ControlModifier | Qt::AltModifier)))
+        || key == Qt::Key_Backspace || key == Qt::Key_Delete || key == Qt::Key_Return || key == Qt::Key_Enter
+        || key == Qt::Key_Tab || key == Qt::Key_Backtab || event->matches(QKeySequence::Paste)
+        || event->matches(QKeySequence::Cut) || event->matches(QKeySequence::Undo)
+        || event->matches(QKeySequence::Redo) || (key == Qt::Key_Slash && event->modifiers() & Qt::ControlModifier)
+        || (key == Qt::Key_F2 && event->modifiers() == Qt::NoModifier)
+        || (key == Qt::Key_Space && event->modifiers() & Qt::ControlModifier);
+    if (!changesText)
+        return false;
+    QToolTip::showText(viewport()->mapToGlobal(cursorRect().bottomLeft()), onlineEditRefusal(), this);
+    Q_EMIT editRefused(onlineEditRefusal());
+    return true;
+}
+
+void CodeEditor::paintOnlineChips(const QPaintEvent *event)
+{
+    if (!m_online || m_onlineChips.empty())
+        return;
+    QPainter painter(viewport());
+    const QPointF offset = contentOffset();
+    for (QTextBlock block = firstVisibleBlock(); block.isValid(); block = block.next()) {
+        const QRectF geometry = blockBoundingGeometry(block).translated(offset);
+        if (geometry.top() > event->rect().bottom())
+            break;
+        const auto line = size_t(block.blockNumber());
+        if (!block.isVisible() || line >= m_onlineChips.size() || m_onlineChips[line].isEmpty())
+            continue;
+        const QTextLayout *layout = block.layout();
+        const qreal textWidth = layout->lineCount() > 0 ? layout->lineAt(0).naturalTextWidth() : 0;
+        const qreal x = geometry.left() + document()->documentMargin() + textWidth + 16;
+        const QRectF lineRect(geometry.left(), geometry.top(), geometry.width(), fontMetrics().height());
+        editors::paintOnlineChips(painter, lineRect, x, m_onlineChips[line], fontMetrics());
+    }
 }
 
 } // namespace iec::editors

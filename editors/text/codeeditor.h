@@ -1,6 +1,7 @@
 #pragma once
 
 #include "editors/text/completion.h"
+#include "editors/text/onlinevalues.h"
 #include "editors/text/textlanguage.h"
 
 #include <QHash>
@@ -74,6 +75,14 @@ public:
     // Emits a pending textEdited now (before saving, switching documents, tests).
     void flushPendingEdit();
 
+    // Online mode: the text is read-only, attempts to edit it are refused with editRefused and a
+    // tooltip, and boxes with current values follow the ends of lines (index = 0-based line).
+    void setOnline(bool online);
+    [[nodiscard]] bool isOnline() const { return m_online; }
+    void setOnlineChips(std::vector<QList<OnlineChip>> chipsByLine);
+    [[nodiscard]] const std::vector<QList<OnlineChip>> &onlineChips() const { return m_onlineChips; }
+    [[nodiscard]] static QString onlineEditRefusal();
+
     [[nodiscard]] int lineNumberAreaWidth() const;
     void paintLineNumberArea(QPaintEvent *event);
     void lineNumberAreaClicked(const QPoint &position);
@@ -90,6 +99,10 @@ Q_SIGNALS:
     // Go to definition on `identifier` (a dotted path) at a 1-based line and column; the
     // application resolves it and calls goToLine or opens another POU.
     void definitionRequested(const QString &identifier, int line, int column);
+    // Online: the user tried to change the text; `message` says why that is not possible.
+    void editRefused(const QString &message);
+    // Context menu "Add to Watch" on a variable (a dotted path as written).
+    void addToWatchRequested(const QString &path);
 
 protected:
     void keyPressEvent(QKeyEvent *event) override;
@@ -137,6 +150,11 @@ private:
     QTimer m_editTimer;
     QTimer m_foldTimer;
     bool m_settingText = false;
+
+    [[nodiscard]] bool refuseEditWhileOnline(const QKeyEvent *event);
+    void paintOnlineChips(const QPaintEvent *event);
+    bool m_online = false;
+    std::vector<QList<OnlineChip>> m_onlineChips;
 };
 
 } // namespace iec::editors

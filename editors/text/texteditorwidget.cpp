@@ -4,6 +4,8 @@
 #include "editors/text/findreplacebar.h"
 
 #include <QAction>
+#include <QLabel>
+#include <QTextDocument>
 #include <QVBoxLayout>
 
 namespace iec::editors {
@@ -16,6 +18,18 @@ TextEditorWidget::TextEditorWidget(TextLanguage language, QWidget *parent)
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(0);
+    m_onlineBanner = new QLabel(this);
+    m_onlineBanner->setObjectName(QStringLiteral("onlineBanner"));
+    m_onlineBanner->setContentsMargins(6, 3, 6, 3);
+    m_onlineBanner->setWordWrap(true);
+    m_onlineBanner->hide();
+    layout->addWidget(m_onlineBanner);
+    connect(m_editor, &CodeEditor::editRefused, this, [this](const QString &message) {
+        m_refusalShown.start();
+        showBanner(message, true);
+    });
+    connect(m_editor, &CodeEditor::addToWatchRequested, this,
+        [this](const QString &path) { Q_EMIT addToWatchRequested(onlineName(onlineInstance(), path)); });
     layout->addWidget(m_editor, 1);
     layout->addWidget(m_findBar);
     m_findBar->hide();
@@ -29,9 +43,91 @@ TextEditorWidget::TextEditorWidget(TextLanguage language, QWidget *parent)
         addAction(action);
     };
     addShortcut(QKeySequence::Find, [this] { m_findBar->activate(false); });
-    addShortcut(QKeySequence::Replace, [this] { m_findBar->activate(true); });
+    addShortcut(QKeySequence::Replace, [this] {
+        if (m_online)
+            Q_EMIT m_editor->editRefused(CodeEditor::onlineEditRefusal());
+        else
+            m_findBar->activate(true);
+    });
     addShortcut(QKeySequence::FindNext, [this] { m_findBar->findNext(); });
     addShortcut(QKeySequence::FindPrevious, [this] { m_findBar->findPrevious(); });
+}
+
+// ---- online mode ----------------------------------------------------------------------------
+
+QString TextEditorWidget::onlineInstance() const
+{
+    return m_instanceProvider ? m_instanceProvider() : QString();
+}
+
+const std::vector<QStringList> &TextEditorWidget::linePaths() const
+{
+    const int revision = m_editor->document()->revision();
+    if (revision != m_linePathsRevision) {
+        m_linePaths = variablePathsByLine(m_editor->toPlainText());
+        m_linePathsRevision = revision;
+    }
+    return m_linePaths;
+}
+
+QStringList TextEditorWidget::onlineNames() const
+{
+    const QString instance = onlineInstance();
+    if (instance.isEmpty())
+        return {};
+    QStringList names;
+    for (const QStringList &paths : linePaths()) {
+        for (const QString &path : paths) {
+            // A global is named without the instance; the runtime answers whichever exists.
+            for (const QString &name : {onlineName(instance, path), path}) {
+                if (!names.contains(name, Qt::CaseInsensitive))
+                    names.append(name);
+            }
+        }
+    }
+    return names;
+}
+
+void TextEditorWidget::showBanner(const QString &text, bool warning)
+{
+    m_onlineBanner->setText(text);
+    m_onlineBanner->setStyleSheet(warning ? QStringLiteral("background: #fde2c4; color: #6b3000;")
+                                          : QStringLiteral("background: #d7e6fb; color: #12335c;"));
+    m_onlineBanner->show();
+}
+
+void TextEditorWidget::setOnlineSnapshot(const interp::RuntimeSnapshot *snapshot)
+{
+    if (!snapshot) {
+        m_online = false;
+        m_editor->setOnline(false);
+        m_onlineBanner->hide();
+        m_refusalShown.invalidate();
+        return;
+    }
+    if (!m_online) {
+        m_online = true;
+        m_findBar->hide();
+        m_editor->setOnline(true);
+    }
+    const QString instance = onlineInstance();
+    if (!m_refusalShown.isValid() || m_refusalShown.elapsed() > 4000)
+        showBanner(tr("Online: %1, cycle %2").arg(instance.isEmpty() ? tr("no instance") : instance).arg(snapshot->cycle),
+                   false);
+    const std::vector<QStringList> &paths = linePaths();
+    std::vector<QList<OnlineChip>> chips(paths.size());
+    for (size_t line = 0; line < paths.size(); ++line) {
+        for (const QString &path : paths[line]) {
+            // The instance's own variable first: it hides a global of the same name.
+            const QString local = onlineName(instance, path);
+            const QString name = snapshot->values.contains(local) ? local : path;
+            const auto value = snapshot->values.constFind(name);
+            if (instance.isEmpty() || value == snapshot->values.constEnd())
+                continue;
+            chips[line].append({path, *value, snapshot->isForced(name)});
+        }
+    }
+    m_editor->setOnlineChips(std::move(chips));
 }
 
 } // namespace iec::editors

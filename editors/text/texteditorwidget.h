@@ -1,8 +1,15 @@
 #pragma once
 
+#include "editors/common/onlineview.h"
 #include "editors/text/textlanguage.h"
 
+#include <QElapsedTimer>
 #include <QWidget>
+
+#include <functional>
+#include <vector>
+
+class QLabel;
 
 namespace iec::editors {
 
@@ -11,7 +18,10 @@ class FindReplaceBar;
 
 // A CodeEditor with its find/replace bar below it: Ctrl+F finds, Ctrl+H (QKeySequence::Replace) replaces, F3 / Shift+F3
 // find the next / previous match, Escape closes the bar. What the application puts in a tab.
-class TextEditorWidget : public QWidget
+//
+// Online (OnlineView) it shows the current value of every variable a line mentions after the
+// end of that line, a banner with the cycle, and refuses edits with a clear message.
+class TextEditorWidget : public QWidget, public OnlineView
 {
     Q_OBJECT
 
@@ -21,7 +31,29 @@ public:
     [[nodiscard]] CodeEditor *editor() const { return m_editor; }
     [[nodiscard]] FindReplaceBar *findBar() const { return m_findBar; }
 
+    // The instance whose variables the body uses ("Main"), asked for when going online, so a
+    // renamed POU is found under its new name. Unset or empty: nothing is shown online.
+    void setOnlineInstanceProvider(std::function<QString()> provider) { m_instanceProvider = std::move(provider); }
+    QString onlineInstance() const override;
+    QStringList onlineNames() const override;
+    void setOnlineSnapshot(const interp::RuntimeSnapshot *snapshot) override;
+    [[nodiscard]] QLabel *onlineBanner() const { return m_onlineBanner; }
+
+Q_SIGNALS:
+    // "Add to Watch" on a variable, with the full name the runtime knows ("Main.Count").
+    void addToWatchRequested(const QString &name);
+
 private:
+    const std::vector<QStringList> &linePaths() const;
+    void showBanner(const QString &text, bool warning);
+
+    std::function<QString()> m_instanceProvider;
+    QLabel *m_onlineBanner = nullptr;
+    bool m_online = false;
+    QElapsedTimer m_refusalShown; // the refusal stays a few seconds before the cycle banner returns
+    mutable std::vector<QStringList> m_linePaths;
+    mutable int m_linePathsRevision = -1;
+
     CodeEditor *m_editor;
     FindReplaceBar *m_findBar;
 };

@@ -82,13 +82,5 @@ void ChangeDataTypeCommand::undo()
     m_model.changeDataType(m_after.name, m_before);
 }
 
-bool ChangeDataTypeCommand::mergeWith(const QUndoCommand *other)
-{
-    const auto *change = static_cast<const ChangeDataTypeCommand *>(other);
-    if (change->m_before.name != m_after.name)
-        return false;
-    m_after = change->m_after;
-    return true;
-}
 
 } // namespace iec::model

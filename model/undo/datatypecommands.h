@@ -32,7 +32,7 @@ private:
     int m_index = -1;
 };
 
-// Replaces a data type (rename included). Successive changes of the same type merge.
+// Replaces a data type (rename included).
 class ChangeDataTypeCommand : public ModelCommand
 {
 public:
@@ -41,8 +41,7 @@ public:
 
     void redo() override;
     void undo() override;
-    int id() const override { return ChangeDataTypeMerge; }
-    bool mergeWith(const QUndoCommand *other) override;
+    // No merging: every change of a type (a form field, a rename in the tree) is its own gesture.
 
 private:
     DataTypeDecl m_before;

@@ -137,13 +137,5 @@ void SetInterfaceCommand::undo()
     m_model.setInterface(m_pou, m_before);
 }
 
-bool SetInterfaceCommand::mergeWith(const QUndoCommand *other)
-{
-    const auto *change = static_cast<const SetInterfaceCommand *>(other);
-    if (change->m_pou != m_pou)
-        return false;
-    m_after = change->m_after;
-    return true;
-}
 
 } // namespace iec::model

@@ -68,8 +68,7 @@ public:
 
     void redo() override;
     void undo() override;
-    int id() const override { return SetInterfaceMerge; }
-    bool mergeWith(const QUndoCommand *other) override;
+    // No merging: each application of the declaration text is one gesture, one undo step.
 
 private:
     PouId m_pou;

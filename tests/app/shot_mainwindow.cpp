@@ -9,6 +9,8 @@
 
 #include <QApplication>
 #include <QDir>
+#include <QMenu>
+#include <QMenuBar>
 #include <QSettings>
 #include <QTemporaryDir>
 
@@ -43,6 +45,16 @@ int main(int argc, char *argv[])
         }
         QCoreApplication::processEvents();
         window.grab().save(QDir(outDir).filePath(QStringLiteral("mainwindow_%1.png").arg(language)));
+        // The menus too, to check that their items are translated and fit.
+        for (QMenu *menu : window.menuBar()->findChildren<QMenu *>(QString(), Qt::FindDirectChildrenOnly)) {
+            if (menu->objectName().isEmpty())
+                continue;
+            menu->popup(window.mapToGlobal(QPoint(0, 0)));
+            QCoreApplication::processEvents();
+            menu->grab().save(
+                QDir(outDir).filePath(QStringLiteral("menu_%1_%2.png").arg(menu->objectName(), language)));
+            menu->hide();
+        }
     }
     return 0;
 }

@@ -1,4 +1,9 @@
+#include "app/buildcontroller.h"
 #include "app/documentarea.h"
+#include "app/importexport.h"
+#include "app/importexportactions.h"
+#include "app/messagespane.h"
+#include "app/projectsymbols.h"
 #include "app/examples.h"
 #include "app/listmenus.h"
 #include "app/mainwindow.h"
@@ -10,12 +15,14 @@
 #include "app/recoverymanager.h"
 #include "app/settingsdialog.h"
 #include "app/undostacks.h"
+#include "editors/datatypes/datatypeeditor.h"
 #include "editors/declarations/declarationeditor.h"
 #include "editors/declarations/declarationtablemodel.h"
 #include "editors/text/codeeditor.h"
 #include "editors/text/texteditorwidget.h"
 #include "model/plcopen/reader.h"
 #include "model/projectmodel.h"
+#include "model/undo/datatypecommands.h"
 
 #include <QComboBox>
 #include <QDockWidget>
@@ -25,6 +32,7 @@
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QSplitter>
+#include <QTableView>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
@@ -65,6 +73,14 @@ private Q_SLOTS:
     void autosaveIntervalFollowsTheSettings();
     void crashLeavesARecoveryThatIsOfferedAndRestores();
     void recoveryOlderThanItsProjectIsNotOffered();
+    void createTypeBuildFixSaveCloseReopen();
+    void dataTypeOpensInATabThatFollowsTheType();
+    void undoInTheDeclarationTableUndoesTheTableEdit();
+    void goToDefinitionShowsDeclarationsAndOpensPous();
+    void completionComesFromTheModel();
+    void autoDeclareGuessesTheType_data();
+    void autoDeclareGuessesTheType();
+    void importMergesAndExportWritesTheSelection();
 
 private:
     QTemporaryDir m_configHome;
@@ -772,6 +788,345 @@ void TestMainWindow::declarationsAreAboveThePouBody()
     QVERIFY(qobject_cast<iec::editors::TextEditorWidget *>(window.documents().openBody(*action)));
     QVERIFY(!window.documents().declarationEditorFor(*action));
     QVERIFY(window.documents().textEditorFor(*action));
+}
+
+namespace {
+
+int errorCount(MainWindow &window)
+{
+    return window.messagesPane().model().count(Message::Severity::Error);
+}
+
+QStringList messageTexts(MainWindow &window)
+{
+    QStringList texts;
+    const MessageListModel &messages = window.messagesPane().model();
+    for (int row = 0; row < messages.rowCount(); ++row)
+        texts << messages.message(row).text;
+    return texts;
+}
+
+} // namespace
+
+void TestMainWindow::createTypeBuildFixSaveCloseReopen()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("plant.xml"));
+    QString error;
+    {
+        MainWindow window;
+        window.newProject();
+        QVERIFY(window.projectModel().project().types.pous.empty());
+
+        // Add an ST program: it is in the model, in the tree and open in a tab.
+        const auto program = window.projectCommands().addPou({.name = QStringLiteral("Plant")});
+        QVERIFY(program);
+        const iec::model::BodyRef body {*program, {}, {}};
+        window.documents().openBody(body);
+        iec::editors::CodeEditor *editor = window.documents().textEditorFor(body);
+        QVERIFY(editor);
+
+        // Type a body that uses an undeclared name; the model gets the text.
+        QTest::keyClicks(editor, QStringLiteral("Level := Level + 1;"));
+        editor->flushPendingEdit();
+        QCOMPARE(window.projectModel().body(body)->text(), QStringLiteral("Level := Level + 1;"));
+
+        // Build: the diagnostic names the variable, located in the POU.
+        window.buildController().build();
+        QVERIFY(errorCount(window) > 0);
+        QVERIFY2(messageTexts(window).join(QLatin1Char('\n')).contains(QStringLiteral("'Level'")),
+            qPrintable(messageTexts(window).join(QLatin1Char('\n'))));
+
+        // Fix it with auto-declare: INT guessed from the arithmetic, one step on the POU's stack.
+        const iec::editors::DeclarationRow proposal = window.documents().proposeDeclaration(body, QStringLiteral("Level"));
+        QCOMPARE(proposal.type, QStringLiteral("INT"));
+        QCOMPARE(proposal.varClass, QStringLiteral("VAR"));
+        QUndoStack &stack = window.undoStacks().pouStack(*program);
+        const int before = stack.count();
+        QVERIFY(window.documents().declareVariable(body, proposal, &error));
+        QCOMPARE(stack.count(), before + 1);
+        const iec::model::Variable *level = window.projectModel().findVariable(*program, QStringLiteral("Level"));
+        QVERIFY(level);
+        QCOMPARE(std::get<iec::model::ElementaryType>(level->type.kind).name, QStringLiteral("INT"));
+        // The declaration editor above the body shows it at once.
+        QCOMPARE(window.documents().declarationEditorFor(body)->tableModel()->rows().back().name,
+            QStringLiteral("Level"));
+        window.buildController().build();
+        QCOMPARE(errorCount(window), 0);
+
+        // Save: the file holds the program, its declaration and its body.
+        QVERIFY2(window.saveProject(path, &error), qPrintable(error));
+        QVERIFY(!window.hasUnsavedChanges());
+        const auto saved = iec::model::plcopen::readProjectFile(path);
+        QVERIFY(saved.ok);
+        QCOMPARE(saved.project.types.pous.size(), size_t(1));
+        QCOMPARE(saved.project.types.pous.front().body()->text(), QStringLiteral("Level := Level + 1;"));
+        QCOMPARE(saved.project.types.pous.front().pouInterface->varLists.front().variables.front().name,
+            QStringLiteral("Level"));
+        QVERIFY(window.close()); // nothing unsaved: no question
+    }
+    MainWindow reopened;
+    QVERIFY2(reopened.openProject(path, &error), qPrintable(error));
+    const iec::model::Pou *plant = reopened.projectModel().project().findPou(QStringLiteral("Plant"));
+    QVERIFY(plant);
+    QCOMPARE(plant->body()->text(), QStringLiteral("Level := Level + 1;"));
+    reopened.buildController().build();
+    QCOMPARE(errorCount(reopened), 0);
+}
+
+void TestMainWindow::dataTypeOpensInATabThatFollowsTheType()
+{
+    MainWindow window;
+    window.newProject();
+    QUndoStack &projectStack = window.undoStacks().projectStack();
+    iec::model::DataTypeDecl speed;
+    speed.name = QStringLiteral("Speed");
+    speed.baseType.kind = iec::model::ElementaryType {QStringLiteral("INT")};
+    projectStack.push(new iec::model::AddDataTypeCommand(window.projectModel(), speed));
+
+    // Activating the data type node opens its editor in a tab titled with the name.
+    ProjectTreeView &tree = window.projectTree();
+    const auto *treeModel = static_cast<const ProjectTreeModel *>(tree.model());
+    const QModelIndex node = treeModel->indexForKey(QStringLiteral("type:speed"));
+    QVERIFY(node.isValid());
+    Q_EMIT tree.activated(node);
+    DocumentArea &documents = window.documents();
+    iec::editors::DataTypeEditor *editor = documents.dataTypeEditorFor(QStringLiteral("Speed"));
+    QVERIFY(editor);
+    QCOMPARE(documents.currentWidget(), editor);
+    QCOMPARE(documents.tabText(documents.currentIndex()), QStringLiteral("Speed"));
+    QVERIFY(!documents.currentBody());
+    Q_EMIT tree.activated(node); // a second time: the same tab
+    QCOMPARE(documents.count(), 1);
+
+    // Its edits go on the project stack; a rename retitles the tab, undo too.
+    projectStack.push(iec::model::ChangeDataTypeCommand::rename(
+        window.projectModel(), QStringLiteral("Speed"), QStringLiteral("Velocity")));
+    QCOMPARE(documents.tabText(documents.indexOf(editor)), QStringLiteral("Velocity"));
+    projectStack.undo();
+    QCOMPARE(documents.tabText(documents.indexOf(editor)), QStringLiteral("Speed"));
+
+    // Removing the type closes the tab.
+    projectStack.push(new iec::model::RemoveDataTypeCommand(window.projectModel(), QStringLiteral("Speed")));
+    QCoreApplication::sendPostedEvents(); // the close is queued
+    QCOMPARE(documents.count(), 0);
+}
+
+void TestMainWindow::undoInTheDeclarationTableUndoesTheTableEdit()
+{
+    MainWindow window;
+    QVERIFY(window.openProject(kFirstSteps));
+    window.show();
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    const iec::model::BodyRef main {pouNamed(window, QStringLiteral("Main")), {}, {}};
+    window.documents().openBody(main);
+    iec::editors::CodeEditor *editor = window.documents().textEditorFor(main);
+    editor->setFocus();
+    QTest::keyClicks(editor, QStringLiteral(" "));
+
+    // The table has the focus: Edit → Undo is the table's last gesture, not the typing.
+    iec::editors::DeclarationEditor *declarations = window.documents().declarationEditorFor(main);
+    declarations->table()->setFocus();
+    iec::editors::DeclarationTableModel *table = declarations->tableModel();
+    QVERIFY(table->setData(table->index(2, int(iec::editors::DeclarationColumn::InitialValue)), QStringLiteral("7")));
+    QVERIFY(table->setData(table->index(1, int(iec::editors::DeclarationColumn::Comment)), QStringLiteral("lamp")));
+    auto *undo = window.findChild<QAction *>(QStringLiteral("undoAction"));
+    QVERIFY(undo->isEnabled());
+    QVERIFY(undo->text() != QStringLiteral("&Undo Typing"));
+    undo->trigger();
+    // One gesture, one step: the comment is gone, the initial value stays.
+    QVERIFY(!window.projectModel().findVariable(main.pou, QStringLiteral("Blink"))->documentation);
+    QCOMPARE(window.projectModel().findVariable(main.pou, QStringLiteral("Count"))->initialValue,
+        iec::model::Value {iec::model::SimpleValue {QStringLiteral("7")}});
+    undo->trigger();
+    QCOMPARE(window.projectModel().findVariable(main.pou, QStringLiteral("Count"))->initialValue,
+        iec::model::Value {iec::model::SimpleValue {QStringLiteral("0")}});
+    QVERIFY(editor->document()->isUndoAvailable()); // the typing was not touched
+
+    // Back in the body: its typing.
+    editor->setFocus();
+    QCOMPARE(undo->text(), QStringLiteral("&Undo Typing"));
+}
+
+void TestMainWindow::goToDefinitionShowsDeclarationsAndOpensPous()
+{
+    MainWindow window;
+    QVERIFY(window.openProject(kFirstSteps));
+    const iec::model::PouId mainId = pouNamed(window, QStringLiteral("Main"));
+    const iec::model::BodyRef main {mainId, {}, {}};
+    const auto helper = window.projectCommands().addPou(
+        {.name = QStringLiteral("Helper"), .kind = iec::model::PouKind::Function, .returnType = QStringLiteral("INT")});
+    QVERIFY(helper);
+    DocumentArea &documents = window.documents();
+    documents.openBody(main);
+
+    // A variable: its row in the declaration table.
+    QVERIFY(documents.goToDefinition(main, QStringLiteral("count")));
+    iec::editors::DeclarationEditor *declarations = documents.declarationEditorFor(main);
+    QCOMPARE(declarations->table()->currentIndex().row(), 2);
+    // A POU: its tab.
+    QVERIFY(documents.goToDefinition(main, QStringLiteral("Helper")));
+    QCOMPARE(documents.currentBody(), std::optional<iec::model::BodyRef>({*helper, {}, {}}));
+    // A member of a standard FB instance, a keyword: nothing to go to.
+    QVERIFY(!documents.goToDefinition(main, QStringLiteral("Pulse.Q")));
+    QVERIFY(!documents.goToDefinition(main, QStringLiteral("TON")));
+
+    // F12 in the body goes through the editor's request.
+    documents.openBody(main);
+    iec::editors::CodeEditor *editor = documents.textEditorFor(main);
+    const int at = editor->toPlainText().indexOf(QStringLiteral("Blink"));
+    QVERIFY(at >= 0);
+    QTextCursor cursor = editor->textCursor();
+    cursor.setPosition(at + 1);
+    editor->setTextCursor(cursor);
+    QTest::keyClick(editor, Qt::Key_F12);
+    QCOMPARE(declarations->table()->currentIndex().row(), 1);
+}
+
+void TestMainWindow::completionComesFromTheModel()
+{
+    MainWindow window;
+    QVERIFY(window.openProject(kFirstSteps));
+    const iec::model::PouId main = pouNamed(window, QStringLiteral("Main"));
+    window.documents().openBody({main, {}, {}});
+    const iec::editors::CompletionProvider *provider
+        = window.documents().textEditorFor({main, {}, {}})->completionProvider();
+    QVERIFY(provider);
+    const auto texts = [](const QList<iec::editors::CompletionItem> &items) {
+        QStringList list;
+        for (const iec::editors::CompletionItem &item : items)
+            list << item.text;
+        return list;
+    };
+    using iec::editors::completionContext;
+    using iec::editors::completionItems;
+    using iec::editors::TextLanguage;
+    // Variables in scope, with their types.
+    const auto variables = completionItems(completionContext(u"Co", 2), provider, TextLanguage::ST);
+    QVERIFY(texts(variables).contains(QStringLiteral("Count")));
+    // Members of a standard FB instance after '.'.
+    QCOMPARE(texts(completionItems(completionContext(u"Pulse.", 6), provider, TextLanguage::ST)),
+        (QStringList {QStringLiteral("ET"), QStringLiteral("IN"), QStringLiteral("PT"), QStringLiteral("Q")}));
+    // User POUs with their parameters, and members of a user FB instance.
+    QVERIFY(window.projectCommands().addPou({.name = QStringLiteral("Valve"), .kind = iec::model::PouKind::FunctionBlock}));
+    const iec::model::PouId valve = pouNamed(window, QStringLiteral("Valve"));
+    iec::model::Interface valveInterface;
+    valveInterface.varLists.push_back({.kind = iec::model::VarListKind::Input});
+    valveInterface.varLists.back().variables.push_back({.name = QStringLiteral("Open")});
+    valveInterface.varLists.push_back({.kind = iec::model::VarListKind::Local});
+    valveInterface.varLists.back().variables.push_back({.name = QStringLiteral("Hidden")});
+    window.projectModel().setInterface(valve, valveInterface);
+    iec::model::Variable v1;
+    v1.name = QStringLiteral("V1");
+    v1.type.kind = iec::model::DerivedType {.name = QStringLiteral("Valve")};
+    window.projectModel().addVariable(main, iec::model::VarListKind::Local, v1);
+    const auto pous = completionItems(completionContext(u"Val", 3), provider, TextLanguage::ST);
+    QCOMPARE(texts(pous), QStringList {QStringLiteral("Valve")});
+    QCOMPARE(pous.front().detail, QStringLiteral("Valve(Open : BOOL)"));
+    QCOMPARE(texts(completionItems(completionContext(u"V1.", 3), provider, TextLanguage::ST)),
+        QStringList {QStringLiteral("Open")});
+    // Keywords and standard functions.
+    QVERIFY(texts(completionItems(completionContext(u"END_I", 5), provider, TextLanguage::ST))
+                .contains(QStringLiteral("END_IF")));
+    QVERIFY(texts(completionItems(completionContext(u"LIM", 3), provider, TextLanguage::ST))
+                .contains(QStringLiteral("LIMIT")));
+}
+
+void TestMainWindow::autoDeclareGuessesTheType_data()
+{
+    QTest::addColumn<QString>("body");
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QString>("type");
+    QTest::newRow("condition") << QStringLiteral("IF Start THEN Count := 1; END_IF;") << QStringLiteral("Start")
+                               << QStringLiteral("BOOL");
+    QTest::newRow("logic") << QStringLiteral("Blink := Start AND NOT Stop;") << QStringLiteral("Stop")
+                           << QStringLiteral("BOOL");
+    QTest::newRow("arithmetic") << QStringLiteral("Count := Total * 2;") << QStringLiteral("Total")
+                                << QStringLiteral("INT");
+    QTest::newRow("time comparison") << QStringLiteral("IF Elapsed > T#5s THEN Blink := TRUE; END_IF;")
+                                     << QStringLiteral("Elapsed") << QStringLiteral("TIME");
+    QTest::newRow("time assignment") << QStringLiteral("Delay := T#2s;") << QStringLiteral("Delay")
+                                     << QStringLiteral("TIME");
+    QTest::newRow("real") << QStringLiteral("Ratio := 0.5;") << QStringLiteral("Ratio") << QStringLiteral("REAL");
+    QTest::newRow("known variable") << QStringLiteral("Copy := Count;") << QStringLiteral("Copy")
+                                    << QStringLiteral("INT");
+    QTest::newRow("timer call") << QStringLiteral("T1(IN := Start, PT := T#1s); Blink := T1.Q;")
+                                << QStringLiteral("T1") << QStringLiteral("TON");
+    QTest::newRow("counter") << QStringLiteral("C1(CU := Start, PV := 5); Count := C1.CV;") << QStringLiteral("C1")
+                             << QStringLiteral("CTU");
+    QTest::newRow("edge") << QStringLiteral("Edge(CLK := Start);") << QStringLiteral("Edge")
+                          << QStringLiteral("R_TRIG");
+    QTest::newRow("IL coil") << QStringLiteral("LD Start\nS Motor") << QStringLiteral("Motor")
+                             << QStringLiteral("BOOL");
+    QTest::newRow("IL arithmetic") << QStringLiteral("LD Count\nADD Delta\nST Count") << QStringLiteral("Delta")
+                                   << QStringLiteral("INT");
+}
+
+void TestMainWindow::autoDeclareGuessesTheType()
+{
+    QFETCH(QString, body);
+    QFETCH(QString, name);
+    QFETCH(QString, type);
+    MainWindow window;
+    QVERIFY(window.openProject(kFirstSteps));
+    const iec::model::BodyRef main {pouNamed(window, QStringLiteral("Main")), {}, {}};
+    QVERIFY(window.projectModel().setBodyText(main, body));
+    QCOMPARE(window.documents().proposeDeclaration(main, name).type, type);
+}
+
+void TestMainWindow::importMergesAndExportWritesTheSelection()
+{
+    QTemporaryDir dir;
+    MainWindow window;
+    QVERIFY(window.openProject(kFirstSteps));
+    ImportExportActions &files = window.importExport();
+    QString error;
+
+    // Export the whole project as IEC text and Main alone as PLCopen XML.
+    const QString text = dir.filePath(QStringLiteral("all.st"));
+    QVERIFY2(files.exportFile(text, {}, &error), qPrintable(error));
+    QFile textFile(text);
+    QVERIFY(textFile.open(QIODevice::ReadOnly));
+    const QString iec = QString::fromUtf8(textFile.readAll());
+    QVERIFY(iec.contains(QStringLiteral("PROGRAM Main")));
+    QVERIFY(iec.contains(QStringLiteral("Pulse(IN := NOT Pulse.Q, PT := T#500ms);")));
+    QVERIFY(window.projectCommands().addPou({.name = QStringLiteral("Other")}));
+    const QString xml = dir.filePath(QStringLiteral("main.xml"));
+    QVERIFY2(files.exportFile(xml, {pouNamed(window, QStringLiteral("Main"))}, &error), qPrintable(error));
+    const auto exported = iec::model::plcopen::readProjectFile(xml);
+    QVERIFY(exported.ok);
+    QCOMPARE(exported.project.types.pous.size(), size_t(1));
+    QCOMPARE(exported.project.types.pous.front().name, QStringLiteral("Main"));
+
+    // The tree's selection: a POU node stands for its POU.
+    ProjectTreeView &tree = window.projectTree();
+    tree.selectKey(ProjectTreeModel::pouKey(pouNamed(window, QStringLiteral("Other"))));
+    QCOMPARE(files.selectedPous(), std::vector<iec::model::PouId> {pouNamed(window, QStringLiteral("Other"))});
+    QVERIFY(files.exportSelectionAction()->isEnabled());
+
+    // Import both into the project: a taken name gets a suffix; one undo step takes it back.
+    const iec::model::Project before = window.projectModel().project();
+    QVERIFY2(files.importFile(xml, &error), qPrintable(error));
+    QVERIFY(window.projectModel().project().findPou(QStringLiteral("Main_1")));
+    QVERIFY2(files.importFile(text, &error), qPrintable(error));
+    QVERIFY(window.projectModel().project().findPou(QStringLiteral("Main_2")));
+    QCOMPARE(window.projectModel().project().findPou(QStringLiteral("Main_2"))->body()->text(),
+        window.projectModel().project().findPou(QStringLiteral("Main"))->body()->text());
+    QUndoStack &stack = window.undoStacks().projectStack();
+    stack.undo();
+    stack.undo();
+    QVERIFY(window.projectModel().project() == before);
+
+    // A file that is not a project says so and changes nothing.
+    const QString junk = dir.filePath(QStringLiteral("junk.xml"));
+    QFile junkFile(junk);
+    QVERIFY(junkFile.open(QIODevice::WriteOnly));
+    junkFile.write("<html/>");
+    junkFile.close();
+    QVERIFY(!files.importFile(junk, &error));
+    QVERIFY(!error.isEmpty());
+    QVERIFY(window.projectModel().project() == before);
 }
 
 QTEST_MAIN(TestMainWindow)

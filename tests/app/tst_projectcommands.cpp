@@ -30,6 +30,7 @@ private Q_SLOTS:
     void renameIdentifierInText();
     void eachOperationRedoUndoRedo();
     void renameUpdatesReferencesInOneStep();
+    void renamingAnActionOrTransitionUpdatesTheChart();
     void refusedOperationsChangeNothing_data();
     void refusedOperationsChangeNothing();
     void addPouDialogResult();
@@ -287,10 +288,82 @@ void TestProjectCommands::renameUpdatesReferencesInOneStep()
         == DataType {DerivedType {.name = QStringLiteral("Pump")}});
     const Project renamed = after;
 
+    // A program's rename reaches the tasks that run it, in the same step.
+    Project withTask = fixture.model.project();
+    withTask.instances.configurations.push_back(Configuration {.name = QStringLiteral("Plc")});
+    withTask.instances.configurations.back().resources.push_back(Resource {.name = QStringLiteral("Cpu")});
+    withTask.instances.configurations.back().resources.back().tasks.push_back(
+        Task {.name = QStringLiteral("Cyclic"), .pouInstances = {PouInstance {.name = QStringLiteral("Run"), .typeName = QStringLiteral("MAIN")}}});
+    ProjectModel programModel;
+    programModel.reset(withTask);
+    QUndoStack programStack;
+    ProjectCommands programCommands {programModel, programStack};
+    const PouId mainId = programModel.project().findPou(QStringLiteral("Main"))->id;
+    QVERIFY(programCommands.rename({mainId, {}, {}}, QStringLiteral("Plant"), &error));
+    QCOMPARE(programStack.count(), 1);
+    QCOMPARE(programModel.project().instances.configurations.front().resources.front().tasks.front().pouInstances.front().typeName,
+        QStringLiteral("Plant"));
+    programStack.undo();
+    QCOMPARE(programModel.project().instances.configurations.front().resources.front().tasks.front().pouInstances.front().typeName,
+        QStringLiteral("MAIN"));
+
     fixture.stack.undo();
     QVERIFY(fixture.model.project() == before);
     fixture.stack.redo();
     QVERIFY(fixture.model.project() == renamed);
+}
+
+void TestProjectCommands::renamingAnActionOrTransitionUpdatesTheChart()
+{
+    // A chart whose action block names action Fill twice and whose transition names Full; an ST
+    // action calls Fill.
+    Project project;
+    Pou chart = makePou({.name = QStringLiteral("Chart"), .language = BodyLanguage::SFC});
+    ActionBlock block;
+    block.localId = 2;
+    block.actions.push_back({.localId = 0, .qualifier = QStringLiteral("N"), .reference = Reference {QStringLiteral("Fill")}});
+    block.actions.push_back({.localId = 1, .qualifier = QStringLiteral("P1"), .reference = Reference {QStringLiteral("Drain")}});
+    block.actions.push_back({.localId = 2, .qualifier = QStringLiteral("P0"), .reference = Reference {QStringLiteral("FILL")}});
+    Transition transition;
+    transition.localId = 3;
+    transition.condition = Condition {.kind = Reference {QStringLiteral("Full")}};
+    chart.bodies.front().elements()->push_back(block);
+    chart.bodies.front().elements()->push_back(transition);
+    for (const char *name : {"Fill", "Drain"}) {
+        chart.actions.push_back(PouPart {.name = QString::fromLatin1(name), .body = Body::withLanguage(BodyLanguage::ST)});
+    }
+    chart.actions.back().body.setText(QStringLiteral("Fill; (* Fill *)"));
+    chart.transitions.push_back(PouPart {.name = QStringLiteral("Full"), .body = Body::withLanguage(BodyLanguage::ST)});
+    project.types.pous.push_back(chart);
+    ProjectModel model;
+    model.reset(project);
+    QUndoStack stack;
+    ProjectCommands commands {model, stack};
+    const PouId id = model.project().types.pous.front().id;
+    const Project before = model.project();
+
+    QString error;
+    QVERIFY2(commands.rename({id, BodyRef::Part::Action, QStringLiteral("Fill")}, QStringLiteral("Top_up"), &error),
+        qPrintable(error));
+    QCOMPARE(stack.count(), 1);
+    const Pou &renamed = *model.project().findPou(id);
+    const auto &actions = std::get<ActionBlock>(renamed.bodies.front().elements()->at(0)).actions;
+    QCOMPARE(actions[0].reference->name, QStringLiteral("Top_up"));
+    QCOMPARE(actions[1].reference->name, QStringLiteral("Drain"));
+    QCOMPARE(actions[2].reference->name, QStringLiteral("Top_up"));
+    QCOMPARE(renamed.actions.front().name, QStringLiteral("Top_up"));
+    QCOMPARE(renamed.actions.back().body.text(), QStringLiteral("Top_up; (* Fill *)"));
+
+    QVERIFY2(commands.rename({id, BodyRef::Part::Transition, QStringLiteral("Full")}, QStringLiteral("Is_full"), &error),
+        qPrintable(error));
+    const auto &condition = std::get<Transition>(model.project().findPou(id)->bodies.front().elements()->at(1)).condition;
+    QCOMPARE(std::get<Reference>(condition->kind).name, QStringLiteral("Is_full"));
+
+    stack.undo();
+    stack.undo();
+    QVERIFY(model.project() == before);
+    stack.redo();
+    QCOMPARE(model.project().findPou(id)->actions.back().body.text(), QStringLiteral("Top_up; (* Fill *)"));
 }
 
 void TestProjectCommands::refusedOperationsChangeNothing_data()
