@@ -46,6 +46,9 @@ QString formatDiagnostic(const QString &file, const interp::Diagnostic &diagnost
     text += diagnostic.message;
     if (!diagnostic.hint.isEmpty())
         text += QStringLiteral(" (hint: ") + diagnostic.hint + QLatin1Char(')');
+    // An element of a graphical body has no line: name it the way the XML reader does.
+    if (diagnostic.location.line <= 0 && diagnostic.location.localId >= 0)
+        text += QStringLiteral(" [localId %1]").arg(diagnostic.location.localId);
     return text;
 }
 

@@ -21,6 +21,14 @@ bool isShortLiteralPrefix(const QString &name)
         || upper == QLatin1String("LD");
 }
 
+// The variable types of Beremiz's SVGHMI extension (`key`: upper case). Worth naming: a student
+// who opens a Beremiz HMI project otherwise sees only "Unknown type".
+bool isSvgHmiType(const QString &key)
+{
+    return key == QLatin1String("HMI_BOOL") || key == QLatin1String("HMI_INT") || key == QLatin1String("HMI_REAL")
+        || key == QLatin1String("HMI_STRING") || key == QLatin1String("HMI_NODE");
+}
+
 } // namespace
 
 void Codegen::collectTypes(const CompilationUnit &unit, bool library)
@@ -113,7 +121,12 @@ const Type *Codegen::namedType(const QString &name, SourceLocation at, bool repo
                           .arg(name, pou.kind == PouKind::Program ? QStringLiteral("program") : QStringLiteral("function")));
         return nullptr;
     }
-    if (report)
+    if (report && isSvgHmiType(k))
+        error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 is a Beremiz SVGHMI type, which IEC Studio does not support.").arg(name),
+            k == QLatin1String("HMI_NODE")
+                ? QString()
+                : QCoreApplication::translate("iec::interp::Compiler", "declare the variable as %1").arg(k.mid(4)));
+    else if (report)
         error(at, QCoreApplication::translate("iec::interp::Compiler", "Unknown type '%1'.").arg(name));
     return nullptr;
 }

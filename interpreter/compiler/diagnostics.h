@@ -1,17 +1,19 @@
 #pragma once
 
 #include <QString>
+#include <QtGlobal>
 
 #include <vector>
 
 namespace iec::interp {
 
 // Where something is in the user's program: the POU (empty for declarations outside any POU)
-// and a 1-based line and column in the text it came from. Graphical bodies will use localId.
+// and a 1-based line and column in the text it came from; an element of a graphical body (LD, FBD,
+// SFC) has its localId instead. localId is 64-bit: CODESYS writes ids around 1e10.
 struct SourceLocation {
     int line = 0;
     int column = 0;
-    int localId = -1;
+    qint64 localId = -1; // -1: none
 };
 
 struct Diagnostic {

@@ -41,6 +41,11 @@ ast::Body lowerBody(const model::Body &body, ast::Pou &pou, const QString &owner
     switch (body.language()) {
     case model::BodyLanguage::ST:
         result.language = ast::Language::ST;
+        if (const auto cfc = graphical::cfcDiagram(body)) { // CODESYS CFC: empty ST text, diagram in addData
+            graphical::LoweringContext context {pou, owner, diagnostics};
+            result.statements = graphical::lowerBody(*cfc, context);
+            break;
+        }
         result.statements = parseStBody(body.text(), owner, diagnostics);
         break;
     case model::BodyLanguage::IL:

@@ -11,8 +11,8 @@ namespace iec::interp::graphical {
 SourceLocation elementLocation(quint64 localId)
 {
     SourceLocation at;
-    if (localId <= quint64(std::numeric_limits<int>::max()))
-        at.localId = int(localId);
+    if (localId <= quint64(std::numeric_limits<qint64>::max()))
+        at.localId = qint64(localId);
     return at;
 }
 

@@ -12,8 +12,8 @@
 // location of the graphical element it came from, so the compiler's messages point at it.
 namespace iec::interp::graphical {
 
-// The location of a graphical element: no line, its localId (when it fits the int the compiler
-// keeps; CODESYS writes ids above 2^31, which then stay unlocated).
+// The location of a graphical element: no line, its localId (64-bit: CODESYS writes ids around
+// 1e10; only ids above 2^63 stay unlocated).
 SourceLocation elementLocation(quint64 localId);
 
 ast::Expr nameExpr(const QString &name, SourceLocation at);

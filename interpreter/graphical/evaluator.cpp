@@ -214,6 +214,17 @@ std::optional<Signal> Evaluator::read(std::size_t consumer, const model::Connect
         return std::nullopt;
     }
     const Node &from = m_network.node(*source);
+    if (m_network.isFeedback(consumer, *source) && m_network.isInstanceBlock(*source)) {
+        // The loop is broken here: the instance still holds the output of the previous scan.
+        const auto &block = std::get<model::Block>(*from.element);
+        const QString pin = m_network.outputKey(*source, connection.formalParameter);
+        Signal signal = variableSignal(memberExpr(nameExpr(block.instanceName->trimmed(), at(*source)), pin));
+        for (const model::BlockVariable &output : block.outputVariables) {
+            if (output.negated && output.formalParameter.trimmed().compare(pin, Qt::CaseInsensitive) == 0)
+                signal.expr = notExpr(std::move(signal.expr));
+        }
+        return signal;
+    }
     if (m_network.isFeedback(consumer, *source)) {
         // The loop is broken here: the variable still holds its value from before.
         const auto &inOut = std::get<model::InOutVariable>(*from.element);

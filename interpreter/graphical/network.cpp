@@ -175,6 +175,12 @@ int Network::readers(std::size_t source, const QString &key) const
     return found == m_readers.end() ? 0 : found->second;
 }
 
+bool Network::isInstanceBlock(std::size_t node) const
+{
+    const auto *block = std::get_if<model::Block>(m_nodes[node].element);
+    return block && block->instanceName && !block->instanceName->trimmed().isEmpty();
+}
+
 std::optional<std::vector<std::size_t>> Network::findCycle() const
 {
     enum : char { White, Grey, Black };
@@ -218,9 +224,14 @@ bool Network::breakLoops(const QString &owner, Diagnostics &diagnostics)
 {
     // cycle[i] reads from cycle[i + 1]; the last reads from the first.
     while (const auto cycle = findCycle()) {
-        const auto variable = std::ranges::find_if(*cycle, [&](std::size_t i) {
+        auto variable = std::ranges::find_if(*cycle, [&](std::size_t i) {
             return m_nodes[i].kind == NodeKind::InOutVariable;
         });
+        // A function block instance keeps its outputs from one scan to the next, so a loop
+        // through one is a feedback path (IEC 61131-3 FBD; Beremiz and CODESYS accept it): the
+        // reader gets the output the instance computed in the previous scan.
+        if (variable == cycle->end())
+            variable = std::ranges::find_if(*cycle, [&](std::size_t i) { return isInstanceBlock(i); });
         if (variable == cycle->end()) {
             const std::size_t first = *std::ranges::min_element(*cycle);
             diagnostics.error(owner, elementLocation(m_nodes[first].localId),

@@ -66,6 +66,8 @@ public:
     // from before (feedback), any other loop is an error. Returns false after diagnosing one.
     bool breakLoops(const QString &owner, Diagnostics &diagnostics);
     bool isFeedback(std::size_t consumer, std::size_t source) const { return m_feedback.contains({consumer, source}); }
+    // A block that calls a function block instance (its outputs persist between scans).
+    bool isInstanceBlock(std::size_t node) const;
 
     // The elements with an effect, in execution order: by executionOrderId where given, else
     // network by network (top to bottom; file order when the importer generated the layout) and

@@ -8,6 +8,8 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <algorithm>
 
 namespace iec::interp {
 
@@ -227,6 +229,51 @@ QString formatValue(const VariableRef &ref, const std::uint8_t *memory, const st
     return formatAt(ref.type, p);
 }
 
+namespace {
+
+// -1, 0 or 1 as `value` is below, at or above `bound`.
+int compare(const IntegerValue &value, std::int64_t bound)
+{
+    if (value.negative && value.magnitude != 0) {
+        if (bound >= 0)
+            return -1;
+        const std::uint64_t m = static_cast<std::uint64_t>(-(bound + 1)) + 1; // |bound|, also for INT64_MIN
+        return value.magnitude > m ? -1 : value.magnitude < m ? 1 : 0;
+    }
+    if (bound < 0)
+        return 1;
+    const auto m = static_cast<std::uint64_t>(bound);
+    return value.magnitude > m ? 1 : value.magnitude < m ? -1 : 0;
+}
+
+// Why `value` does not fit an integer variable of `type` (its size, signedness and subrange), or
+// nullopt. A based literal (16#FFFF) may give the bit pattern of a signed variable.
+std::optional<QString> outOfRange(const Type &type, const IntegerValue &value, bool based, const QString &text)
+{
+    if (type.subrange) {
+        const auto [low, high] = *type.subrange;
+        if (compare(value, low) >= 0 && compare(value, high) <= 0)
+            return std::nullopt;
+        return QStringLiteral("%1 is out of the range of %2 (%3..%4).").arg(text, typeName(&type)).arg(low).arg(high);
+    }
+    const unsigned bits = std::min(8 * type.size, 64u);
+    if (bits == 0)
+        return std::nullopt;
+    const bool isUnsigned = info(type.elem).isUnsigned || info(type.elem).isBit;
+    const std::int64_t low = isUnsigned ? 0 : std::numeric_limits<std::int64_t>::min() >> (64 - bits);
+    const unsigned highBits = isUnsigned || based ? bits : bits - 1;
+    const std::uint64_t high = highBits >= 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << highBits) - 1;
+    const bool negative = value.negative && value.magnitude != 0;
+    if (compare(value, low) >= 0 && (negative || value.magnitude <= high))
+        return std::nullopt;
+    if (based)
+        return QStringLiteral("%1 does not fit the %2 bits of %3.").arg(text).arg(bits).arg(typeName(&type));
+    const std::uint64_t signedHigh = isUnsigned ? high : (std::uint64_t(1) << (bits - 1)) - 1;
+    return QStringLiteral("%1 is out of the range of %2 (%3..%4).").arg(text, typeName(&type)).arg(low).arg(signedHigh);
+}
+
+} // namespace
+
 std::optional<QString> writeLiteral(const VariableRef &ref, const QString &input, std::uint8_t *memory, std::uint8_t *image)
 {
     std::uint8_t *p = (ref.imageArea ? image : memory) + ref.offset;
@@ -286,6 +333,8 @@ std::optional<QString> writeLiteral(const VariableRef &ref, const QString &input
         const auto value = decodeReal(parts.body);
         if (!value)
             return bad();
+        if (e == Elem::Real && std::isfinite(*value) && std::fabs(*value) > double(std::numeric_limits<float>::max()))
+            return QStringLiteral("%1 is out of the range of REAL (about ±3.4E38).").arg(text);
         if (e == Elem::Real)
             put<float>(p, static_cast<float>(*value));
         else
@@ -295,6 +344,8 @@ std::optional<QString> writeLiteral(const VariableRef &ref, const QString &input
     const auto value = decodeInteger(parts.body);
     if (!value)
         return bad();
+    if (auto problem = outOfRange(*type, *value, parts.body.contains(QLatin1Char('#')), text))
+        return problem;
     const std::uint64_t bits = value->negative ? 0 - value->magnitude : value->magnitude;
     std::memcpy(p, &bits, type->size); // little endian: the low bytes
     return std::nullopt;

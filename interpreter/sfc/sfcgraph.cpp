@@ -13,7 +13,7 @@ namespace {
 SourceLocation at(quint64 localId)
 {
     SourceLocation location;
-    location.localId = static_cast<int>(localId);
+    location.localId = localId > quint64(std::numeric_limits<qint64>::max()) ? -1 : qint64(localId);
     return location;
 }
 

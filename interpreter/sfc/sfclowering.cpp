@@ -15,6 +15,7 @@
 #include <QSet>
 
 #include <algorithm>
+#include <limits>
 #include <map>
 
 namespace iec::interp::sfc {
@@ -225,7 +226,7 @@ private:
     SourceLocation at(quint64 localId) const
     {
         SourceLocation location;
-        location.localId = localId == kNoElement ? -1 : static_cast<int>(localId);
+        location.localId = localId > quint64(std::numeric_limits<qint64>::max()) ? -1 : qint64(localId); // kNoElement too
         return location;
     }
 
@@ -396,7 +397,8 @@ private:
             text += QStringLiteral("%1 : BOOL;\n").arg(hidden("a", j, flag));
         for (const char *start : {"ls", "ds", "sds", "dss", "sls", "t"})
             text += QStringLiteral("%1 : TIME;\n").arg(hidden("a", j, start));
-        if (m_pouActions.contains(key(name)) && !declared(name)) {
+        // An action the chart calls (IL) keeps its own name, so no implicit Act.x flag hides it.
+        if (m_pouActions.contains(key(name)) && !declared(name) && !isCalledAction(name)) {
             implicit(text, name, QStringLiteral("STRUCT x : BOOL; _x : BOOL; END_STRUCT"), 0);
             m_implicitActionFlags.insert(key(name));
             if (!declared(QLatin1Char('_') + name)) {
@@ -408,6 +410,31 @@ private:
 
     // ---- user bodies --------------------------------------------------------------------------
 
+    // IL cannot be inlined into the chart's ST; such an action is compiled as an action of the
+    // POU (Main.Act) and the chart calls it: Act();
+    bool isCalledAction(const QString &name) const
+    {
+        if (m_parsed) {
+            for (const ast::SfcAction &action : *m_parsed)
+                if (key(action.name) == key(name))
+                    return action.body.language == ast::Language::IL;
+        }
+        const model::PouAction *action = m_pouActions.value(key(name));
+        return action && action->body.language() == model::BodyLanguage::IL;
+    }
+
+    std::vector<ast::Stmt> callAction(const QString &name, ast::Body body, quint64 localId)
+    {
+        if (!m_calledActions.contains(key(name))) {
+            m_calledActions.insert(key(name));
+            ast::SfcAction action;
+            action.name = name;
+            action.body = std::move(body);
+            m_result.actions.push_back(std::move(action));
+        }
+        return code(name + QStringLiteral("();\n"), localId);
+    }
+
     // The statements of a POU action (entry/exit/active action or IEC action).
     std::optional<std::vector<ast::Stmt>> actionBody(const model::Body &body, const QString &owner, quint64 localId)
     {
@@ -418,18 +445,31 @@ private:
                     continue;
                 if (action.body.language == ast::Language::ST || action.body.language == ast::Language::None)
                     return action.body.statements;
-                error(localId, QStringLiteral("%1 is written in IL; an action that a chart runs must be written in ST, LD or FBD for now.").arg(owner),
-                    QStringLiteral("rewrite the action in ST"));
+                if (action.body.language == ast::Language::IL)
+                    return callAction(action.name, action.body, localId);
+                error(localId, QStringLiteral("%1 is itself an SFC chart; charts inside actions are not supported.").arg(owner),
+                    QStringLiteral("use a macro step, or move the chart into a function block"));
                 return std::nullopt;
             }
         }
         switch (body.language()) {
         case model::BodyLanguage::ST:
+            if (const auto cfc = graphical::cfcDiagram(body)) { // CODESYS CFC: empty ST text, diagram in addData
+                graphical::LoweringContext context {m_result, owner, m_diagnostics};
+                return graphical::lowerBody(*cfc, context);
+            }
             return parseStBody(body.text(), owner, m_diagnostics);
         case model::BodyLanguage::IL: {
-            error(localId, QStringLiteral("%1 is written in IL; an action that a chart runs must be written in ST, LD or FBD for now.").arg(owner),
-                QStringLiteral("rewrite the action in ST"));
-            return std::nullopt;
+            const QString name = owner.section(QLatin1Char('.'), -1);
+            if (owner == m_pou.name) { // an inline action body has no name to call
+                error(localId, QStringLiteral("This inline action is written in IL; an inline action must be written in ST, LD or FBD."),
+                    QStringLiteral("make it an action of %1 and name it in the step").arg(m_pou.name));
+                return std::nullopt;
+            }
+            ast::Body parsed;
+            parsed.language = ast::Language::IL;
+            parsed.il = parseIlBody(body.text(), owner, m_diagnostics);
+            return callAction(name, std::move(parsed), localId);
         }
         case model::BodyLanguage::LD:
         case model::BodyLanguage::FBD: {
@@ -549,7 +589,7 @@ private:
         } else if (const auto *inl = std::get_if<model::InlineCondition>(&c.kind)) {
             expr = bodyCondition(*inl->body, owner, inl->name, t.localId, pre);
         } else if (const auto *wire = std::get_if<model::ConnectionPointIn>(&c.kind)) {
-            expr = wiredCondition(t, *wire);
+            expr = wiredCondition(t, *wire, pre);
         }
         if (expr && c.negated)
             expr = notExpr(std::move(*expr));
@@ -558,7 +598,8 @@ private:
 
     // CODESYS wires an inVariable holding an expression to the condition; other networks go to
     // the graphical lowering.
-    std::optional<ast::Expr> wiredCondition(const ChartTransition &t, const model::ConnectionPointIn &wire)
+    std::optional<ast::Expr> wiredCondition(const ChartTransition &t, const model::ConnectionPointIn &wire,
+        std::vector<ast::Stmt> &pre)
     {
         if (wire.expression)
             return stConditionExpr(*wire.expression, t.localId);
@@ -577,7 +618,9 @@ private:
             error(t.localId, QStringLiteral("The condition of this transition is not connected."));
             return std::nullopt;
         }
-        graphical::LoweringContext context {m_result, m_pou.name, m_diagnostics};
+        // Blocks in the network (function block calls, edge detectors) run before the condition
+        // is read, every cycle, like a network of the chart's body.
+        graphical::LoweringContext context {m_result, m_pou.name, m_diagnostics, &pre};
         auto expr = graphical::lowerInput(*t.scope, wire, context);
         if (!expr)
             m_failed = true;
@@ -1033,6 +1076,7 @@ private:
     std::vector<std::vector<ast::Stmt>> m_splices;
     QHash<int, int> m_bodyCache;
     const std::vector<ast::SfcAction> *m_parsed = nullptr;
+    QSet<QString> m_calledActions; // keys of the actions already in m_result.actions
     bool m_failed = false;
 };
 

@@ -307,6 +307,15 @@ void TestCli::check_data()
   <body><ST><xhtml:p><![CDATA[x := 1;
 x := y;]]></xhtml:p></ST></body></pou></pous></types><instances><configurations/></instances></project>)")
         << 1 << QStringLiteral("FILE:P:2:6: error: Unknown variable 'y'. (hint: declare it in a VAR section)\n");
+    // A graphical element has no line: the diagnostic names its localId, 64-bit like CODESYS's.
+    QTest::newRow("XML FBD: element's localId")
+        << QStringLiteral("fbd.xml") << QStringLiteral(R"(<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <fileHeader companyName="t" productName="t" productVersion="1" creationDateTime="2026-01-01T00:00:00"/>
+  <contentHeader name="t"><coordinateInfo><fbd><scaling x="1" y="1"/></fbd><ld><scaling x="1" y="1"/></ld><sfc><scaling x="1" y="1"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous><pou name="P" pouType="program"><interface><localVars><variable name="x"><type><INT/></type></variable></localVars></interface>
+  <body><FBD><outVariable localId="10000000012"><position x="200" y="10"/><connectionPointIn/><expression>x</expression></outVariable></FBD></body></pou></pous></types><instances><configurations/></instances></project>)")
+        << 1 << QStringLiteral("FILE:P: error: Nothing is wired to the output 'x'. (hint: draw a wire to it) [localId 10000000012]\n");
     QTest::newRow("not XML") << QStringLiteral("broken.xml") << QStringLiteral("<project") << 1 << QString();
 }
 
@@ -335,10 +344,10 @@ void TestCli::checkNamesGraphicalPousOfTheCorpus()
     const Result result = cli({QStringLiteral("check"), file});
     QCOMPARE(result.exitCode, 1);
     const QString logger
-        = file + QStringLiteral(":main_test: error: The LOGGER block comes from the Beremiz library, which this version does not have.\n");
+        = file + QStringLiteral(":main_test: error: The LOGGER block comes from the Beremiz library, which this version does not have. [localId %1]\n");
     QCOMPARE(result.out,
-        logger + logger + logger + file
-            + QStringLiteral(":TEMPO_TEST: error: The RTC block comes from the Beremiz library, which this version does not have.\n"));
+        logger.arg(2) + logger.arg(8) + logger.arg(27) + file
+            + QStringLiteral(":TEMPO_TEST: error: The RTC block comes from the Beremiz library, which this version does not have. [localId 5]\n"));
 }
 
 void TestCli::convertRoundTrips()

@@ -37,6 +37,8 @@ private Q_SLOTS:
     void symbolNames_data();
     void symbolNames();
     void writeRejectsBadLiterals();
+    void writeRefusesValuesOutOfRange_data();
+    void writeRefusesValuesOutOfRange();
 };
 
 void TestRuntime::faults_data()
@@ -263,6 +265,50 @@ void TestRuntime::writeRejectsBadLiterals()
     QCOMPARE(runtime.write(QStringLiteral("Main.nope"), QStringLiteral("1")).value_or(QString()), QStringLiteral("There is no variable called Main.nope."));
     QVERIFY(!runtime.write(QStringLiteral("Main.t"), QStringLiteral("T#1h2m")));
     QCOMPARE(runtime.read(QStringLiteral("Main.t")).value(), QStringLiteral("T#1h2m"));
+}
+
+void TestRuntime::writeRefusesValuesOutOfRange_data()
+{
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QString>("literal");
+    QTest::addColumn<QString>("problem"); // empty: accepted
+    QTest::addColumn<QString>("value");   // read back after an accepted write
+    QTest::newRow("INT too big") << "i" << "100000" << "100000 is out of the range of INT (-32768..32767)." << "0";
+    QTest::newRow("INT max") << "i" << "32767" << "" << "32767";
+    QTest::newRow("INT min") << "i" << "-32768" << "" << "-32768";
+    QTest::newRow("INT below min") << "i" << "-32769" << "-32769 is out of the range of INT (-32768..32767)." << "0";
+    QTest::newRow("INT bit pattern") << "i" << "16#FFFF" << "" << "-1";
+    QTest::newRow("INT pattern too wide") << "i" << "16#1_0000" << "16#1_0000 does not fit the 16 bits of INT." << "0";
+    QTest::newRow("SINT") << "si" << "128" << "128 is out of the range of SINT (-128..127)." << "0";
+    QTest::newRow("USINT negative") << "us" << "-1" << "-1 is out of the range of USINT (0..255)." << "0";
+    QTest::newRow("USINT max") << "us" << "255" << "" << "255";
+    QTest::newRow("UDINT too big") << "ud" << "4294967296" << "4294967296 is out of the range of UDINT (0..4294967295)." << "0";
+    QTest::newRow("LINT min") << "li" << "-9223372036854775808" << "" << "-9223372036854775808";
+    QTest::newRow("LINT above max") << "li" << "9223372036854775808"
+                                    << "9223372036854775808 is out of the range of LINT (-9223372036854775808..9223372036854775807)." << "0";
+    QTest::newRow("ULINT max") << "ul" << "18446744073709551615" << "" << "18446744073709551615";
+    QTest::newRow("BYTE") << "b" << "256" << "256 is out of the range of BYTE (0..255)." << "0";
+    QTest::newRow("typed literal") << "i" << "INT#40000" << "INT#40000 is out of the range of INT (-32768..32767)." << "0";
+    QTest::newRow("subrange") << "p" << "101" << "101 is out of the range of Pct (0..100)." << "0";
+    QTest::newRow("subrange below") << "p" << "-1" << "-1 is out of the range of Pct (0..100)." << "0";
+    QTest::newRow("REAL too big") << "r" << "1e40" << "1e40 is out of the range of REAL (about ±3.4E38)." << "0.0";
+    QTest::newRow("LREAL holds it") << "lr" << "1e40" << "" << "1e+40";
+    QTest::newRow("subrange inside") << "p" << "100" << "" << "100";
+}
+
+// The online watch writes what the user typed: a value the variable cannot hold is refused, not wrapped.
+void TestRuntime::writeRefusesValuesOutOfRange()
+{
+    QFETCH(QString, name);
+    QFETCH(QString, literal);
+    QFETCH(QString, problem);
+    QFETCH(QString, value);
+    Runtime runtime(build(QStringLiteral(
+        "TYPE Pct : INT(0..100); END_TYPE\n"
+        "PROGRAM Main VAR i : INT; si : SINT; us : USINT; ud : UDINT; li : LINT; ul : ULINT; b : BYTE; p : Pct; r : REAL; lr : LREAL; END_VAR END_PROGRAM")));
+    const QString variable = QStringLiteral("Main.") + name;
+    QCOMPARE(runtime.write(variable, literal).value_or(QString()), problem);
+    QCOMPARE(runtime.read(variable).value_or(QStringLiteral("<none>")), value);
 }
 
 QTEST_GUILESS_MAIN(TestRuntime)

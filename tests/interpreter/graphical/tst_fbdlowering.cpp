@@ -115,6 +115,13 @@ const std::vector<Case> &cases()
                 d.block(3, "SR", "latch", {{"S1", {{1}}}, {"R", {{2}}}}, {"Q1"}).out(4, "q", {{3, "Q1"}});
             },
             {"s=TRUE => q=TRUE", "s=FALSE => q=TRUE", "r=TRUE => q=FALSE"}},
+        {"a loop through a function block reads its output of the previous scan", "VAR s : BOOL; y : INT; c : CTU; END_VAR",
+            [](Diagram &d) {
+                // The counter resets itself from its own Q (a wire from its output back to R).
+                d.in(1, "s").in(2, "2", 0, 60);
+                d.block(3, "CTU", "c", {{"CU", {{1}}}, {"R", {{3, "Q"}}}, {"PV", {{2}}}}, {"Q", "CV"}).out(4, "y", {{3, "CV"}});
+            },
+            {"s=TRUE => y=1", "s=FALSE => y=1", "s=TRUE => y=2", "s=FALSE => y=0", "s=TRUE => y=1"}},
         {"conditional jump over a network", "VAR c, a, x : BOOL; END_VAR",
             [](Diagram &d) {
                 d.in(1, "c").jump(2, "Skip", {{1}});

@@ -58,7 +58,7 @@ void TestGraphicalCorpus::compilesOrNamesTheVendorFeature_data()
     // Its FBD lowers; its declarations use Beremiz SVGHMI types (HMI_BOOL), which the compiler
     // reports itself (and then the variables it could not declare).
     QTest::newRow("beremiz traffic light")
-        << "beremiz_svghmi_traffic_light.xml" << "first: main_program: Unknown type 'HMI_BOOL'.";
+        << "beremiz_svghmi_traffic_light.xml" << "first: main_program: HMI_BOOL is a Beremiz SVGHMI type, which IEC Studio does not support.";
     QTest::newRow("codesys FBD example") << "codesys35sp14_FBDExample.xml" << "";
     QTest::newRow("openplc TCP socket")
         << "openplc_TCP_socket.xml"

@@ -19,6 +19,7 @@ private Q_SLOTS:
     void conditionWiredToContactsAndBlocks();
     void conditionThatNeedsStatements();
     void codesysCfcRunsInItsOrder();
+    void codesysCfcBodyCompilesInTheProject();
 };
 
 namespace {
@@ -97,7 +98,7 @@ void TestGraphicalSeams::conditionThatNeedsStatements()
 
 // CODESYS writes a CFC as an empty ST body with the diagram in addData; its executionOrderId
 // decides the order (here against the positions, which would run x := y first).
-void TestGraphicalSeams::codesysCfcRunsInItsOrder()
+static model::Body codesysCfcBody()
 {
     model::Body body = model::Body::withLanguage(model::BodyLanguage::ST);
     model::AddDataEntry cfc;
@@ -112,6 +113,12 @@ void TestGraphicalSeams::codesysCfcRunsInItsOrder()
         "<connectionPointIn><connection refLocalId=\"3\"/></connectionPointIn><expression>x</expression></outVariable>"
         "</CFC>");
     body.addData.push_back(cfc);
+    return body;
+}
+
+void TestGraphicalSeams::codesysCfcRunsInItsOrder()
+{
+    const model::Body body = codesysCfcBody();
     const auto diagram = interp::graphical::cfcDiagram(body);
     QVERIFY(diagram);
     QCOMPARE(diagram->elements()->size(), size_t(4));
@@ -119,6 +126,23 @@ void TestGraphicalSeams::codesysCfcRunsInItsOrder()
     // CODESYS numbers from 0 (Beremiz writes 0 for "none"): y := a (0) runs before x := y (1).
     auto project = diagramProject(QStringLiteral("VAR a, x, y : BOOL; END_VAR"), model::BodyLanguage::FBD, Diagram {});
     project.types.pous.front().bodies = {*diagram};
+    QCOMPARE(runProject(project, {"a=TRUE => y=TRUE; x=TRUE", "a=FALSE => y=FALSE; x=FALSE"}), QString());
+}
+
+// The project frontend finds the CFC itself: as the POU body and as an action's body.
+void TestGraphicalSeams::codesysCfcBodyCompilesInTheProject()
+{
+    auto project = diagramProject(QStringLiteral("VAR a, x, y : BOOL; END_VAR"), model::BodyLanguage::FBD, Diagram {});
+    project.types.pous.front().bodies = {codesysCfcBody()};
+    QCOMPARE(runProject(project, {"a=TRUE => y=TRUE; x=TRUE", "a=FALSE => y=FALSE; x=FALSE"}), QString());
+
+    model::Body call = model::Body::withLanguage(model::BodyLanguage::ST);
+    call.setText(QStringLiteral("Act();"));
+    project.types.pous.front().bodies = {call};
+    model::PouAction action;
+    action.name = QStringLiteral("Act");
+    action.body = codesysCfcBody();
+    project.types.pous.front().actions.push_back(action);
     QCOMPARE(runProject(project, {"a=TRUE => y=TRUE; x=TRUE", "a=FALSE => y=FALSE; x=FALSE"}), QString());
 }
 

@@ -2,6 +2,7 @@
 // cycle. docs/sfc.md states the rules these tables check.
 #include "sfctesting.h"
 
+#include "interpreter/compiler/parser.h"
 #include "interpreter/sfc/sfcstatus.h"
 
 #include <QTest>
@@ -34,6 +35,7 @@ private Q_SLOTS:
     void chartInFunctionBlockHasOneStatePerInstance();
     void chartState();
     void ilCondition();
+    void ilActionRunsAsCalledAction();
 };
 
 namespace {
@@ -462,6 +464,42 @@ void TestSfcEngine::ilCondition()
         "END_PROGRAM\n");
     QCOMPARE(runTrace(chart, {QStringLiteral("a=TRUE; b=TRUE => Init.x=TRUE"), QStringLiteral("b=FALSE => Init.x=TRUE"), QStringLiteral("=> S1.x=TRUE")}),
         QString());
+}
+
+// IL cannot be inlined into the chart: the action is compiled as Main.A and the chart calls it.
+// With N it runs while S1 is active plus the final run, exactly like the ST action above.
+void TestSfcEngine::ilActionRunsAsCalledAction()
+{
+    const QString chart = QStringLiteral(
+        "PROGRAM Main\nVAR go : BOOL; n : INT; ne : INT; Out : BOOL; END_VAR\n"
+        "INITIAL_STEP Init: END_STEP\n"
+        "TRANSITION FROM Init TO S1 := go; END_TRANSITION\n"
+        "STEP S1: A(N); Out(N); END_STEP\n"
+        "TRANSITION FROM S1 TO Init := NOT go; END_TRANSITION\n"
+        "ACTION A:\n LD n\n ADD 1\n ST n\nEND_ACTION\n"
+        "ACTION En:\n LD ne\n ADD 10\n ST ne\nEND_ACTION\n"
+        "END_PROGRAM\n");
+    model::Project project = readText(chart);
+    const model::Pou &pou = project.types.pous.front();
+    QCOMPARE(int(pou.actions.size()), 2);
+    QCOMPARE(int(pou.actions.front().body.language()), int(model::BodyLanguage::IL));
+    QCOMPARE(runTrace(project, qualifierTrace(QStringLiteral("0 0 1 2 3 4 5 6 6"), QStringLiteral("F F T T T T T F F"))), QString());
+    // The same IL action as a step's entry action too: called, compiled once.
+    editStep(project, QStringLiteral("Main"), QStringLiteral("S1"), [](model::StepOptions &o) { o.entryAction = QStringLiteral("En"); });
+    QCOMPARE(runTrace(project, {QStringLiteral("=> ne=0; n=0"), QStringLiteral("go=TRUE => ne=0"), QStringLiteral("=> ne=10; n=1"),
+                                   QStringLiteral("=> ne=10; n=2")}),
+        QString());
+
+    // Straight from .st text (iecstudio-cli run chart.st): the parsed IL body is called as well.
+    Diagnostics diagnostics;
+    frontend::ProjectUnit unit {parseUnit(chart, diagnostics), false};
+    const auto module = frontend::compileUnit(unit, diagnostics);
+    QVERIFY2(module, qPrintable(errorsOf(diagnostics)));
+    Runtime runtime(module);
+    QVERIFY(!runtime.write(QStringLiteral("Main.go"), QStringLiteral("TRUE")));
+    QVERIFY(runtime.runCycles(4));
+    QCOMPARE(runtime.read(QStringLiteral("Main.n")).value_or(QString()), QStringLiteral("3"));
+    QCOMPARE(errorsOf(diagnostics), QString());
 }
 
 QTEST_GUILESS_MAIN(TestSfcEngine)
