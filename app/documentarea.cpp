@@ -12,8 +12,16 @@
 #include "editors/text/texteditorwidget.h"
 #include "model/projectmodel.h"
 
+#include <QAbstractButton>
+#include <QAbstractItemView>
 #include <QAction>
+#include <QComboBox>
+#include <QKeyEvent>
 #include <QLabel>
+#include <QLineEdit>
+#include <QPlainTextEdit>
+#include <QTabBar>
+#include <QToolButton>
 #include <QToolTip>
 #include <QUndoStack>
 #include <QSplitter>
@@ -67,7 +75,91 @@ QString onlineInstanceOf(const model::Project &project, model::PouId id)
     return {};
 }
 
+// Online, the declaration table's own Ctrl+Z/Ctrl+Y (which act on the POU's stack directly)
+// would change the program: this filter, installed last so it runs first, swallows them.
+class UndoKeyBlocker : public QObject
+{
+public:
+    UndoKeyBlocker(QObject *parent, std::function<void()> refused)
+        : QObject(parent)
+        , m_refused(std::move(refused))
+    {
+        setObjectName(QStringLiteral("iecOnlineUndoBlocker"));
+    }
+
+    bool eventFilter(QObject *, QEvent *event) override
+    {
+        if (event->type() != QEvent::ShortcutOverride && event->type() != QEvent::KeyPress)
+            return false;
+        const auto *key = static_cast<QKeyEvent *>(event);
+        if (!key->matches(QKeySequence::Undo) && !key->matches(QKeySequence::Redo))
+            return false;
+        event->accept();
+        if (event->type() == QEvent::KeyPress)
+            m_refused();
+        return true;
+    }
+
+private:
+    std::function<void()> m_refused;
+};
+
+// Turns the fields of a declaration or data type editor read-only and its buttons off (or back).
+// A property marks what this changed, so unlocking gives back exactly that and leaves alone what
+// the editor itself had made read-only or disabled.
+const char *const kLockedProperty = "iecOnlineLocked";
+const char *const kEditTriggersProperty = "iecEditTriggers";
+
+void lockEditor(QWidget *editor, bool locked, const std::function<void()> &refused)
+{
+    for (QWidget *widget : editor->findChildren<QWidget *>()) {
+        if (widget->property(kLockedProperty).toBool() == locked)
+            continue;
+        if (auto *line = qobject_cast<QLineEdit *>(widget)) {
+            if (locked && line->isReadOnly())
+                continue;
+            line->setReadOnly(locked);
+        } else if (auto *text = qobject_cast<QPlainTextEdit *>(widget)) {
+            if (locked && text->isReadOnly())
+                continue;
+            text->setReadOnly(locked);
+        } else if (auto *view = qobject_cast<QAbstractItemView *>(widget)) {
+            if (locked) {
+                view->setProperty(kEditTriggersProperty, int(view->editTriggers()));
+                view->setEditTriggers(QAbstractItemView::NoEditTriggers);
+                view->installEventFilter(new UndoKeyBlocker(view, refused));
+            } else {
+                view->setEditTriggers(QAbstractItemView::EditTriggers(view->property(kEditTriggersProperty).toInt()));
+                delete view->findChild<QObject *>(QStringLiteral("iecOnlineUndoBlocker"), Qt::FindDirectChildrenOnly);
+            }
+        } else if ((qobject_cast<QAbstractButton *>(widget) && !qobject_cast<QTabBar *>(widget->parentWidget()))
+                   || qobject_cast<QComboBox *>(widget)) {
+            if (locked && !widget->isEnabled())
+                continue;
+            widget->setEnabled(!locked);
+            // A tool bar's button follows its action, so the action is switched too.
+            if (auto *tool = qobject_cast<QToolButton *>(widget); tool && tool->defaultAction())
+                tool->defaultAction()->setEnabled(!locked);
+        } else {
+            continue;
+        }
+        widget->setProperty(kLockedProperty, locked);
+    }
+}
+
 } // namespace
+
+void DocumentArea::setEditingLocked(bool locked)
+{
+    m_editingLocked = locked;
+    for (int index = 0; index < count(); ++index) {
+        QWidget *document = widget(index);
+        if (auto *types = qobject_cast<editors::DataTypeEditor *>(document))
+            lockEditor(types, locked, [this] { Q_EMIT editRefused(); });
+        else if (auto *declarations = document->findChild<editors::DeclarationEditor *>())
+            lockEditor(declarations, locked, [this] { Q_EMIT editRefused(); });
+    }
+}
 
 DocumentArea::DocumentArea(model::ProjectModel &projectModel, QWidget *parent)
     : QTabWidget(parent)
@@ -194,6 +286,8 @@ QWidget *DocumentArea::openDataType(const QString &typeName)
             closeDocument(index);
     }, Qt::QueuedConnection);
     const int index = addTab(editor, typeName);
+    if (m_editingLocked)
+        lockEditor(editor, true, [this] { Q_EMIT editRefused(); });
     setCurrentIndex(index);
     return editor;
 }
@@ -210,6 +304,8 @@ QWidget *DocumentArea::openBody(const BodyRef &ref)
     QWidget *document = createEditor(ref);
     document->setProperty(kBodyRefProperty, QVariant::fromValue(ref));
     const int index = addTab(document, languageIcon(body->language()), title(m_projectModel.project(), ref));
+    if (auto *declarations = document->findChild<editors::DeclarationEditor *>(); declarations && m_editingLocked)
+        lockEditor(declarations, true, [this] { Q_EMIT editRefused(); });
     setCurrentIndex(index);
     return document;
 }

@@ -67,6 +67,11 @@ public:
     [[nodiscard]] QList<OnlineDocument> onlineViews() const;
     // Sends text typed but not yet pushed (the editors wait for a pause) into the model.
     void flushEdits();
+    // Online: the declaration and data type editors, open now or opened later, are only looked
+    // at (fields read-only, buttons off, Ctrl+Z in the table ignored); editRefused is sent when
+    // a change is tried. The body editors refuse edits themselves (OnlineView).
+    void setEditingLocked(bool locked);
+    [[nodiscard]] bool isEditingLocked() const { return m_editingLocked; }
 
     // Typing is not on any undo stack, so the window asks here whether there is unsaved typing:
     // an open editor's document is modified, or one was when its tab closed.
@@ -86,6 +91,8 @@ Q_SIGNALS:
     void typingModifiedChanged();
     // An editor's "Add to Watch" on a variable, with its full name ("Main.Count").
     void addToWatchRequested(const QString &name);
+    // Undo or redo was tried in a locked (online) declaration table.
+    void editRefused();
 
 private:
     void closeDocumentsIf(const std::function<bool(const model::BodyRef &)> &shouldClose);
@@ -99,6 +106,7 @@ private:
     model::ProjectModel &m_projectModel;
     UndoStacks *m_undoStacks;
     bool m_typingInClosedDocuments = false;
+    bool m_editingLocked = false;
 };
 
 } // namespace iec::app

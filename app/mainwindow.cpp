@@ -18,6 +18,7 @@
 #include "app/undoactions.h"
 #include "app/undostacks.h"
 #include "editors/declarations/declarationeditor.h"
+#include "editors/sfc/sfceditor.h"
 #include "editors/text/codeeditor.h"
 #include "model/plcopen/reader.h"
 #include "model/plcopen/writer.h"
@@ -68,6 +69,34 @@ MainWindow::MainWindow(QWidget *parent)
     createToolBar();
     connect(m_documents, &QTabWidget::currentChanged, this, &MainWindow::updateActiveUndoStack);
     connect(qApp, &QApplication::focusChanged, this, &MainWindow::updateActiveUndoStack);
+    // While a chart editor is the current tab, its structured commands join the Insert menu
+    // below a separator (CODESYS puts them there); another tab takes them out again.
+    QAction *chartSeparator = m_insertMenu->addSeparator();
+    chartSeparator->setVisible(false);
+    connect(m_documents, &QTabWidget::currentChanged, this, [this, chartSeparator] {
+        const QList<QAction *> entries = m_insertMenu->actions();
+        for (qsizetype i = entries.indexOf(chartSeparator) + 1; i < entries.size(); ++i)
+            m_insertMenu->removeAction(entries[i]);
+        QWidget *current = m_documents->currentWidget();
+        auto *chart = qobject_cast<editors::sfc::SfcEditor *>(current);
+        if (!chart && current)
+            chart = current->findChild<editors::sfc::SfcEditor *>();
+        chartSeparator->setVisible(chart != nullptr);
+        if (chart)
+            m_insertMenu->addActions(chart->insertActions());
+    });
+    // Online nothing of the project may change: the editors only show, the tree's commands,
+    // Import and Undo/Redo are off, and the status bar says how to edit again.
+    const auto sayLogOutToEdit = [this] { statusBar()->showMessage(tr("Log out to edit (Online → Logout)."), 10000); };
+    // (The controller's "Logged in" message already says how.)
+    connect(m_online, &OnlineController::onlineChanged, this, [this](bool online) {
+        m_treeActions->setLocked(online);
+        m_undoActions->setLocked(online);
+        m_documents->setEditingLocked(online);
+        m_importExport->importAction()->setEnabled(!online);
+    });
+    connect(m_treeActions, &ProjectTreeActions::editRefused, this, sayLogOutToEdit);
+    connect(m_documents, &DocumentArea::editRefused, this, sayLogOutToEdit);
     statusBar();
     applyUiLanguage(m_settings.uiLanguage);
     m_recovery->setIntervalMinutes(m_settings.autosaveMinutes);

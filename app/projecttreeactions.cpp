@@ -92,10 +92,28 @@ void ProjectTreeActions::updateEnabled()
     const model::Pou *pou = item ? m_model.project().findPou(item->pou) : nullptr;
     // CODESYS keeps actions and transitions for SFC programs; any program or FB may have them here.
     const bool mayHaveParts = pou && pou->kind != model::PouKind::Function;
+    m_addPou->setEnabled(!m_locked);
     m_addAction->setEnabled(mayHaveParts);
     m_addTransition->setEnabled(mayHaveParts);
     for (QAction *action : {m_rename, m_delete, m_duplicate})
         action->setEnabled(item.has_value());
+    if (m_locked) {
+        for (QAction *action : {m_addAction, m_addTransition, m_rename, m_delete, m_duplicate})
+            action->setEnabled(false);
+    }
+}
+
+void ProjectTreeActions::setLocked(bool locked)
+{
+    m_locked = locked;
+    updateEnabled();
+}
+
+bool ProjectTreeActions::refuseWhenLocked()
+{
+    if (m_locked)
+        Q_EMIT editRefused();
+    return m_locked;
 }
 
 void ProjectTreeActions::showContextMenu(const QPoint &position)
@@ -108,6 +126,8 @@ void ProjectTreeActions::showContextMenu(const QPoint &position)
 
 void ProjectTreeActions::addPouInteractive()
 {
+    if (refuseWhenLocked())
+        return;
     AddPouDialog dialog(m_model.project(), m_dialogParent);
     if (dialog.exec() != QDialog::Accepted)
         return;
@@ -130,6 +150,8 @@ void ProjectTreeActions::addTransitionInteractive()
 
 void ProjectTreeActions::addPartInteractive(BodyRef::Part part)
 {
+    if (refuseWhenLocked())
+        return;
     const std::optional<BodyRef> item = currentItem();
     if (!item)
         return;
@@ -145,6 +167,8 @@ void ProjectTreeActions::addPartInteractive(BodyRef::Part part)
 
 void ProjectTreeActions::renameInteractive()
 {
+    if (refuseWhenLocked())
+        return;
     const std::optional<BodyRef> item = currentItem();
     if (!item)
         return;
@@ -166,6 +190,8 @@ void ProjectTreeActions::renameInteractive()
 
 void ProjectTreeActions::renameInPlace(const BodyRef &item, const QString &newName)
 {
+    if (refuseWhenLocked())
+        return;
     QString error;
     if (!m_commands.rename(item, newName, &error))
         QMessageBox::warning(m_dialogParent, tr("Rename %1").arg(m_commands.nameOf(item)), error);
@@ -173,6 +199,8 @@ void ProjectTreeActions::renameInPlace(const BodyRef &item, const QString &newNa
 
 void ProjectTreeActions::deleteInteractive()
 {
+    if (refuseWhenLocked())
+        return;
     const std::optional<BodyRef> item = currentItem();
     if (!item)
         return;
@@ -185,6 +213,8 @@ void ProjectTreeActions::deleteInteractive()
 
 void ProjectTreeActions::duplicateCurrent()
 {
+    if (refuseWhenLocked())
+        return;
     if (const std::optional<BodyRef> item = currentItem()) {
         if (const auto copy = m_commands.duplicate(*item))
             Q_EMIT created(*copy);

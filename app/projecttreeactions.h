@@ -33,6 +33,10 @@ public:
     [[nodiscard]] QAction *renameAction() const { return m_rename; }
     [[nodiscard]] QAction *deleteAction() const { return m_delete; }
     [[nodiscard]] QAction *duplicateAction() const { return m_duplicate; }
+    // Online the project's structure stays as it is: every action is off and the in-place
+    // rename is refused (editRefused tells the window to say why).
+    void setLocked(bool locked);
+    [[nodiscard]] bool isLocked() const { return m_locked; }
 
 public Q_SLOTS:
     void addPouInteractive();
@@ -47,11 +51,14 @@ public Q_SLOTS:
 Q_SIGNALS:
     // A POU, action or transition was created (added or duplicated): the window opens it.
     void created(const iec::model::BodyRef &item);
+    // A change was asked for while locked (online) and not made.
+    void editRefused();
 
 private:
     QAction *createAction(const char *objectName, void (ProjectTreeActions::*slot)());
     void addPartInteractive(model::BodyRef::Part part);
     void updateEnabled();
+    bool refuseWhenLocked();
     void showContextMenu(const QPoint &position);
     [[nodiscard]] std::optional<model::BodyRef> currentItem() const;
 
@@ -65,6 +72,7 @@ private:
     QAction *m_rename = nullptr;
     QAction *m_delete = nullptr;
     QAction *m_duplicate = nullptr;
+    bool m_locked = false;
 };
 
 } // namespace iec::app

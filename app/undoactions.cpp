@@ -47,8 +47,16 @@ void UndoActions::setTextEditor(QPlainTextEdit *editor)
     update();
 }
 
+void UndoActions::setLocked(bool locked)
+{
+    m_locked = locked;
+    update();
+}
+
 void UndoActions::undo()
 {
+    if (m_locked)
+        return;
     if (m_editor)
         m_editor->undo();
     else
@@ -57,6 +65,8 @@ void UndoActions::undo()
 
 void UndoActions::redo()
 {
+    if (m_locked)
+        return;
     if (m_editor)
         m_editor->redo();
     else
@@ -75,13 +85,17 @@ void UndoActions::update()
         m_redo->setEnabled(m_editor->document()->isRedoAvailable());
         m_undo->setText(tr("&Undo Typing"));
         m_redo->setText(tr("&Redo Typing"));
-        return;
+    } else {
+        m_undo->setEnabled(m_group.canUndo());
+        m_redo->setEnabled(m_group.canRedo());
+        // The command's own text tells what will be undone, as in every Qt application.
+        m_undo->setText(m_group.canUndo() ? tr("&Undo %1").arg(m_group.undoText()) : tr("&Undo"));
+        m_redo->setText(m_group.canRedo() ? tr("&Redo %1").arg(m_group.redoText()) : tr("&Redo"));
     }
-    m_undo->setEnabled(m_group.canUndo());
-    m_redo->setEnabled(m_group.canRedo());
-    // The command's own text tells what will be undone, as in every Qt application.
-    m_undo->setText(m_group.canUndo() ? tr("&Undo %1").arg(m_group.undoText()) : tr("&Undo"));
-    m_redo->setText(m_group.canRedo() ? tr("&Redo %1").arg(m_group.redoText()) : tr("&Redo"));
+    if (m_locked) {
+        m_undo->setEnabled(false);
+        m_redo->setEnabled(false);
+    }
 }
 
 } // namespace iec::app

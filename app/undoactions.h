@@ -23,6 +23,9 @@ public:
     [[nodiscard]] QAction *redoAction() const { return m_redo; }
     // The editor whose typing the actions work on; nullptr: the group's active stack.
     void setTextEditor(QPlainTextEdit *editor);
+    // Online nothing may change: both actions stay off until unlocked.
+    void setLocked(bool locked);
+    [[nodiscard]] bool isLocked() const { return m_locked; }
     void retranslate();
 
 private:
@@ -34,6 +37,7 @@ private:
     QPointer<QPlainTextEdit> m_editor;
     QAction *m_undo;
     QAction *m_redo;
+    bool m_locked = false;
 };
 
 } // namespace iec::app

@@ -461,6 +461,10 @@ Automatisch gespeichert: %2</translation>
             <source>Watch</source>
             <translation>Beobachtung</translation>
         </message>
+        <message>
+            <source>Log out to edit (Online → Logout).</source>
+            <translation>Zum Bearbeiten ausloggen (Online → Ausloggen).</translation>
+        </message>
     </context>
     <context>
         <name>iec::app::MessagesPane</name>
@@ -556,10 +560,6 @@ Automatisch gespeichert: %2</translation>
             <translation>Einloggen abgelehnt: Das Projekt enthält Fehler. Siehe Meldungsfenster.</translation>
         </message>
         <message>
-            <source>Logged in. F5 runs the program, F8 runs one cycle.</source>
-            <translation>Eingeloggt. F5 startet das Programm, F8 führt einen Zyklus aus.</translation>
-        </message>
-        <message>
             <source>Logged out.</source>
             <translation>Ausgeloggt.</translation>
         </message>
@@ -626,6 +626,10 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source> | changed since login</source>
             <translation> | seit dem Einloggen geändert</translation>
+        </message>
+        <message>
+            <source>Logged in. F5 runs the program, F8 runs one cycle. Log out to edit (Online → Logout).</source>
+            <translation>Eingeloggt. F5 startet das Programm, F8 führt einen Zyklus aus. Zum Bearbeiten ausloggen (Online → Ausloggen).</translation>
         </message>
     </context>
     <context>
@@ -2953,6 +2957,14 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>There is no label %1 to jump to.</source>
             <translation>Es gibt keine Marke %1, zu der gesprungen werden kann.</translation>
+        </message>
+        <message>
+            <source>%1 is a Beremiz SVGHMI type, which IEC Studio does not support.</source>
+            <translation>%1 ist ein Beremiz-SVGHMI-Typ, den IEC Studio nicht unterstützt.</translation>
+        </message>
+        <message>
+            <source>declare the variable as %1</source>
+            <translation>deklarieren Sie die Variable als %1</translation>
         </message>
     </context>
     <context>

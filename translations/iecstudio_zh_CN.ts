@@ -460,6 +460,10 @@ Autosaved: %2</source>
             <source>Watch</source>
             <translation>监视</translation>
         </message>
+        <message>
+            <source>Log out to edit (Online → Logout).</source>
+            <translation>要编辑，请先注销（在线 → 注销）。</translation>
+        </message>
     </context>
     <context>
         <name>iec::app::MessagesPane</name>
@@ -555,10 +559,6 @@ Autosaved: %2</source>
             <translation>拒绝登录:项目有错误。请查看消息窗口。</translation>
         </message>
         <message>
-            <source>Logged in. F5 runs the program, F8 runs one cycle.</source>
-            <translation>已登录。F5 运行程序,F8 执行一个周期。</translation>
-        </message>
-        <message>
             <source>Logged out.</source>
             <translation>已注销。</translation>
         </message>
@@ -625,6 +625,10 @@ Autosaved: %2</source>
         <message>
             <source> | changed since login</source>
             <translation> | 登录后已更改</translation>
+        </message>
+        <message>
+            <source>Logged in. F5 runs the program, F8 runs one cycle. Log out to edit (Online → Logout).</source>
+            <translation>已登录。F5 运行程序，F8 运行一个周期。要编辑，请先注销（在线 → 注销）。</translation>
         </message>
     </context>
     <context>
@@ -2951,6 +2955,14 @@ Autosaved: %2</source>
         <message>
             <source>There is no label %1 to jump to.</source>
             <translation>没有可跳转的标号 %1。</translation>
+        </message>
+        <message>
+            <source>%1 is a Beremiz SVGHMI type, which IEC Studio does not support.</source>
+            <translation>%1 是 Beremiz SVGHMI 类型，IEC Studio 不支持。</translation>
+        </message>
+        <message>
+            <source>declare the variable as %1</source>
+            <translation>将该变量声明为 %1</translation>
         </message>
     </context>
     <context>

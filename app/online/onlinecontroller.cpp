@@ -236,7 +236,9 @@ bool OnlineController::login()
     m_watch.setModule(module);
     m_sentRequest = currentWatchRequest();
     send([request = m_sentRequest](RuntimeWorker &worker) { worker.setWatch(request); });
-    m_statusBar.showMessage(tr("Logged in. F5 runs the program, F8 runs one cycle."), 5000);
+    // Editing is refused while online (the window locks the editors on onlineChanged): say so.
+    m_statusBar.showMessage(
+        tr("Logged in. F5 runs the program, F8 runs one cycle. Log out to edit (Online → Logout)."), 10000);
     updateActions();
     updateStatus();
     Q_EMIT onlineChanged(true);

@@ -896,6 +896,16 @@ QStringList SfcEditor::onlineNames() const
 
 void SfcEditor::setOnlineSnapshot(const interp::RuntimeSnapshot *snapshot)
 {
+    if (m_online != (snapshot != nullptr)) {
+        // Online the chart is only looked at: the commands that would change it are off (they
+        // refuse anyway); copy, zoom, export and print stay.
+        static const QStringList kChanging {QStringLiteral("sfcDelete"), QStringLiteral("sfcCut"),
+            QStringLiteral("sfcPaste"), QStringLiteral("sfcProperties"), QStringLiteral("sfcActions"),
+            QStringLiteral("sfcCondition"), QStringLiteral("sfcPriority")};
+        for (QAction *action : findChildren<QAction *>(Qt::FindDirectChildrenOnly))
+            if (kChanging.contains(action->objectName()) || insertActions().contains(action))
+                action->setEnabled(snapshot == nullptr);
+    }
     m_online = snapshot != nullptr;
     m_chartState.reset();
     if (snapshot) {
