@@ -47,10 +47,8 @@ int tokenLengthAt(const QString &lineText, int column)
 
 } // namespace
 
-QList<Message> compileMessages(const model::Project &project)
+QList<Message> messagesOf(const interp::Diagnostics &diagnostics)
 {
-    interp::Diagnostics diagnostics;
-    interp::frontend::compileProject(project, diagnostics);
     QList<Message> messages;
     for (const interp::Diagnostic &diagnostic : diagnostics.all()) {
         QString text = diagnostic.message;
@@ -67,6 +65,13 @@ QList<Message> compileMessages(const model::Project &project)
     return messages;
 }
 
+QList<Message> compileMessages(const model::Project &project)
+{
+    interp::Diagnostics diagnostics;
+    interp::frontend::compileProject(project, diagnostics);
+    return messagesOf(diagnostics);
+}
+
 BuildController::BuildController(model::ProjectModel &projectModel, DocumentArea &documents,
                                  MessagesPane &messages, QObject *parent)
     : QObject(parent)
@@ -77,11 +82,13 @@ BuildController::BuildController(model::ProjectModel &projectModel, DocumentArea
     connect(&messages, &MessagesPane::messageActivated, this, &BuildController::openLocation);
 }
 
-bool BuildController::build()
+bool BuildController::build(const interp::CompileOptions &options)
 {
     // What the user typed in the last moments is part of what they asked to build.
     m_documents.flushEdits();
-    m_messages = compileMessages(m_projectModel.project());
+    interp::Diagnostics diagnostics;
+    m_module = interp::frontend::compileProject(m_projectModel.project(), diagnostics, options);
+    m_messages = messagesOf(diagnostics);
     m_messagesPane.model().setMessages(kBuildSource, m_messages);
     underlineInOpenEditors();
     const int errors = m_messagesPane.model().count(Message::Severity::Error);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "app/messagespane.h"
+#include "interpreter/compiler/compiler.h"
 
 #include <QObject>
 
@@ -25,8 +26,10 @@ public:
                     QObject *parent = nullptr);
 
     // Returns true when the project compiled without errors.
-    bool build();
+    bool build(const interp::CompileOptions &options = {});
     [[nodiscard]] const QList<Message> &lastMessages() const { return m_messages; }
+    // What the last build compiled; nullptr after errors.
+    [[nodiscard]] std::shared_ptr<const interp::Module> lastModule() const { return m_module; }
 
 public Q_SLOTS:
     // Opens the body a message names ("Main" or "Main.Fill") at its line and column.
@@ -42,9 +45,12 @@ private:
     DocumentArea &m_documents;
     MessagesPane &m_messagesPane;
     QList<Message> m_messages;
+    std::shared_ptr<const interp::Module> m_module;
 };
 
-// Compiles the project and returns the compiler's diagnostics as messages (for the pane and tests).
+// The compiler's diagnostics as messages for the pane.
+QList<Message> messagesOf(const interp::Diagnostics &diagnostics);
+// Compiles the project and returns the compiler's diagnostics as messages (for tests).
 QList<Message> compileMessages(const model::Project &project);
 
 } // namespace iec::app

@@ -285,7 +285,7 @@ void MainWindow::createDocks()
     addDockWidget(Qt::BottomDockWidgetArea, m_messagesDock);
 
     m_build = new BuildController(*m_projectModel, *m_documents, *m_messages, this);
-    connect(m_buildAction, &QAction::triggered, m_build, &BuildController::build);
+    connect(m_buildAction, &QAction::triggered, m_build, [this] { m_build->build(); });
     connect(m_build, &BuildController::built, this, [this](int errors, int warnings) {
         m_messagesDock->show();
         statusBar()->showMessage(tr("Build finished. Errors: %1, warnings: %2.").arg(errors).arg(warnings));

@@ -93,14 +93,10 @@ void ProjectTreeActions::updateEnabled()
     // CODESYS keeps actions and transitions for SFC programs; any program or FB may have them here.
     const bool mayHaveParts = pou && pou->kind != model::PouKind::Function;
     m_addPou->setEnabled(!m_locked);
-    m_addAction->setEnabled(mayHaveParts);
-    m_addTransition->setEnabled(mayHaveParts);
+    m_addAction->setEnabled(mayHaveParts && !m_locked);
+    m_addTransition->setEnabled(mayHaveParts && !m_locked);
     for (QAction *action : {m_rename, m_delete, m_duplicate})
-        action->setEnabled(item.has_value());
-    if (m_locked) {
-        for (QAction *action : {m_addAction, m_addTransition, m_rename, m_delete, m_duplicate})
-            action->setEnabled(false);
-    }
+        action->setEnabled(item.has_value() && !m_locked);
 }
 
 void ProjectTreeActions::setLocked(bool locked)

@@ -5,6 +5,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/projectinput.h"
 #include "app/cli/render.h"
+#include "model/statistics.h"
 
 #include "editors/common/diagramexport.h"
 #include "editors/common/diagramscene.h"
@@ -20,18 +21,6 @@
 namespace iec::cli {
 
 namespace {
-
-const char *languageName(model::BodyLanguage language)
-{
-    switch (language) {
-    case model::BodyLanguage::ST: return "ST";
-    case model::BodyLanguage::IL: return "IL";
-    case model::BodyLanguage::LD: return "LD";
-    case model::BodyLanguage::FBD: return "FBD";
-    case model::BodyLanguage::SFC: return "SFC";
-    }
-    return "?";
-}
 
 struct RenderArguments {
     QString file;
@@ -96,7 +85,7 @@ int runRender(const QStringList &arguments, Io io)
     const model::Body *body = pou->body();
     if (!body || body->language() != model::BodyLanguage::SFC) {
         io.err << "iecstudio-cli: render: POU '" << pou->name << "' is written in "
-               << languageName(body ? body->language() : model::BodyLanguage::ST)
+               << model::bodyLanguageName(body ? body->language() : model::BodyLanguage::ST)
                << ", which cannot be drawn yet (SFC can).\n";
         return ExitFailed;
     }

@@ -188,15 +188,13 @@ bool OnlineController::login()
     if (isOnline())
         return true;
     // Build lists the messages (and flushes what was just typed); errors keep the program offline.
-    if (!m_build.build()) {
+    interp::CompileOptions options;
+    options.cycleNs = m_cycleNs;
+    if (!m_build.build(options)) {
         m_statusBar.showMessage(tr("Login refused: the project has errors. See the Messages pane."));
         return false;
     }
-    interp::Diagnostics diagnostics;
-    interp::CompileOptions options;
-    options.cycleNs = m_cycleNs;
-    std::shared_ptr<const interp::Module> module
-        = interp::frontend::compileProject(m_projectModel.project(), diagnostics, options);
+    std::shared_ptr<const interp::Module> module = m_build.lastModule();
     if (!module)
         return false;
     m_module = module;

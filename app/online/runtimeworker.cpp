@@ -304,7 +304,7 @@ void RuntimeWorker::publish()
             snapshot->values.insert(watched.name, m_runtime->read(*watched.ref));
     }
     for (const Forced &forced : m_forced)
-        snapshot->forced.insert(forced.name);
+        snapshot->forced.insert(forced.name.toUpper());
     for (const ChartRequest &chart : m_request.charts) {
         if (std::optional<interp::sfc::ChartState> state = interp::sfc::chartState(*m_runtime, chart.pou, chart.instance))
             snapshot->charts.push_back(std::move(*state));

@@ -365,22 +365,23 @@ QList<int> WatchPane::selectedRows() const
 
 void WatchPane::writePrepared()
 {
-    for (int row = 0; row < m_model->rowCount(); ++row) {
-        const QString literal = m_model->prepared(row);
-        if (literal.isEmpty())
-            continue;
-        Q_EMIT writeRequested(m_model->names().at(row), literal);
-        m_model->setPrepared(row, {});
-    }
+    sendPrepared(&WatchPane::writeRequested);
 }
 
 void WatchPane::forcePrepared()
 {
+    sendPrepared(&WatchPane::forceRequested);
+}
+
+// Hands every prepared value to `request` (write or force) and clears it.
+void WatchPane::sendPrepared(void (WatchPane::*request)(const QString &, const QString &))
+{
+    const QStringList names = m_model->names();
     for (int row = 0; row < m_model->rowCount(); ++row) {
         const QString literal = m_model->prepared(row);
         if (literal.isEmpty())
             continue;
-        Q_EMIT forceRequested(m_model->names().at(row), literal);
+        Q_EMIT(this->*request)(names.at(row), literal);
         m_model->setPrepared(row, {});
     }
 }

@@ -113,6 +113,7 @@ protected:
 private:
     void addFromLine();
     [[nodiscard]] QList<int> selectedRows() const;
+    void sendPrepared(void (WatchPane::*request)(const QString &, const QString &));
 
     WatchModel *m_model = nullptr;
     QTreeView *m_view = nullptr;

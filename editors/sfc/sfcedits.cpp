@@ -16,14 +16,8 @@ using namespace model;
 
 namespace {
 
-// One level of the path to a node: the sequence and the index in it, and the branch node that
-// holds the sequence (nullptr for a chain at top level).
-struct Level {
-    Sequence *sequence = nullptr;
-    std::size_t index = 0;
-    Node *parent = nullptr;
-    bool isMain = false;
-};
+// One level of the path to a node: where it sits (see NodePlace).
+using Level = NodePlace;
 using Path = std::vector<Level>;
 
 bool pathIn(Sequence &seq, Node *parent, bool isMain, quint64 id, Path &path)

@@ -71,7 +71,8 @@ StepItem::StepItem(const Element &element)
 {
     QString tip;
     if (const auto *step = std::get_if<Step>(&element)) {
-        const StepOptions options = stepOptions(*step);
+        m_options = stepOptions(*step);
+        const StepOptions &options = m_options;
         tip = step->initialStep ? QCoreApplication::translate("iec::editors::sfc::SfcItem", "Initial step %1").arg(step->name) : QCoreApplication::translate("iec::editors::sfc::SfcItem", "Step %1").arg(step->name);
         if (!options.entryAction.isEmpty())
             tip += QLatin1Char('\n') + QCoreApplication::translate("iec::editors::sfc::SfcItem", "Entry action: %1").arg(options.entryAction);
@@ -112,12 +113,11 @@ void StepItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QWidge
     painter->setBrush(active ? QBrush(kActiveFill) : QBrush(Qt::white));
     painter->drawRect(m_frame);
     QString name;
-    StepOptions options;
+    const StepOptions &options = m_options;
     bool initial = false;
     bool macro = false;
     if (const auto *step = std::get_if<Step>(&m_element)) {
         name = step->name;
-        options = stepOptions(*step);
         initial = step->initialStep;
     } else if (const auto *macroStep = std::get_if<MacroStep>(&m_element)) {
         name = macroStep->name.value_or(QString());

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "model/sfcoptions.h"
+
 #include "editors/common/diagramitem.h"
 #include "model/element.h"
 
@@ -40,6 +42,10 @@ public:
     // right), the active-action corner (top right), or none.
     enum class Corner { None, Entry, Exit, Active };
     [[nodiscard]] Corner cornerAt(QPointF scenePoint) const;
+
+private:
+    // Read once from the step's addData (an XML parse); items are rebuilt when the model changes.
+    model::StepOptions m_options;
 };
 
 class TransitionItem : public SfcItem

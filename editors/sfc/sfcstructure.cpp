@@ -439,26 +439,17 @@ void collect(const ChartDocument &document, const Node &node, std::vector<quint6
             collect(document, inner, ids);
 }
 
-std::optional<NodePlace> search(Sequence &seq, Node *parent, bool isMain, quint64 id, bool owner)
+std::optional<NodePlace> search(Sequence &seq, Node *parent, bool isMain, quint64 id)
 {
     for (std::size_t i = 0; i < seq.size(); ++i) {
         Node &node = seq[i];
-        if ((node.localId == id && !node.wired) || (owner && node.convergenceId == id && id != 0))
+        if (node.localId == id && !node.wired)
             return NodePlace {&seq, i, parent, isMain};
         for (Sequence &branch : node.branches)
-            if (auto found = search(branch, &node, false, id, owner))
+            if (auto found = search(branch, &node, false, id))
                 return found;
     }
     return std::nullopt;
-}
-
-void order(const Sequence &seq, std::vector<const Node *> &out)
-{
-    for (const Node &node : seq) {
-        out.push_back(&node);
-        for (const Sequence &branch : node.branches)
-            order(branch, out);
-    }
 }
 
 } // namespace
@@ -480,31 +471,12 @@ std::vector<quint64> elementsOf(const ChartDocument &document, const Node &node)
 
 std::optional<NodePlace> findNode(Chart &chart, quint64 localId)
 {
-    if (auto found = search(chart.main, nullptr, true, localId, false))
+    if (auto found = search(chart.main, nullptr, true, localId))
         return found;
     for (Sequence &chain : chart.loose)
-        if (auto found = search(chain, nullptr, false, localId, false))
+        if (auto found = search(chain, nullptr, false, localId))
             return found;
     return std::nullopt;
-}
-
-std::optional<NodePlace> findOwner(Chart &chart, quint64 localId)
-{
-    if (auto found = search(chart.main, nullptr, true, localId, true))
-        return found;
-    for (Sequence &chain : chart.loose)
-        if (auto found = search(chain, nullptr, false, localId, true))
-            return found;
-    return std::nullopt;
-}
-
-std::vector<const Node *> nodesInOrder(const Chart &chart)
-{
-    std::vector<const Node *> out;
-    order(chart.main, out);
-    for (const Sequence &chain : chart.loose)
-        order(chain, out);
-    return out;
 }
 
 } // namespace iec::editors::sfc

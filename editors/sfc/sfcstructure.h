@@ -84,10 +84,5 @@ struct NodePlace {
     bool isMain = false;
 };
 std::optional<NodePlace> findNode(Chart &chart, quint64 localId);
-// The node a localId belongs to (a step, a transition, a divergence or convergence of a block).
-std::optional<NodePlace> findOwner(Chart &chart, quint64 localId);
-
-// Depth-first list of the nodes in chart order (top to bottom, left branches first).
-std::vector<const Node *> nodesInOrder(const Chart &chart);
 
 } // namespace iec::editors::sfc

@@ -230,10 +230,12 @@ public:
 
     void compilePouBody(PouInfo &pou);
     void compileActionBody(PouInfo &pou, const ast::SfcAction &action, int moduleIndex);
+    void beginBody(PouInfo &pou, int moduleIndex, SourceLocation at);
+    void endBody(const ast::Body &body);
     // Actions of POUs: "<POU index>:<upper-case action name>" -> index in Module::pous.
     QHash<QString, int> m_actions;
     int actionIndex(int pou, const QString &name) const;
-    int m_lineOwner = -1; // an action being compiled: its index in Module::pous, for the line table
+    int m_lineOwner = -1; // the body being compiled: its index in Module::pous, for the line table
     void finishTemporaries();
     void packRungs();
     Value lookupName(const QString &name, SourceLocation at);

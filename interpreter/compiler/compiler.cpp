@@ -37,9 +37,9 @@ void Codegen::markLine(SourceLocation at)
         return;
     m_lastLine = at.line;
     if (!m_module->lines.empty() && m_module->lines.back().pc == here())
-        m_module->lines.back() = {here(), m_lineOwner >= 0 ? m_lineOwner : m_pou->index, at.line};
+        m_module->lines.back() = {here(), m_lineOwner, at.line};
     else
-        m_module->lines.push_back({here(), m_lineOwner >= 0 ? m_lineOwner : m_pou->index, at.line});
+        m_module->lines.push_back({here(), m_lineOwner, at.line});
 }
 
 bool Codegen::lastWrites(std::uint32_t operand) const
@@ -174,13 +174,7 @@ void Codegen::finishTemporaries()
 
 void Codegen::compilePouBody(PouInfo &pou)
 {
-    m_pou = &pou;
-    m_pouName = pou.name;
-    m_tempTop = m_tempMax = 0;
-    m_lastLine = -1;
-    m_pouCodeStart = here();
-    m_module->pous[size_t(pou.index)].entry = here();
-    markLine(pou.ast->location);
+    beginBody(pou, pou.index, pou.ast->location);
     // Function variables and VAR_TEMP start from their initial values on every call.
     if (pou.reinitFrom < pou.frame->size) {
         const std::uint32_t frame = pou.kind == PouKind::Function ? pou.frameBase : kInstanceRelative;
@@ -208,22 +202,35 @@ void Codegen::compilePouBody(PouInfo &pou)
                 error(v.location, QCoreApplication::translate("iec::interp::Compiler", "%1 is declared as %2 here but as %3 in VAR_GLOBAL.").arg(v.name, typeName(declared), typeName(g.type)));
         }
     }
-    switch (pou.ast->body.language) {
-    case Language::ST:
-        compileStatements(pou.ast->body.statements);
-        break;
-    case Language::IL:
-        compileIl(pou.ast->body.il);
-        break;
-    case Language::SFC:
+    if (pou.ast->body.language == Language::SFC)
         warning(pou.ast->location, QCoreApplication::translate("iec::interp::Compiler", "%1 is a sequential function chart; charts run with the next version of the interpreter.").arg(pou.name));
-        break;
-    case Language::None:
-        break;
-    }
+    endBody(pou.ast->body);
+}
+
+// The start of the code of a POU body or of one of its actions (module entry `moduleIndex`),
+// which runs on the POU's instance.
+void Codegen::beginBody(PouInfo &pou, int moduleIndex, SourceLocation at)
+{
+    m_pou = &pou;
+    m_lineOwner = moduleIndex;
+    m_pouName = m_module->pous[size_t(moduleIndex)].name;
+    m_tempTop = m_tempMax = 0;
+    m_lastLine = -1;
+    m_pouCodeStart = here();
+    m_module->pous[size_t(moduleIndex)].entry = here();
+    markLine(at);
+}
+
+void Codegen::endBody(const Body &body)
+{
+    if (body.language == Language::ST)
+        compileStatements(body.statements);
+    else if (body.language == Language::IL)
+        compileIl(body.il);
     instr(op::Ret);
     finishTemporaries();
     packRungs();
+    m_lineOwner = -1;
     m_pou = nullptr;
 }
 
@@ -236,22 +243,8 @@ void Codegen::compileActionBody(PouInfo &pou, const SfcAction &action, int modul
 {
     if (moduleIndex < 0)
         return;
-    m_pou = &pou;
-    m_lineOwner = moduleIndex;
-    m_pouName = m_module->pous[size_t(moduleIndex)].name;
-    m_tempTop = m_tempMax = 0;
-    m_lastLine = -1;
-    m_pouCodeStart = here();
-    m_module->pous[size_t(moduleIndex)].entry = here();
-    markLine(action.location);
-    if (action.body.language == Language::ST)
-        compileStatements(action.body.statements);
-    else if (action.body.language == Language::IL)
-        compileIl(action.body.il);
-    instr(op::Ret);
-    finishTemporaries();
-    m_lineOwner = -1;
-    m_pou = nullptr;
+    beginBody(pou, moduleIndex, action.location);
+    endBody(action.body);
 }
 
 std::shared_ptr<Module> Codegen::run(const std::vector<const CompilationUnit *> &units)

@@ -9,6 +9,8 @@
 #include <memory>
 #include <vector>
 
+class QRegularExpression;
+
 namespace iec::interp {
 
 struct CompileOptions {
@@ -31,5 +33,13 @@ std::shared_ptr<const Module> compileText(QStringView source, Diagnostics &diagn
 
 // The standard function blocks (SR, RS, R_TRIG, F_TRIG, CTU..., TP, TON, TOF), written in ST.
 const ast::CompilationUnit &standardLibrary();
+
+// Whether `name` (any case) is a standard function the compiler knows: one of its table or a
+// type conversion such as INT_TO_REAL or BCD_TO_WORD. Graphical blocks of these are called
+// with positional arguments, as vendors name their pins differently.
+bool isStandardFunctionName(const QString &name);
+// The names of type conversions, upper case: FROM_TO_TO, TO_TO, FROM_TO_BCD, BCD_TO_TO, FROM_TRUNC_TO
+// (captures: 1 the source type or empty, 2 the kind, 3 the target type).
+const QRegularExpression &conversionNamePattern();
 
 } // namespace iec::interp

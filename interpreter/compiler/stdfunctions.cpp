@@ -482,13 +482,19 @@ const std::vector<StdFunction> &table()
     return functions;
 }
 
+// Conversions, recognised by their names.
+const QRegularExpression &conversionPattern()
+{
+    static const QRegularExpression pattern(QStringLiteral("^(?:([A-Z_]+?)_)?(TO_BCD|BCD_TO|TRUNC|TO)_([A-Z_]+)$"));
+    return pattern;
+}
+
 } // namespace
 
 std::optional<Value> Codegen::standardFunction(const QString &name, std::vector<Value> args, const std::vector<QString> &names,
                                                SourceLocation at, const Place *destination)
 {
-    // Conversions, recognised by their names.
-    static const QRegularExpression conversion(QStringLiteral("^(?:([A-Z_]+?)_)?(TO_BCD|BCD_TO|TRUNC|TO)_([A-Z_]+)$"));
+    const QRegularExpression &conversion = conversionPattern();
     static const QRegularExpression legacyBcd(QStringLiteral("^([A-Z]+)_TO_BCD$"));
     const auto single = [&](const char *what) {
         if (args.size() != 1) {
@@ -596,3 +602,22 @@ std::optional<Value> Codegen::standardFunction(const QString &name, std::vector<
 }
 
 } // namespace iec::interp::detail
+
+namespace iec::interp {
+
+bool isStandardFunctionName(const QString &name)
+{
+    const QString upper = name.trimmed().toUpper();
+    if (upper.startsWith(QLatin1String("__"))) // compiler intrinsics, not for users
+        return false;
+    const auto &functions = detail::table();
+    return std::any_of(functions.begin(), functions.end(), [&](const detail::StdFunction &f) { return upper == QLatin1String(f.name); })
+        || detail::conversionPattern().match(upper).hasMatch();
+}
+
+const QRegularExpression &conversionNamePattern()
+{
+    return detail::conversionPattern();
+}
+
+} // namespace iec::interp

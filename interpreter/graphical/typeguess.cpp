@@ -1,5 +1,6 @@
 #include "interpreter/graphical/typeguess.h"
 
+#include "interpreter/compiler/compiler.h"
 #include "interpreter/graphical/evaluator.h"
 
 #include <QRegularExpression>
@@ -8,32 +9,6 @@
 namespace iec::interp::graphical {
 
 namespace {
-
-const QSet<QString> &standardNames()
-{
-    static const QSet<QString> names {
-        QStringLiteral("ABS"), QStringLiteral("SQRT"), QStringLiteral("LN"), QStringLiteral("LOG"), QStringLiteral("EXP"),
-        QStringLiteral("SIN"), QStringLiteral("COS"), QStringLiteral("TAN"), QStringLiteral("ASIN"), QStringLiteral("ACOS"),
-        QStringLiteral("ATAN"), QStringLiteral("TRUNC"), QStringLiteral("EXPT"), QStringLiteral("ADD"), QStringLiteral("MUL"),
-        QStringLiteral("SUB"), QStringLiteral("DIV"), QStringLiteral("MOD"), QStringLiteral("AND"), QStringLiteral("OR"),
-        QStringLiteral("XOR"), QStringLiteral("NOT"), QStringLiteral("MOVE"), QStringLiteral("SHL"), QStringLiteral("SHR"),
-        QStringLiteral("ROL"), QStringLiteral("ROR"), QStringLiteral("SEL"), QStringLiteral("MUX"), QStringLiteral("MAX"),
-        QStringLiteral("MIN"), QStringLiteral("LIMIT"), QStringLiteral("GT"), QStringLiteral("GE"), QStringLiteral("EQ"),
-        QStringLiteral("LE"), QStringLiteral("LT"), QStringLiteral("NE"), QStringLiteral("LEN"), QStringLiteral("LEFT"),
-        QStringLiteral("RIGHT"), QStringLiteral("MID"), QStringLiteral("DELETE"), QStringLiteral("INSERT"),
-        QStringLiteral("REPLACE"), QStringLiteral("FIND"), QStringLiteral("CONCAT"), QStringLiteral("ADD_TIME"),
-        QStringLiteral("SUB_TIME"), QStringLiteral("MUL_TIME"), QStringLiteral("DIV_TIME"), QStringLiteral("ADD_TOD_TIME"),
-        QStringLiteral("ADD_DT_TIME"), QStringLiteral("SUB_TOD_TIME"), QStringLiteral("SUB_DT_TIME"),
-        QStringLiteral("SUB_DATE_DATE"), QStringLiteral("SUB_TOD_TOD"), QStringLiteral("SUB_DT_DT"),
-        QStringLiteral("CONCAT_DATE_TOD")};
-    return names;
-}
-
-const QRegularExpression &conversion()
-{
-    static const QRegularExpression pattern(QStringLiteral("^(?:([A-Z_]+?)_)?(TO_BCD|BCD_TO|TRUNC|TO)_([A-Z_]+)$"));
-    return pattern;
-}
 
 const QSet<QString> &comparisons()
 {
@@ -71,8 +46,7 @@ std::optional<ast::TypeSpec> byStandardRule(const model::Block &block, const std
 
 bool isStandardFunction(const QString &name)
 {
-    const QString upper = name.trimmed().toUpper();
-    return standardNames().contains(upper) || conversion().match(upper).hasMatch();
+    return isStandardFunctionName(name);
 }
 
 DeclaredTypes declaredTypes(const ast::Pou &pou)
@@ -147,7 +121,7 @@ std::optional<ast::TypeSpec> byStandardRule(const model::Block &block, const std
     const QString name = block.typeName.trimmed().toUpper();
     if (comparisons().contains(name))
         return namedType(QStringLiteral("BOOL"));
-    if (const auto m = conversion().match(name); m.hasMatch())
+    if (const auto m = conversionNamePattern().match(name); m.hasMatch())
         return namedType(m.captured(2) == QLatin1String("TRUNC") ? QStringLiteral("DINT") : m.captured(3));
     if (name == QLatin1String("TRUNC"))
         return namedType(QStringLiteral("DINT"));

@@ -24,16 +24,13 @@ struct RuntimeSnapshot {
     bool running = false;      // cycles run on their own (Run), not single-stepped
     std::optional<RuntimeFault> fault;
     QHash<QString, QString> values; // name as requested ("Main.Count") -> value
-    QSet<QString> forced;           // names held by a force, as they were forced
+    QSet<QString> forced;           // names held by a force, in upper case (IEC names ignore case)
     std::vector<sfc::ChartState> charts; // every chart an open editor asked for
 
     [[nodiscard]] QString value(const QString &name) const { return values.value(name); }
     [[nodiscard]] bool isForced(const QString &name) const
     {
-        for (const QString &held : forced)
-            if (held.compare(name, Qt::CaseInsensitive) == 0)
-                return true;
-        return false;
+        return forced.contains(name.toUpper());
     }
     [[nodiscard]] const sfc::ChartState *chart(const QString &instance) const
     {

@@ -1,5 +1,7 @@
 #include "interpreter/sfc/sfcgraph.h"
 
+#include "interpreter/graphical/astbuild.h"
+
 #include <QHash>
 #include <QSet>
 
@@ -12,9 +14,7 @@ namespace {
 
 SourceLocation at(quint64 localId)
 {
-    SourceLocation location;
-    location.localId = localId > quint64(std::numeric_limits<qint64>::max()) ? -1 : qint64(localId);
-    return location;
+    return graphical::elementLocation(localId);
 }
 
 // One graphical body of the chart: the POU's, or a macro step's.

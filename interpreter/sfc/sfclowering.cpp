@@ -4,6 +4,8 @@
 // own, with their own diagnostics, and spliced in where the placeholder __SFC_SPLICE(n) stands.
 #include "interpreter/sfc/sfclowering.h"
 
+#include "interpreter/graphical/astbuild.h"
+
 #include "interpreter/compiler/parser.h"
 #include "interpreter/graphical/graphicallowering.h"
 #include "interpreter/sfc/sfcgraph.h"
@@ -223,12 +225,7 @@ private:
 
     static constexpr quint64 kNoElement = ~quint64(0);
 
-    SourceLocation at(quint64 localId) const
-    {
-        SourceLocation location;
-        location.localId = localId > quint64(std::numeric_limits<qint64>::max()) ? -1 : qint64(localId); // kNoElement too
-        return location;
-    }
+    SourceLocation at(quint64 localId) const { return graphical::elementLocation(localId); } // kNoElement: none
 
     void error(quint64 localId, const QString &message, const QString &hint = {})
     {
@@ -320,14 +317,10 @@ private:
             for (const Flag &flag : kFlags) {
                 const QRegularExpression declared(
                     QStringLiteral("<%1\\s+Declare=\"true\"").arg(QLatin1String(flag.codesysSetting)));
-                if (declared.match(entry.content).hasMatch() && !hasFlag(flag.name))
+                if (declared.match(entry.content).hasMatch() && !hasFlag(flag.name)) {
                     m_extraDeclarations += QStringLiteral("%1 : %2;\n").arg(QLatin1String(flag.name), QLatin1String(flag.type));
-            }
-        }
-        if (!m_extraDeclarations.isEmpty()) {
-            for (const Flag &flag : kFlags) {
-                if (m_extraDeclarations.contains(QLatin1String(flag.name) + QStringLiteral(" :")))
                     m_declared.insert(key(QLatin1String(flag.name)), QLatin1String(flag.type));
+                }
             }
         }
     }
@@ -981,24 +974,22 @@ private:
         const QString &name = m_actions[j];
         const auto associations = associationsOf(j);
         const quint64 localId = associations.empty() ? kNoElement : associations.front()->localId;
-        if (!m_bodyCache.contains(j)) {
-            std::optional<std::vector<ast::Stmt>> body;
-            if (const model::PouAction *action = m_pouActions.value(key(name))) {
-                body = actionBody(action->body, m_pou.name + QLatin1Char('.') + action->name, localId);
-            } else if (!associations.empty() && associations.front()->inlineBody) {
-                body = actionBody(*associations.front()->inlineBody, m_pou.name, localId);
-            } else {
-                const QString type = m_declared.value(key(name));
-                if (!type.isEmpty() && type != QLatin1String("BOOL"))
-                    error(localId, QStringLiteral("The action %1 of step %2 is a variable of type %3; a variable used as an action must be BOOL.")
-                                       .arg(name, m_chart.steps[size_t(associations.front()->step)].name, type));
-                // A Boolean variable: the control above sets it (an unknown name is reported by the
-                // compiler on the action); nothing to run.
-                body = std::vector<ast::Stmt> {};
-            }
-            m_bodyCache.insert(j, body ? splice(std::move(*body)) : -1);
+        // Called once per action (actionPhase), so nothing to cache.
+        std::optional<std::vector<ast::Stmt>> body;
+        if (const model::PouAction *action = m_pouActions.value(key(name))) {
+            body = actionBody(action->body, m_pou.name + QLatin1Char('.') + action->name, localId);
+        } else if (!associations.empty() && associations.front()->inlineBody) {
+            body = actionBody(*associations.front()->inlineBody, m_pou.name, localId);
+        } else {
+            const QString type = m_declared.value(key(name));
+            if (!type.isEmpty() && type != QLatin1String("BOOL"))
+                error(localId, QStringLiteral("The action %1 of step %2 is a variable of type %3; a variable used as an action must be BOOL.")
+                                   .arg(name, m_chart.steps[size_t(associations.front()->step)].name, type));
+            // A Boolean variable: the control above sets it (an unknown name is reported by the
+            // compiler on the action); nothing to run.
+            body = std::vector<ast::Stmt> {};
         }
-        const int index = m_bodyCache.value(j);
+        const int index = body ? splice(std::move(*body)) : -1;
         return index < 0 || m_splices[size_t(index)].empty() ? QString() : QStringLiteral("%1(%2);\n").arg(QLatin1String(kSplice)).arg(index);
     }
 
@@ -1074,7 +1065,6 @@ private:
     QString m_extraDeclarations;
     QStringList m_conditionVariables;
     std::vector<std::vector<ast::Stmt>> m_splices;
-    QHash<int, int> m_bodyCache;
     const std::vector<ast::SfcAction> *m_parsed = nullptr;
     QSet<QString> m_calledActions; // keys of the actions already in m_result.actions
     bool m_failed = false;

@@ -22,9 +22,7 @@ protected:
 // QUndoCommand::id() values of the commands that merge repeated edits of the same thing.
 enum MergeId : int {
     RenamePouMerge = 0x1001,
-    ChangeDataTypeMerge,
     ChangeVariableMerge,
-    SetInterfaceMerge,
     SetBodyTextMerge,
     MoveElementsMerge,
     ChangeElementMerge,

@@ -353,6 +353,7 @@ void TestSfcOnline::editingIsRefusedWhileOnline()
     editor->select({editor->stepId(QStringLiteral("Init"))});
     QVERIFY(!editor->insertStepTransitionAfter());
     QVERIFY2(editor->lastMessage().contains(QStringLiteral("Logout")), qPrintable(editor->lastMessage()));
+    QVERIFY(!editor->insertActions().isEmpty());
     for (QAction *action : editor->insertActions())
         QVERIFY2(!action->isEnabled(), qPrintable(action->objectName()));
     // Undo and redo are off, and the window says how to edit again.
@@ -408,13 +409,17 @@ void TestSfcOnline::insertMenuFollowsTheCurrentEditor()
     auto *insertMenu = window->menuBar()->findChild<QMenu *>(QStringLiteral("insertMenu"));
     QVERIFY(insertMenu);
     QCoreApplication::processEvents();
-    for (QAction *action : editor->insertActions())
+    QVERIFY(!editor->insertActions().isEmpty());
+    QStringList chartCommands;
+    for (QAction *action : editor->insertActions()) {
         QVERIFY2(insertMenu->actions().contains(action), qPrintable(action->objectName()));
+        chartCommands << action->objectName();
+    }
     // With no chart editor in front, the chart commands leave the menu.
     window->documents().closeAll();
     QCoreApplication::processEvents();
     for (QAction *action : insertMenu->actions())
-        QVERIFY2(!action->objectName().startsWith(QStringLiteral("sfc")), qPrintable(action->objectName()));
+        QVERIFY2(!chartCommands.contains(action->objectName()), qPrintable(action->objectName()));
     QVERIFY(!insertMenu->actions().isEmpty());
 }
 

@@ -399,8 +399,10 @@ private Q_SLOTS:
         QCOMPARE(f.stack.count(), steps);
         // Offline again: overlays gone, editable again.
         e.setOnlineSnapshot(nullptr);
-        QVERIFY(!mix->isActive() || !e.scene()->itemFor(e.stepId(QStringLiteral("Mix")))->isActive());
+        QVERIFY(!e.scene()->itemFor(e.stepId(QStringLiteral("Mix")))->isActive());
         QVERIFY(e.scene()->itemFor(e.stepId(QStringLiteral("Mix")))->onlineText().isEmpty());
+        QVERIFY(e.deleteSelection());
+        QCOMPARE(f.stack.count(), steps + 1);
     }
 
     void importedChartStaysEditable()

@@ -19,35 +19,44 @@ inline QString qualified(const Runtime &runtime, const QString &name)
     return runtime.find(local) ? local : name;
 }
 
-// Returns an empty string when every expectation held, otherwise what went wrong.
-inline QString runTrace(const QString &source, const QStringList &steps, const CompileOptions &options = {})
+// The errors among `diagnostics`, as "Pou:line:column: error: ..." joined by " | ".
+inline QString errorsOf(const Diagnostics &diagnostics)
 {
-    Diagnostics diagnostics;
-    const QString program = source.contains(QLatin1String("PROGRAM")) ? source
-                                                                     : QStringLiteral("PROGRAM Main\n") + source + QStringLiteral("\nEND_PROGRAM\n");
-    const auto module = compileText(program, diagnostics, options);
-    QStringList problems;
+    QStringList lines;
     for (const Diagnostic &d : diagnostics.all()) {
         if (d.severity == Diagnostic::Severity::Error)
-            problems << d.toString();
+            lines << d.toString();
     }
-    if (!module)
-        return QStringLiteral("does not compile: ") + problems.join(QStringLiteral(" | "));
-    Runtime runtime(module, options.cycleNs);
+    return lines.join(QStringLiteral(" | "));
+}
+
+// Runs the steps on `runtime` (see the top of this file). Returns an empty string when every
+// expectation held, otherwise what went wrong.
+inline QString runSteps(Runtime &runtime, const QStringList &steps)
+{
+    // "name=value" items; an item without a name and '=' is a typo in the table, reported.
+    const auto pairs = [](const QString &text, QString &malformed) {
+        QList<QPair<QString, QString>> out;
+        for (const QString &item : text.split(QLatin1Char(';'), Qt::SkipEmptyParts)) {
+            const qsizetype eq = item.indexOf(QLatin1Char('='));
+            if (eq > 0)
+                out.append({item.left(eq).trimmed(), item.mid(eq + 1).trimmed()});
+            else if (!item.trimmed().isEmpty())
+                malformed = item.trimmed();
+        }
+        return out;
+    };
+    QStringList problems;
     int cycle = 0;
     for (const QString &step : steps) {
         ++cycle;
         const QStringList sides = step.split(QStringLiteral("=>"));
-        const auto pairs = [](const QString &text) {
-            QList<QPair<QString, QString>> out;
-            for (const QString &item : text.split(QStringLiteral("; "), Qt::SkipEmptyParts)) {
-                const qsizetype eq = item.indexOf(QLatin1Char('='));
-                if (eq > 0)
-                    out.append({item.left(eq).trimmed(), item.mid(eq + 1).trimmed()});
-            }
-            return out;
-        };
-        for (const auto &[name, value] : pairs(sides[0])) {
+        QString malformed;
+        const auto writes = pairs(sides[0], malformed);
+        const auto checks = sides.size() > 1 ? pairs(sides[1], malformed) : decltype(writes) {};
+        if (sides.size() > 2 || !malformed.isEmpty())
+            return QStringLiteral("cycle %1: malformed step '%2'").arg(cycle).arg(step);
+        for (const auto &[name, value] : writes) {
             if (const auto problem = runtime.write(qualified(runtime, name), value))
                 return QStringLiteral("cycle %1: cannot set %2: %3").arg(cycle).arg(name, *problem);
         }
@@ -55,7 +64,7 @@ inline QString runTrace(const QString &source, const QStringList &steps, const C
             return QStringLiteral("cycle %1: fault: %2").arg(cycle).arg(runtime.fault()->toString());
         if (sides.size() < 2)
             continue;
-        for (const auto &[name, expected] : pairs(sides[1])) {
+        for (const auto &[name, expected] : checks) {
             const auto actual = runtime.read(qualified(runtime, name));
             if (!actual)
                 return QStringLiteral("cycle %1: no variable %2").arg(cycle).arg(name);
@@ -64,6 +73,19 @@ inline QString runTrace(const QString &source, const QStringList &steps, const C
         }
     }
     return problems.join(QStringLiteral(" | "));
+}
+
+// Returns an empty string when every expectation held, otherwise what went wrong.
+inline QString runTrace(const QString &source, const QStringList &steps, const CompileOptions &options = {})
+{
+    Diagnostics diagnostics;
+    const QString program = source.contains(QLatin1String("PROGRAM")) ? source
+                                                                     : QStringLiteral("PROGRAM Main\n") + source + QStringLiteral("\nEND_PROGRAM\n");
+    const auto module = compileText(program, diagnostics, options);
+    if (!module)
+        return QStringLiteral("does not compile: ") + errorsOf(diagnostics);
+    Runtime runtime(module, options.cycleNs);
+    return runSteps(runtime, steps);
 }
 
 } // namespace iec::interp::testing

@@ -13,6 +13,8 @@
 
 #include "model/element.h"
 
+#include "../tracerunner.h"
+
 #include <QStringList>
 
 #include <initializer_list>
@@ -228,37 +230,7 @@ inline QString runProject(const model::Project &project, const QStringList &step
     if (!module)
         return QStringLiteral("does not compile: ") + errorsOf(diagnostics);
     interp::Runtime runtime(module);
-    QStringList problems;
-    int cycle = 0;
-    for (const QString &step : steps) {
-        ++cycle;
-        const QStringList sides = step.split(QStringLiteral("=>"));
-        const auto pairs = [](const QString &text) {
-            QList<std::pair<QString, QString>> list;
-            for (const QString &item : text.split(QLatin1Char(';'), Qt::SkipEmptyParts)) {
-                const qsizetype eq = item.indexOf(QLatin1Char('='));
-                if (eq > 0)
-                    list.append({item.left(eq).trimmed(), item.mid(eq + 1).trimmed()});
-            }
-            return list;
-        };
-        for (const auto &[name, value] : pairs(sides[0])) {
-            if (const auto problem = runtime.write(QStringLiteral("Main.") + name, value))
-                return QStringLiteral("cycle %1: cannot set %2: %3").arg(cycle).arg(name, *problem);
-        }
-        if (!runtime.runCycle())
-            return QStringLiteral("cycle %1: fault: %2").arg(cycle).arg(runtime.fault()->toString());
-        if (sides.size() < 2)
-            continue;
-        for (const auto &[name, expected] : pairs(sides[1])) {
-            const auto actual = runtime.read(QStringLiteral("Main.") + name);
-            if (!actual)
-                return QStringLiteral("cycle %1: no variable %2").arg(cycle).arg(name);
-            if (*actual != expected)
-                problems << QStringLiteral("cycle %1: %2 = %3, expected %4").arg(cycle).arg(name, *actual, expected);
-        }
-    }
-    return problems.join(QStringLiteral(" | "));
+    return interp::testing::runSteps(runtime, steps);
 }
 
 inline QString runDiagram(const QString &declarations, model::BodyLanguage language, const Diagram &diagram,

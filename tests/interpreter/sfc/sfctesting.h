@@ -13,21 +13,15 @@
 
 #include "model/sfcoptions.h"
 
+#include "../tracerunner.h"
+
 #include <QStringList>
 
 #include <functional>
 
 namespace iec::interp::sfctesting {
 
-inline QString errorsOf(const Diagnostics &diagnostics)
-{
-    QStringList lines;
-    for (const Diagnostic &d : diagnostics.all()) {
-        if (d.severity == Diagnostic::Severity::Error)
-            lines << d.toString();
-    }
-    return lines.join(QStringLiteral(" | "));
-}
+using testing::errorsOf;
 
 inline model::Project readText(const QString &source)
 {
@@ -52,12 +46,6 @@ inline void editStep(model::Project &project, const QString &pou, const QString 
     }
 }
 
-inline QString qualified(const Runtime &runtime, const QString &name)
-{
-    const QString local = QStringLiteral("Main.") + name;
-    return runtime.find(local) ? local : name;
-}
-
 // Empty when every expectation held; otherwise what went wrong.
 inline QString runTrace(const model::Project &project, const QStringList &steps, std::int64_t cycleNs = 10'000'000)
 {
@@ -68,37 +56,7 @@ inline QString runTrace(const model::Project &project, const QStringList &steps,
     if (!module)
         return QStringLiteral("does not compile: ") + errorsOf(diagnostics);
     Runtime runtime(module, cycleNs);
-    QStringList problems;
-    int cycle = 0;
-    for (const QString &step : steps) {
-        ++cycle;
-        const QStringList sides = step.split(QStringLiteral("=>"));
-        const auto pairs = [](const QString &text) {
-            QList<QPair<QString, QString>> out;
-            for (const QString &item : text.split(QStringLiteral("; "), Qt::SkipEmptyParts)) {
-                const qsizetype eq = item.indexOf(QLatin1Char('='));
-                if (eq > 0)
-                    out.append({item.left(eq).trimmed(), item.mid(eq + 1).trimmed()});
-            }
-            return out;
-        };
-        for (const auto &[name, value] : pairs(sides[0])) {
-            if (const auto problem = runtime.write(qualified(runtime, name), value))
-                return QStringLiteral("cycle %1: cannot set %2: %3").arg(cycle).arg(name, *problem);
-        }
-        if (!runtime.runCycle())
-            return QStringLiteral("cycle %1: fault: %2").arg(cycle).arg(runtime.fault()->toString());
-        if (sides.size() < 2)
-            continue;
-        for (const auto &[name, expected] : pairs(sides[1])) {
-            const auto actual = runtime.read(qualified(runtime, name));
-            if (!actual)
-                return QStringLiteral("cycle %1: no variable %2").arg(cycle).arg(name);
-            if (*actual != expected)
-                problems << QStringLiteral("cycle %1: %2 = %3, expected %4").arg(cycle).arg(name, *actual, expected);
-        }
-    }
-    return problems.join(QStringLiteral(" | "));
+    return testing::runSteps(runtime, steps);
 }
 
 inline QString runTrace(const QString &source, const QStringList &steps)

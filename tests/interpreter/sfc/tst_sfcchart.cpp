@@ -398,16 +398,23 @@ void TestSfcChart::corpusChartsCompileOrNameTheFeature()
     QFETCH(QString, check);
     QFETCH(QString, expected);
     const auto read = model::plcopen::readProjectFile(QStringLiteral(IEC_SHARED_DIR "/plcopen/corpus/") + file);
+    QVERIFY2(read.ok, qPrintable(file));
     Diagnostics structure;
+    int charts = 0;
     for (const model::Pou &p : read.project.types.pous) {
-        if (p.language() == model::BodyLanguage::SFC)
+        if (p.language() == model::BodyLanguage::SFC) {
             sfc::buildChart(*p.body(), p.name, structure);
+            ++charts;
+        }
     }
+    QVERIFY2(charts > 0, "the file has no chart to check");
     QCOMPARE(structure.hasErrors(), false);
     if (check == QLatin1String("structure"))
         return;
     Diagnostics diagnostics;
-    frontend::compileProject(read.project, diagnostics);
+    const auto module = frontend::compileProject(read.project, diagnostics);
+    if (expected.isEmpty())
+        QVERIFY2(module, "expected to compile");
     QStringList sfcErrors;
     for (const model::Pou &p : read.project.types.pous) {
         if (p.language() != model::BodyLanguage::SFC)
