@@ -12,6 +12,34 @@
 
 namespace iec::interp {
 
+namespace {
+
+// Whether a VAR_EXTERNAL's declared type is its global's: the same named type, or written out
+// alike (ARRAY[0..31] OF DINT in both places makes two type objects of one shape).
+bool sameShape(const Type *a, const Type *b)
+{
+    if (a == b)
+        return true;
+    if (!a || !b || a->kind != b->kind)
+        return false;
+    switch (a->kind) {
+    case TypeKind::Elementary: return a->elem == b->elem && a->subrange == b->subrange;
+    case TypeKind::String: return a->capacity == b->capacity && a->wide == b->wide;
+    case TypeKind::Array: {
+        if (a->dims.size() != b->dims.size())
+            return false;
+        for (size_t i = 0; i < a->dims.size(); ++i) {
+            if (a->dims[i].low != b->dims[i].low || a->dims[i].high != b->dims[i].high)
+                return false;
+        }
+        return sameShape(a->element, b->element);
+    }
+    default: return false; // structs, enums and blocks are named: one object per name
+    }
+}
+
+} // namespace
+
 namespace detail {
 
 using namespace ast;
@@ -198,7 +226,7 @@ void Codegen::compilePouBody(PouInfo &pou)
                     m_globals.insert(key(v.name), placeholder);
                 }
             }
-            else if (declared && declared != g.type && !(declared->kind == TypeKind::Elementary && g.type->kind == TypeKind::Elementary && declared->elem == g.type->elem))
+            else if (declared && !sameShape(declared, g.type))
                 error(v.location, QCoreApplication::translate("iec::interp::Compiler", "%1 is declared as %2 here but as %3 in VAR_GLOBAL.").arg(v.name, typeName(declared), typeName(g.type)));
         }
     }

@@ -90,7 +90,9 @@ constexpr std::uint32_t kOffsetMask = 0x7fffffffu;
     X(Now)                                                /* a (LTIME) = the virtual clock */               \
     X(CheckRange)                                         /* fault unless b lies in descriptor aux's range \
                                                               (an assignment to a subrange type) */         \
-    X(Fault)                                              /* stop with the fault kind in aux */
+    X(Fault)                                              /* stop with the fault kind in aux */           \
+    X(JitEnter)                                           /* run machine-code entry a (jit.h); only in the \
+                                                              JIT's copy of the code */
 
 namespace op {
 enum : std::uint16_t {

@@ -1,5 +1,6 @@
 #include "interpreter/vm/vm.h"
 
+#include "interpreter/vm/jit.h"
 #include "interpreter/vm/nativeblocks.h"
 
 #include "interpreter/compiler/literals.h"
@@ -418,9 +419,17 @@ struct StringRef {
 
 Vm::Vm(const Module &module)
     : m_module(module)
+    , m_jit(JitProgram::compile(module))
     , m_memory(module.initialImage)
 {
     m_scratch.resize(2 * 65536);
+}
+
+Vm::~Vm() = default;
+
+std::size_t Vm::nativeInstructions() const
+{
+    return m_jit ? m_jit->stats().instructions : 0;
 }
 
 FaultKind Vm::run(std::uint32_t entry)
@@ -435,7 +444,8 @@ FaultKind Vm::run(std::uint32_t entry)
     // them in registers although every store goes through a byte pointer that may alias anything.
     std::uint8_t *const mem = m_memory.data();
     std::uint8_t *inst = mem;
-    const Instr *const code = m_module.code.data();
+    // With the JIT, its copy of the code, where op::JitEnter marks the way into machine code.
+    const Instr *const code = m_jit ? m_jit->code().data() : m_module.code.data();
     const IndexDescriptor *const descriptors = m_module.indexDescriptors.data();
     const RungRecord *const rungs = m_module.rungs.data();
     if (entry >= m_module.code.size()) {
@@ -915,6 +925,19 @@ FaultKind Vm::run(std::uint32_t entry)
         }
         L_Fault:
             FAULT(static_cast<FaultKind>(ip->aux));
+        L_JitEnter: {
+            const JitEntry &entry = m_jit->entry(ip->a);
+            std::uint64_t left = budget; // a copy: the local itself stays in a register
+            const std::uint64_t result = entry.region(mem, inst, &left, entry.target, &clockNs);
+            budget = left;
+            const auto next = static_cast<std::uint32_t>(result);
+            if (const auto kind = static_cast<FaultKind>(result >> 32); kind != FaultKind::None) {
+                m_faultPc = next;
+                return kind;
+            }
+            ip = code + next;
+            DISPATCH();
+        }
     }
 #undef DISPATCH
 #undef NEXT

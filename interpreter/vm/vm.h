@@ -2,6 +2,8 @@
 
 #include "interpreter/vm/bytecode.h"
 
+#include <memory>
+
 #include <cstdint>
 #include <vector>
 
@@ -9,10 +11,19 @@ namespace iec::interp {
 
 // Runs bytecode over one memory image. It allocates nothing while running: the image, the call
 // stack and the string scratch buffer are sized when it is created.
+class JitProgram;
+
 class Vm
 {
 public:
+    // Translates the module's hot code to machine code unless the JIT is off (jit.h).
     explicit Vm(const Module &module);
+    ~Vm();
+    Vm(const Vm &) = delete;
+    Vm &operator=(const Vm &) = delete;
+
+    // Instructions of the module that run as machine code (0 without the JIT).
+    std::size_t nativeInstructions() const;
 
     std::vector<std::uint8_t> &memory() { return m_memory; }
     const std::vector<std::uint8_t> &memory() const { return m_memory; }
@@ -30,6 +41,7 @@ public:
 
 private:
     const Module &m_module;
+    std::unique_ptr<const JitProgram> m_jit;
     std::vector<std::uint8_t> m_memory;
     std::vector<char16_t> m_scratch;
     std::uint32_t m_faultPc = 0;
