@@ -80,9 +80,13 @@ QString trace(const std::shared_ptr<const interp::Module> &module)
     for (const QString &scan : inputs()) {
         for (const QString &item : scan.split(QStringLiteral("; "))) {
             const QStringList pair = item.split(QLatin1Char('='));
-            runtime.write(QStringLiteral("Main.") + pair[0], pair[1]);
+            if (pair.size() != 2)
+                return QStringLiteral("malformed input '%1'").arg(item);
+            if (const auto refused = runtime.write(QStringLiteral("Main.") + pair[0], pair[1]))
+                return QStringLiteral("writing %1: %2").arg(item, *refused);
         }
-        runtime.runCycle();
+        if (!runtime.runCycle())
+            return QStringLiteral("stopped: ") + (runtime.fault() ? runtime.fault()->toString() : QString());
         QStringList row;
         for (const char *name : {"run", "lamp", "starts"})
             row << runtime.read(QStringLiteral("Main.") + QLatin1String(name)).value_or(QStringLiteral("?"));
