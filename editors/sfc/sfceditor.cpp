@@ -7,6 +7,7 @@
 #include "editors/sfc/sfcgeometry.h"
 #include "editors/sfc/sfcitems.h"
 #include "editors/sfc/sfclayout.h"
+#include "editors/sfc/sfcplacement.h"
 #include "interpreter/runtime/snapshot.h"
 #include "model/body.h"
 #include "model/projectmodel.h"
@@ -186,6 +187,7 @@ void SfcEditor::createActions()
         {"sfcZoomIn", QT_TR_NOOP("Zoom In"), "Ctrl++", [this] { m_view->zoomIn(); }, false},
         {"sfcZoomOut", QT_TR_NOOP("Zoom Out"), "Ctrl+-", [this] { m_view->zoomOut(); }, false},
         {"sfcFit", QT_TR_NOOP("Fit to Window"), "", [this] { fitToWindow(); }, false},
+        {"sfcArrange", QT_TR_NOOP("Arrange Chart"), "", [this] { arrangeChart(); }, false},
         {"sfcExport", QT_TR_NOOP("Export Picture…"), "", [this] {
              const QString path = QFileDialog::getSaveFileName(this, tr("Export Chart"), QString(),
                  tr("SVG picture (*.svg);;PNG picture (*.png);;PDF document (*.pdf)"));
@@ -209,7 +211,7 @@ void SfcEditor::createActions()
         QStringLiteral("sfcJump"), QStringLiteral("sfcTransitionJump"), QStringLiteral("sfcMacro"),
         QStringLiteral("sfcDelete"), QStringLiteral("sfcProperties"), QStringLiteral("sfcActions"),
         QStringLiteral("sfcZoomOutOfMacro"), QStringLiteral("sfcZoomIn"), QStringLiteral("sfcZoomOut"),
-        QStringLiteral("sfcFit"), QStringLiteral("sfcExport"), QStringLiteral("sfcPrint")};
+        QStringLiteral("sfcFit"), QStringLiteral("sfcArrange"), QStringLiteral("sfcExport"), QStringLiteral("sfcPrint")};
     for (const QString &name : onBar)
         m_toolBar->addAction(action(name));
 }
@@ -239,6 +241,8 @@ void SfcEditor::contextMenuEvent(QContextMenuEvent *event)
     menu.addSeparator();
     for (const char *name : {"sfcCut", "sfcCopy", "sfcPaste", "sfcDelete"})
         menu.addAction(action(QString::fromLatin1(name)));
+    menu.addSeparator();
+    menu.addAction(action(QStringLiteral("sfcArrange")));
     menu.exec(event->globalPos());
 }
 
@@ -317,19 +321,55 @@ bool SfcEditor::commit(ChartDocument doc, const EditResult &result, const QStrin
         showMessage(result.error);
         return false;
     }
+    const ChartDocument before = document();
     wireChart(doc);
-    layoutChart(doc);
+    placeLevel(before, doc);
+    if (!pushLevel(std::move(doc.elements), text))
+        return false;
+    select(QList<quint64>(result.select.begin(), result.select.end()));
+    return true;
+}
+
+void SfcEditor::placeLevel(const ChartDocument &before, ChartDocument &edited) const
+{
+    // A chart imported without positions stays in the automatic layout; any other keeps the
+    // positions it has and only the edited part is placed.
+    const Body *body = m_model.body(m_ref);
+    if (m_policy.macroPath().empty() && body && body->layoutGenerated)
+        layoutChart(edited);
+    else
+        placeEdit(before, edited);
+}
+
+bool SfcEditor::pushLevel(std::vector<Element> level, const QString &text)
+{
     const Body *body = m_model.body(m_ref);
     if (!body || !body->elements()) {
         showMessage(tr("This body is not a chart."));
         return false;
     }
-    std::vector<Element> top = withLevel(*body->elements(), m_policy.macroPath(), std::move(doc.elements));
+    std::vector<Element> top = withLevel(*body->elements(), m_policy.macroPath(), std::move(level));
     showMessage(QString());
     if (top != *body->elements())
         m_undoStack->push(new SetChartElementsCommand(m_model, m_ref, std::move(top), text));
     m_scene->rebuildIfDirty();
-    select(QList<quint64>(result.select.begin(), result.select.end()));
+    return true;
+}
+
+bool SfcEditor::arrangeChart()
+{
+    if (refuseWhenOnline())
+        return false;
+    ChartDocument doc = document();
+    if (doc.chart.isEmpty()) {
+        showMessage(tr("The chart is empty: there is nothing to arrange."));
+        return false;
+    }
+    const QList<quint64> selected = selection();
+    layoutChart(doc);
+    if (!pushLevel(std::move(doc.elements), tr("Arrange chart")))
+        return false;
+    select(selected);
     return true;
 }
 
@@ -568,7 +608,7 @@ bool SfcEditor::openStepAction(quint64 id, const QString &which)
                 return false;
             }
             wireChart(doc);
-            layoutChart(doc);
+            placeLevel(document(), doc);
             std::vector<Element> top = withLevel(*m_model.body(m_ref)->elements(), m_policy.macroPath(), std::move(doc.elements));
             new SetChartElementsCommand(m_model, m_ref, std::move(top), gesture->text(), gesture);
         }
@@ -865,7 +905,19 @@ bool SfcEditor::eventFilter(QObject *watched, QEvent *event)
 
 void SfcEditor::fitToWindow()
 {
-    m_view->fitToWindow();
+    m_scene->rebuildIfDirty();
+    // An editor not shown yet (a tab opened in the background, a picture taken offscreen) has not
+    // laid out its view, and the view resizes its viewport only when shown: the zoom is fitted to
+    // the view's inside as the layout sizes it, not to the viewport's default size.
+    if (!isVisible())
+        layout()->setGeometry(rect());
+    const QRectF drawing = m_scene->itemsBoundingRect().adjusted(-10, -10, 10, 10);
+    const QSizeF room = m_view->isVisible() ? QSizeF(m_view->viewport()->size()) : QSizeF(m_view->contentsRect().size());
+    if (drawing.isEmpty() || room.isEmpty())
+        return;
+    // Small charts are zoomed in as far as the largest zoom step (400 %).
+    m_view->setZoom(std::min(room.width() / drawing.width(), room.height() / drawing.height()));
+    m_view->centerOn(drawing.center());
 }
 
 QString SfcEditor::exportTo(const QString &path)
@@ -901,7 +953,7 @@ void SfcEditor::setOnlineSnapshot(const interp::RuntimeSnapshot *snapshot)
         // refuse anyway); copy, zoom, export and print stay.
         static const QStringList kChanging {QStringLiteral("sfcDelete"), QStringLiteral("sfcCut"),
             QStringLiteral("sfcPaste"), QStringLiteral("sfcProperties"), QStringLiteral("sfcActions"),
-            QStringLiteral("sfcCondition"), QStringLiteral("sfcPriority")};
+            QStringLiteral("sfcCondition"), QStringLiteral("sfcPriority"), QStringLiteral("sfcArrange")};
         for (QAction *action : findChildren<QAction *>(Qt::FindDirectChildrenOnly))
             if (kChanging.contains(action->objectName()) || insertActions().contains(action))
                 action->setEnabled(snapshot == nullptr);

@@ -27,9 +27,10 @@ class DiagramView;
 namespace iec::editors::sfc {
 
 // The SFC editor: the chart of one body on the shared diagram framework, edited with the
-// structured commands of CoDeSys 2.3 / RunPro (every command keeps the chart valid, lays it out
-// again and goes on the undo stack as one step). The public functions are the commands the
-// toolbar, the context menu and the keys trigger; they return false (and show why) when refused.
+// structured commands of CoDeSys 2.3 / RunPro (every command keeps the chart valid, places what
+// it adds without moving the rest more than needed, and goes on the undo stack as one step). The
+// public functions are the commands the toolbar, the context menu and the keys trigger; they
+// return false (and show why) when refused.
 class SfcEditor : public QWidget, public OnlineView
 {
     Q_OBJECT
@@ -65,6 +66,9 @@ public:
     bool copySelection();
     bool cutSelection();
     bool paste();
+    // Lays the whole chart (the level shown) out again automatically: one undo step. Edits
+    // otherwise keep the positions the chart has and place only what they add.
+    bool arrangeChart();
 
     // ---- properties
     bool setStepProperties(quint64 stepId, const StepProperties &properties);
@@ -109,6 +113,8 @@ protected:
 private:
     bool refuseWhenOnline();
     bool commit(ChartDocument document, const EditResult &result, const QString &text);
+    void placeLevel(const ChartDocument &before, ChartDocument &edited) const;
+    bool pushLevel(std::vector<model::Element> level, const QString &text);
     void showMessage(const QString &message);
     void createActions();
     void onDoubleClicked(quint64 localId, QPointF scenePos);

@@ -619,7 +619,14 @@ std::optional<Fragment> copyFragment(ChartDocument &document, const std::vector<
     Fragment fragment;
     Sequence &seq = *range->level.sequence;
     fragment.nodes.assign(seq.begin() + std::ptrdiff_t(range->first), seq.begin() + std::ptrdiff_t(range->last) + 1);
-    for (quint64 id : allIds(document, fragment.nodes)) {
+    std::vector<quint64> ids = allIds(document, fragment.nodes);
+    // A transition's wired condition is copied with it, so the copy gets a network of its own.
+    const std::size_t chainIds = ids.size();
+    for (std::size_t i = 0; i < chainIds; ++i) {
+        const std::vector<quint64> network = conditionNetwork(document, ids[i]);
+        ids.insert(ids.end(), network.begin(), network.end());
+    }
+    for (quint64 id : ids) {
         if (const Element *e = document.element(id))
             fragment.elements.push_back(*e);
     }

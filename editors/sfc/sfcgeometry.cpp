@@ -9,9 +9,29 @@ namespace iec::editors::sfc {
 
 using namespace model;
 
+namespace {
+
+// Advance widths of the chart font (DejaVu Sans, 12 px) for the printable ASCII characters, from
+// the font's metrics table, so labels are measured as drawn without a QGuiApplication.
+constexpr double kAdvance[95] = {
+    3.81, 4.81, 5.52, 10.05, 7.63, 11.4, 9.36, 3.3, 4.68, 4.68, 6.0, 10.05, 3.81, 4.33, 3.81, 4.04, //  !"#$%&'()*+,-./
+    7.63, 7.63, 7.63, 7.63, 7.63, 7.63, 7.63, 7.63, 7.63, 7.63, 4.04, 4.04, 10.05, 10.05, 10.05, 6.37, // 0-9:;<=>?
+    12.0, 8.21, 8.23, 8.38, 9.24, 7.58, 6.9, 9.3, 9.02, 3.54, 3.54, 7.87, 6.69, 10.35, 8.98, 9.45, // @A-O
+    7.24, 9.45, 8.34, 7.62, 7.33, 8.78, 8.21, 11.87, 8.22, 7.33, 8.22, 4.68, 4.04, 4.68, 10.05, 6.0, // P-Z[\]^_
+    6.0, 7.35, 7.62, 6.6, 7.62, 7.38, 4.22, 7.62, 7.61, 3.33, 3.33, 6.95, 3.33, 11.69, 7.61, 7.34, // `a-o
+    7.62, 7.62, 4.93, 6.25, 4.71, 7.61, 7.1, 9.81, 7.1, 7.1, 6.3, 7.63, 4.04, 7.63, 10.05}; // p-z{|}~
+
+} // namespace
+
 double textWidth(const QString &text)
 {
-    return kCharWidth * double(text.size());
+    double width = 0;
+    for (const QChar c : text) {
+        const char16_t code = c.unicode();
+        // Anything else (umlauts, CJK in comments) is counted as wide as the widest letter.
+        width += code >= 32 && code < 127 ? kAdvance[code - 32] : 12.0;
+    }
+    return std::ceil(width);
 }
 
 double stepWidth(const QString &name)
@@ -37,6 +57,46 @@ QString conditionText(const Transition &transition)
     } else
         return {};
     return condition.negated ? QStringLiteral("NOT ") + text : text;
+}
+
+QString transitionLabel(const Transition &transition)
+{
+    const QString text = conditionText(transition);
+    return transition.priority ? QStringLiteral("(%1) ").arg(*transition.priority) + text : text;
+}
+
+QRectF labelRect(const Element &element)
+{
+    const QRectF frame = elementRect(element);
+    if (const auto *transition = std::get_if<Transition>(&element)) {
+        const QString label = transitionLabel(*transition);
+        if (label.isEmpty())
+            return {};
+        return {frame.right() + kLabelGap, frame.center().y() - kLabelHeight / 2, textWidth(label), kLabelHeight};
+    }
+    if (const auto *jump = std::get_if<JumpStep>(&element))
+        return {frame.right() + kLabelGap, frame.center().y() - kLabelHeight / 2, textWidth(jump->targetName), kLabelHeight};
+    return {};
+}
+
+QRectF drawnRect(const Element &element)
+{
+    const QRectF label = labelRect(element);
+    return label.isEmpty() ? elementRect(element) : elementRect(element).united(label);
+}
+
+double labelRoom(const QRectF &label, const QList<QRectF> &obstacles)
+{
+    constexpr double kClearance = 4;
+    double room = -1;
+    for (const QRectF &obstacle : obstacles) {
+        const bool sameRow = obstacle.bottom() >= label.top() && obstacle.top() <= label.bottom();
+        if (!sameRow || obstacle.right() <= label.left() + 1)
+            continue;
+        const double width = std::max(0.0, std::max(obstacle.left(), label.left()) - label.left() - kClearance);
+        room = room < 0 ? width : std::min(room, width);
+    }
+    return room;
 }
 
 QString qualifierText(const ActionBlockAction &action)
@@ -156,8 +216,11 @@ QList<QPointF> wirePolyline(const Element &source, const Element &target)
     QPointF from = outputPoint(source);
     QPointF to = inputPoint(target);
     if (isBar(source) && isBar(target)) {
-        from.setX(elementRect(source).left());
-        to.setX(from.x());
+        // Straight down where both bars are (a convergence on a divergence: their left ends).
+        const QRectF upper = elementRect(source);
+        const QRectF lower = elementRect(target);
+        from = {std::clamp(lower.left(), upper.left(), upper.right()), upper.bottom()};
+        to = {std::clamp(from.x(), lower.left(), lower.right()), lower.top()};
     } else if (isBar(source)) {
         const QRectF bar = elementRect(source);
         from = {std::clamp(to.x(), bar.left(), bar.right()), bar.bottom()};

@@ -25,16 +25,27 @@ inline constexpr double kActionOffset = 24; // from the step's right border to i
 inline constexpr double kActionRow = 20;
 inline constexpr double kQualifierWidth = 36;
 inline constexpr double kLabelGap = 8;      // from a transition or jump to its text
-inline constexpr double kCharWidth = 7;     // text width estimate of the chart font (9 pt)
+inline constexpr double kLabelHeight = 18;  // the row a transition's condition or a jump's target is drawn in
 inline constexpr double kSelectionBarHeight = 1;
 inline constexpr double kParallelBarHeight = 4; // two lines
 
+// The width of a text in the chart font (DejaVu Sans, 12 px), from its glyph advances.
 double textWidth(const QString &text);
 double stepWidth(const QString &name);
 
 // The text shown right of a transition: its inline condition (first line), the name of its
 // transition part, "NOT x" when negated, empty when the condition is wired.
 QString conditionText(const model::Transition &transition);
+// What is drawn right of a transition: its condition text, "(2) " before it when it has a priority.
+QString transitionLabel(const model::Transition &transition);
+// Where a transition's label or a jump's target is drawn (empty for other elements), and the
+// element's frame together with it: what must not overlap the neighbouring branch.
+QRectF labelRect(const model::Element &element);
+QRectF drawnRect(const model::Element &element);
+// How wide a label starting at `label`'s left may be before it runs into one of the `obstacles`
+// (frames of other elements, bounding boxes of wire segments) that share its row; -1 when
+// nothing is in the way.
+double labelRoom(const QRectF &label, const QList<QRectF> &obstacles);
 // Widths of the action block's columns (qualifier and time | action | indicator).
 struct ActionBlockColumns {
     double qualifier = kQualifierWidth;

@@ -53,6 +53,44 @@ QRectF SfcItem::boundingRect() const
     return m_bounds.adjusted(-3, -3, 3, 3);
 }
 
+void SfcItem::setLabelRoom(double width)
+{
+    prepareGeometryChange();
+    m_labelRoom = width;
+    const QRectF label = labelRect(m_element);
+    m_bounds = m_frame;
+    if (!label.isEmpty()) {
+        QRectF shown = label;
+        if (m_labelRoom >= 0)
+            shown.setWidth(std::min(label.width(), m_labelRoom));
+        m_bounds = m_bounds.united(shown);
+    }
+}
+
+QString SfcItem::shownLabel() const
+{
+    QString label;
+    if (const auto *transition = std::get_if<Transition>(&m_element))
+        label = transitionLabel(*transition);
+    else if (const auto *jump = std::get_if<JumpStep>(&m_element))
+        label = jump->targetName;
+    if (label.isEmpty() || m_labelRoom < 0 || textWidth(label) <= m_labelRoom)
+        return label;
+    const QFontMetricsF metrics(chartFont());
+    return metrics.elidedText(label, Qt::ElideRight, std::max(m_labelRoom, 0.0));
+}
+
+void SfcItem::paintLabel(QPainter *painter) const
+{
+    const QString label = shownLabel();
+    if (label.isEmpty())
+        return;
+    painter->setFont(chartFont());
+    // Drawn unclipped: the room was measured with the same widths the layout uses.
+    const QRectF row(m_frame.right() + kLabelGap, m_frame.center().y() - kLabelHeight / 2, 2000, kLabelHeight);
+    painter->drawText(row, Qt::AlignLeft | Qt::AlignVCenter, label);
+}
+
 void SfcItem::paintSelection(QPainter *painter) const
 {
     if (!isSelected())
@@ -170,10 +208,7 @@ TransitionItem::TransitionItem(const Element &element)
     : SfcItem(element)
 {
     const auto &transition = std::get<Transition>(element);
-    QString label = conditionText(transition);
-    if (transition.priority)
-        label = QStringLiteral("(%1) ").arg(*transition.priority) + label;
-    m_bounds = m_frame.united(QRectF(m_frame.right() + kLabelGap, m_frame.center().y() - 9, textWidth(label) + 8, 18));
+    setLabelRoom(-1);
     QString tip = QCoreApplication::translate("iec::editors::sfc::SfcItem", "Transition: %1").arg(conditionText(transition));
     if (transition.condition && std::holds_alternative<InlineCondition>(transition.condition->kind)) {
         const QString full = std::get<InlineCondition>(transition.condition->kind).body->text();
@@ -192,19 +227,13 @@ QPainterPath TransitionItem::shape() const
 
 void TransitionItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QWidget *)
 {
-    const auto &transition = std::get<Transition>(m_element);
     const bool conditionTrue = isActive();
     const QColor colour = conditionTrue ? kTrueColor : kInk;
     painter->setPen(Qt::NoPen);
     painter->setBrush(colour);
     painter->drawRect(m_frame);
-    painter->setFont(chartFont());
     painter->setPen(colour);
-    QString label = conditionText(transition);
-    if (transition.priority)
-        label = QStringLiteral("(%1) ").arg(*transition.priority) + label;
-    painter->drawText(QRectF(m_frame.right() + kLabelGap, m_frame.center().y() - 9, textWidth(label) + 40, 18),
-        Qt::AlignLeft | Qt::AlignVCenter, label);
+    paintLabel(painter);
     paintSelection(painter);
 }
 
@@ -215,7 +244,7 @@ JumpItem::JumpItem(const Element &element, bool targetExists)
     , m_targetExists(targetExists)
 {
     const QString target = std::get<JumpStep>(element).targetName;
-    m_bounds = m_frame.united(QRectF(m_frame.right() + kLabelGap, m_frame.top(), textWidth(target) + 8, m_frame.height()));
+    setLabelRoom(-1);
     setToolTip(targetExists ? QCoreApplication::translate("iec::editors::sfc::SfcItem", "Jump to step %1").arg(target)
                             : QCoreApplication::translate("iec::editors::sfc::SfcItem", "Jump to step %1, which does not exist").arg(target));
 }
@@ -228,9 +257,7 @@ void JumpItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QWidge
     const QRectF f = m_frame;
     painter->drawPolygon(QPolygonF({QPointF(f.left() + 2, f.top()), QPointF(f.right() - 2, f.top()), QPointF(f.center().x(), f.bottom())}));
     painter->setPen(colour);
-    painter->setFont(chartFont());
-    painter->drawText(QRectF(f.right() + kLabelGap, f.top() - 2, 400, f.height() + 4), Qt::AlignLeft | Qt::AlignVCenter,
-        std::get<JumpStep>(m_element).targetName);
+    paintLabel(painter);
     paintSelection(painter);
 }
 

@@ -26,11 +26,21 @@ public:
     [[nodiscard]] const model::Element &element() const { return m_element; }
     [[nodiscard]] QRectF frame() const { return m_frame; } // the element's own rectangle
 
+    // The width the text beside the element (a transition's condition, a jump's target) may
+    // take before it would run into the next drawing on its right: it is cut with "…" there and
+    // the tooltip shows it whole. Negative: no limit.
+    void setLabelRoom(double width);
+    [[nodiscard]] double labelRoom() const { return m_labelRoom; }
+    // The label as drawn (cut to the room), empty when the element has none.
+    [[nodiscard]] QString shownLabel() const;
+
 protected:
     void paintSelection(QPainter *painter) const;
+    void paintLabel(QPainter *painter) const;
     model::Element m_element;
     QRectF m_frame;  // in scene coordinates (items sit at 0,0)
     QRectF m_bounds; // with the texts beside it
+    double m_labelRoom = -1;
 };
 
 class StepItem : public SfcItem

@@ -3,18 +3,16 @@
 #include "editors/sfc/sfcgeometry.h"
 
 #include <algorithm>
+#include <cmath>
+#include <set>
+#include <unordered_map>
+#include <unordered_set>
 
 namespace iec::editors::sfc {
 
 using namespace model;
 
 namespace {
-
-struct Extent {
-    double left = 0;  // from the chain's axis to its leftmost drawing
-    double right = 0; // from the axis to the rightmost drawing (texts and action blocks included)
-    double height = 0;
-};
 
 struct Layouter {
     ChartDocument &document;
@@ -71,7 +69,7 @@ struct Layouter {
         case NodeKind::Transition: {
             const Element *e = document.element(node.localId);
             const auto *transition = e ? std::get_if<Transition>(e) : nullptr;
-            const QString text = transition ? conditionText(*transition) : QString();
+            const QString text = transition ? transitionLabel(*transition) : QString();
             const QRectF input = conditionInput(node.localId);
             return {kTransitionWidth / 2 + (input.isEmpty() ? 0 : 2 * kLabelGap + input.width()),
                 kTransitionWidth / 2 + kLabelGap + textWidth(text), std::max(kTransitionHeight, input.height())};
@@ -147,19 +145,28 @@ struct Layouter {
             pins(*step);
         else if (auto *macro = std::get_if<MacroStep>(e))
             pins(*macro);
-        if (!blockId)
+        if (blockId)
+            placeActionBlock(node.localId, QPointF(axis + width / 2 + kActionOffset, y));
+    }
+
+    // The step's action block with its top left corner at `at`, sized for its actions, wired
+    // straight from the step's right border.
+    void placeActionBlock(quint64 stepId, QPointF at)
+    {
+        const quint64 blockId = document.actionBlockOf(stepId);
+        const Element *stepElement = document.element(stepId);
+        auto *block = blockId ? std::get_if<ActionBlock>(document.element(blockId)) : nullptr;
+        if (!block || !stepElement)
             return;
-        auto *block = std::get_if<ActionBlock>(document.element(blockId));
-        if (!block)
-            return;
-        const QRectF size = actionBlockSize(node.localId);
-        const double blockX = axis + width / 2 + kActionOffset;
-        setGeometry(blockId, blockX, y, std::max(size.width(), 1.0), std::max(size.height(), kActionRow));
+        const QRectF step = elementRect(*stepElement);
+        const QRectF size = actionBlockSize(stepId);
+        const double pinY = step.top() + kStepHeight / 2;
+        setGeometry(blockId, at.x(), at.y(), std::max(size.width(), 1.0), std::max(size.height(), kActionRow));
         block = std::get_if<ActionBlock>(document.element(blockId));
         if (block->connectionPointIn) {
-            block->connectionPointIn->relPosition = Position {0, kStepHeight / 2};
+            block->connectionPointIn->relPosition = Position {0, pinY - at.y()};
             for (Connection &c : block->connectionPointIn->connections)
-                c.waypoints = {{blockX, y + kStepHeight / 2}, {axis + width / 2, y + kStepHeight / 2}};
+                c.waypoints = {{at.x(), pinY}, {step.right(), pinY}};
         }
         for (std::size_t i = 0; i < block->actions.size(); ++i) {
             block->actions[i].relPosition = {0, kActionRow * double(i)};
@@ -299,6 +306,28 @@ struct Layouter {
 };
 
 } // namespace
+
+Extent measureNode(const ChartDocument &document, const Node &node)
+{
+    Layouter layouter {const_cast<ChartDocument &>(document)}; // measuring only reads
+    return layouter.measure(node);
+}
+
+Extent measureSequence(const ChartDocument &document, const Sequence &sequence)
+{
+    Layouter layouter {const_cast<ChartDocument &>(document)};
+    return layouter.measure(sequence);
+}
+
+void placeNode(ChartDocument &document, Node &node, double axis, double top)
+{
+    Layouter {document}.place(node, axis, top);
+}
+
+void placeActionBlock(ChartDocument &document, quint64 stepId, QPointF topLeft)
+{
+    Layouter {document}.placeActionBlock(stepId, topLeft);
+}
 
 void layoutChart(ChartDocument &document)
 {

@@ -115,6 +115,9 @@ void SfcPolicy::populate(QGraphicsScene &scene, const std::vector<Element> &elem
         else if (const auto *macro = std::get_if<MacroStep>(&e); macro && macro->name)
             stepNames.insert(macro->name->toLower());
     }
+    // What a label must not run into: the other elements' frames and the wires' segments.
+    QList<QRectF> obstacles;
+    std::vector<SfcItem *> labelled;
     for (const Element &e : elements) {
         SfcItem *item = nullptr;
         if (std::holds_alternative<Step>(e) || std::holds_alternative<MacroStep>(e))
@@ -130,6 +133,9 @@ void SfcPolicy::populate(QGraphicsScene &scene, const std::vector<Element> &elem
         else
             item = new OtherItem(e);
         scene.addItem(item);
+        obstacles << item->frame();
+        if (!labelRect(e).isEmpty())
+            labelled.push_back(item);
         // Wires, drawn from the input side where TC6 keeps them.
         const Element *target = &e;
         std::vector<const ConnectionPointIn *> points = inputPoints(e);
@@ -145,8 +151,20 @@ void SfcPolicy::populate(QGraphicsScene &scene, const std::vector<Element> &elem
                 if (line.size() < 2)
                     line = wirePolyline(*source->second, *target);
                 addWire(scene, line);
+                for (qsizetype i = 1; i < line.size(); ++i)
+                    obstacles << QRectF(line[i - 1], line[i]).normalized();
             }
         }
+    }
+    // A label cut where the next drawing begins (positions from another tool may leave less
+    // room than the text needs; the editor's own layouts leave enough).
+    for (SfcItem *item : labelled) {
+        const QRectF label = labelRect(item->element());
+        QList<QRectF> others;
+        for (const QRectF &obstacle : obstacles)
+            if (obstacle != item->frame())
+                others << obstacle;
+        item->setLabelRoom(labelRoom(label, others));
     }
 }
 

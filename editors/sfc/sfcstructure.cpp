@@ -311,6 +311,17 @@ ConnectionPointIn inputFrom(const std::vector<quint64> &sources, const std::opti
 
 struct Wirer {
     ChartDocument &document;
+    // Elements that feed the one after them keep (or get) an output; the others lose it at the
+    // end. Decided at the end so that an output that stays keeps its pin position.
+    std::unordered_set<quint64> feeding;
+    std::vector<quint64> chainElements;
+
+    void dropUnusedOutputs()
+    {
+        for (quint64 id : chainElements)
+            if (!feeding.contains(id))
+                ensureOutput(id, false);
+    }
 
     void setInput(quint64 id, const std::vector<quint64> &sources)
     {
@@ -360,13 +371,15 @@ struct Wirer {
                 node.wired = false;
                 node.wiredTarget = 0;
             }
-            for (quint64 feed : feeds)
+            for (quint64 feed : feeds) {
                 ensureOutput(feed, true);
+                feeding.insert(feed);
+            }
             if (node.kind == NodeKind::Selection || node.kind == NodeKind::Parallel)
                 feeds = block(node, feeds);
             else {
                 setInput(node.localId, feeds);
-                ensureOutput(node.localId, false);
+                chainElements.push_back(node.localId);
                 feeds = node.kind == NodeKind::Jump ? std::vector<quint64> {} : std::vector<quint64> {node.localId};
             }
         }
@@ -418,8 +431,10 @@ struct Wirer {
         else if (auto *p = std::get_if<SimultaneousConvergence>(conv))
             setIns(*p);
         for (const auto &end : open)
-            for (quint64 id : end)
+            for (quint64 id : end) {
                 ensureOutput(id, true);
+                feeding.insert(id);
+            }
         return {node.convergenceId};
     }
 };
@@ -456,10 +471,11 @@ std::optional<NodePlace> search(Sequence &seq, Node *parent, bool isMain, quint6
 
 void wireChart(ChartDocument &document)
 {
-    Wirer wirer {document};
+    Wirer wirer {document, {}, {}};
     wirer.sequence(document.chart.main, {});
     for (Sequence &chain : document.chart.loose)
         wirer.sequence(chain, {});
+    wirer.dropUnusedOutputs();
 }
 
 std::vector<quint64> elementsOf(const ChartDocument &document, const Node &node)
@@ -467,6 +483,33 @@ std::vector<quint64> elementsOf(const ChartDocument &document, const Node &node)
     std::vector<quint64> ids;
     collect(document, node, ids);
     return ids;
+}
+
+std::vector<quint64> conditionNetwork(const ChartDocument &document, quint64 transitionId)
+{
+    const Element *e = document.element(transitionId);
+    const auto *transition = e ? std::get_if<Transition>(e) : nullptr;
+    const auto *wire = transition && transition->condition ? std::get_if<ConnectionPointIn>(&transition->condition->kind) : nullptr;
+    if (!wire)
+        return {};
+    std::vector<quint64> network;
+    std::unordered_set<quint64> seen;
+    std::vector<quint64> pending;
+    for (const Connection &c : wire->connections)
+        pending.push_back(c.refLocalId);
+    while (!pending.empty()) {
+        const quint64 id = pending.back();
+        pending.pop_back();
+        const Element *source = document.element(id);
+        if (!source || seen.contains(id) || isStructural(*source) || std::holds_alternative<ActionBlock>(*source))
+            continue;
+        seen.insert(id);
+        network.push_back(id);
+        for (const ConnectionPointIn *point : inputPoints(*source))
+            for (const Connection &c : point->connections)
+                pending.push_back(c.refLocalId);
+    }
+    return network;
 }
 
 std::optional<NodePlace> findNode(Chart &chart, quint64 localId)

@@ -76,6 +76,10 @@ void wireChart(ChartDocument &document);
 // its steps).
 std::vector<quint64> elementsOf(const ChartDocument &document, const Node &node);
 
+// The network wired into a transition's condition (variables, blocks, contacts, rails: every
+// element that feeds it, up to the chart's own elements), which belongs to the transition.
+std::vector<quint64> conditionNetwork(const ChartDocument &document, quint64 transitionId);
+
 // Where a node sits: the sequence holding it and its index there.
 struct NodePlace {
     Sequence *sequence = nullptr;
