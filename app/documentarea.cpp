@@ -3,6 +3,7 @@
 #include "app/autodeclare.h"
 #include "app/autodeclaredialog.h"
 #include "app/projectsymbols.h"
+#include "app/referencerename.h"
 #include "app/treeicons.h"
 #include "app/undostacks.h"
 #include "editors/datatypes/datatypeeditor.h"
@@ -317,7 +318,13 @@ QWidget *DocumentArea::createEditor(const BodyRef &ref)
         return bodyEditor;
     auto *splitter = new QSplitter(Qt::Vertical);
     splitter->setChildrenCollapsible(false);
-    splitter->addWidget(new editors::DeclarationEditor(m_projectModel, ref.pou, m_undoStacks->pouStack(ref.pou)));
+    auto *declarations = new editors::DeclarationEditor(m_projectModel, ref.pou, m_undoStacks->pouStack(ref.pou));
+    // A renamed variable renames its uses too; typing not yet in the model is pushed first.
+    declarations->setRenameReferences([this](model::PouId pou, const Renames &renames, QUndoCommand *gesture) {
+        flushEdits();
+        addVariableReferenceRenames(m_projectModel, pou, renames, gesture);
+    });
+    splitter->addWidget(declarations);
     splitter->addWidget(bodyEditor);
     splitter->setStretchFactor(0, 1);
     splitter->setStretchFactor(1, 2);

@@ -42,10 +42,19 @@ public:
         QList<Message> messages; // what was renamed or left out, one sentence each
         int pous = 0;
         int dataTypes = 0;
+        int configurations = 0; // imported configurations merged into the project's
     };
-    // Adds the imported data types and POUs to the project. A name that is taken gets the first
-    // free "<name>_N" (and says so); configurations are not merged (the project keeps its own).
+    // Adds the imported data types, POUs and configurations to the project in one undo step. A
+    // POU, data type or global variable whose name is taken gets the first free "<name>_N" (and
+    // says so); the imported bodies, declarations and tasks follow the new names.
+    // Configurations merge as mergeConfigurations says.
     [[nodiscard]] static Merge merge(model::ProjectModel &model, const model::Project &imported);
+    // Adds imported configurations to `into`: one with the name of a project configuration joins
+    // it, any other joins the project's first (only that one runs), and a project without
+    // configurations takes them as they are. Resources of the same name merge their global
+    // variables, tasks and program instances (a taken task or instance name gets a free one);
+    // other resources are added. The globals are expected free of clashes already (merge()).
+    static void mergeConfigurations(model::Instances &into, const model::Instances &imported, QList<Message> &messages);
 
     // The project, or only `pous` (with every data type, which they may use), as PLCopen XML or
     // IEC text; written atomically. False with a sentence in `error` when the file cannot be written.

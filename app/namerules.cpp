@@ -35,7 +35,9 @@ bool isPartName(const model::Project &project, model::PouId id, const QString &n
     return std::ranges::any_of(pou->actions, clashes) || std::ranges::any_of(pou->transitions, clashes);
 }
 
-QString firstFree(const QString &base, const std::function<bool(const QString &)> &taken)
+} // namespace
+
+QString NameRules::firstFree(const QString &base, const std::function<bool(const QString &)> &taken)
 {
     if (!taken(base))
         return base;
@@ -47,8 +49,6 @@ QString firstFree(const QString &base, const std::function<bool(const QString &)
             return candidate;
     }
 }
-
-} // namespace
 
 bool NameRules::isIdentifier(const QString &name)
 {

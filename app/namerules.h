@@ -5,6 +5,7 @@
 #include <QCoreApplication>
 #include <QString>
 
+#include <functional>
 #include <optional>
 
 namespace iec::model {
@@ -35,6 +36,10 @@ public:
     // `base` itself when it is free, otherwise base_1, base_2, ... (for duplicates and defaults).
     [[nodiscard]] static QString uniquePouName(const model::Project &project, const QString &base);
     [[nodiscard]] static QString uniquePartName(const model::Project &project, model::PouId pou, const QString &base);
+    // The one rule for generated names: `base` when `taken` says it is free, else base_1, base_2,
+    // ... (a base that ends in '_' gets the number directly: A_ gives A_1, never A__1, which
+    // is no IEC identifier). `taken` is asked case-insensitively by the caller's own rule.
+    [[nodiscard]] static QString firstFree(const QString &base, const std::function<bool(const QString &)> &taken);
 
 private:
     static std::optional<QString> identifierError(const QString &name);

@@ -231,6 +231,14 @@ void DeclarationEditor::apply(const model::Interface &declarations)
     auto *gesture = new QUndoCommand;
     auto *command = new model::SetInterfaceCommand(m_projectModel, m_pou, declarations, gesture);
     gesture->setText(command->text());
+    // A renamed variable takes its uses along, in the same undo step (as CODESYS users expect).
+    const std::vector<model::VariableRename> renames = model::renamedVariables(pou->pouInterface, declarations);
+    if (!renames.empty() && m_renameReferences) {
+        m_renameReferences(m_pou, renames, gesture);
+        gesture->setText(renames.size() == 1
+                ? tr("Rename variable %1 to %2").arg(renames.front().oldName, renames.front().newName)
+                : tr("Rename %n variable(s)", nullptr, int(renames.size())));
+    }
     m_undoStack->push(gesture);
 }
 

@@ -3,10 +3,13 @@
 #include "editors/declarations/declarationrows.h"
 
 #include "model/ids.h"
+#include "model/undo/variablerename.h"
 
 #include <QPointer>
 #include <QUndoStack>
 #include <QWidget>
+
+#include <functional>
 
 class QAction;
 class QLabel;
@@ -36,6 +39,13 @@ class DeclarationEditor : public QWidget
 public:
     DeclarationEditor(
         model::ProjectModel &projectModel, model::PouId pou, QUndoStack &undoStack, QWidget *parent = nullptr);
+
+    // Adds to a gesture that renames variables what else the renames change (their uses in the
+    // bodies); called before the gesture is pushed, while the model still has the old names.
+    using RenameReferences = std::function<void(
+        model::PouId pou, const std::vector<model::VariableRename> &renames, QUndoCommand *gesture)>;
+    // The app provides it (app/referencerename); without one a rename changes the declarations only.
+    void setRenameReferences(RenameReferences renameReferences) { m_renameReferences = std::move(renameReferences); }
 
     [[nodiscard]] model::PouId pou() const { return m_pou; }
     [[nodiscard]] QTabWidget *views() const { return m_views; }
@@ -89,6 +99,7 @@ private:
     QAction *m_moveUpAction = nullptr;
     QAction *m_moveDownAction = nullptr;
     bool m_columnsFitted = false;
+    RenameReferences m_renameReferences;
 };
 
 } // namespace iec::editors
