@@ -88,6 +88,10 @@ QString declaration(const TracedVariable &variable, size_t index)
     const unsigned width = kind == VcdKind::Bit ? 1 : kind == VcdKind::Real ? 64 : variable.ref.type->size * 8;
     QString reference = variable.name;
     reference.replace(QLatin1Char(' '), QLatin1Char('_'));
+    // Main.a[2] would read as bit 2 of a vector Main.a: an escaped identifier (IEEE 1364) keeps
+    // the brackets part of the name, which GTKWave then shows as written.
+    if (reference.contains(QLatin1Char('[')))
+        reference.prepend(QLatin1Char('\\'));
     return QStringLiteral("$var %1 %2 %3 %4 $end\n").arg(type).arg(width).arg(identifier(index), reference);
 }
 

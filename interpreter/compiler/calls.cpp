@@ -3,6 +3,8 @@
 
 #include <QCoreApplication>
 
+#include <algorithm>
+
 namespace iec::interp::detail {
 
 using namespace ast;
@@ -51,9 +53,125 @@ void Codegen::noteCall(int callee, SourceLocation at)
         m_calls[m_pou->index].push_back({callee, at});
 }
 
+namespace {
+
+// Every value of `inner` lies in the subrange of `outer` (or `outer` has none).
+bool subrangeWithin(const Type *inner, const Type *outer)
+{
+    if (!outer->subrange)
+        return true;
+    return inner->subrange && inner->subrange->first >= outer->subrange->first && inner->subrange->second <= outer->subrange->second;
+}
+
+} // namespace
+
+bool Codegen::sameInOutType(const Type *parameter, const Type *variable) const
+{
+    if (parameter == variable)
+        return true;
+    if (!parameter || !variable || parameter->kind != variable->kind)
+        return false;
+    if (parameter->kind == TypeKind::String)
+        return parameter->wide == variable->wide; // the capacity travels with the string and is checked on writes
+    if (parameter->size != variable->size)
+        return false;
+    switch (parameter->kind) {
+    case TypeKind::Elementary:
+        return parameter->elem == variable->elem;
+    case TypeKind::String:
+        return false; // handled above
+    case TypeKind::Enum:
+        return parameter->enumNames == variable->enumNames;
+    case TypeKind::Array:
+        if (parameter->dims.size() != variable->dims.size())
+            return false;
+        for (size_t d = 0; d < parameter->dims.size(); ++d) {
+            if (parameter->dims[d].count() != variable->dims[d].count())
+                return false;
+        }
+        // Elements of a subrange type are written by the callee without knowing the other range.
+        return sameInOutType(parameter->element, variable->element)
+            && subrangeWithin(parameter->element, variable->element) && subrangeWithin(variable->element, parameter->element);
+    case TypeKind::FunctionBlock:
+        return parameter->pou == variable->pou;
+    case TypeKind::Struct:
+        if (parameter->members.size() != variable->members.size())
+            return false;
+        for (size_t i = 0; i < parameter->members.size(); ++i) {
+            const Member &a = parameter->members[i], &b = variable->members[i];
+            if (a.offset != b.offset || !sameInOutType(a.type, b.type) || !subrangeWithin(a.type, b.type) || !subrangeWithin(b.type, a.type))
+                return false;
+        }
+        return true;
+    }
+    return false;
+}
+
+Place Codegen::inOutVariable(const Member &parameter, const Argument &a, const QString &callee)
+{
+    if (a.expr && a.expr->kind == ExprKind::Error)
+        return {}; // the parser has said what is wrong
+    const size_t before = m_diagnostics.all().size();
+    const bool variableLike = a.expr
+        && (a.expr->kind == ExprKind::Name || a.expr->kind == ExprKind::Member || a.expr->kind == ExprKind::Index
+            || a.expr->kind == ExprKind::DirectAddress);
+    const Place target = variableLike ? resolvePlace(*a.expr, true) : Place{};
+    if (target.kind != Place::Kind::Direct && target.kind != Place::Kind::Indirect) {
+        if (m_diagnostics.all().size() == before) // not when the expression already said what is wrong
+            error(a.location, QCoreApplication::translate("iec::interp::Compiler", "VAR_IN_OUT %1 of %2 needs a variable, not a value.").arg(parameter.name, callee),
+                  QCoreApplication::translate("iec::interp::Compiler", "it may change what it is given; pass a variable"));
+        return {};
+    }
+    if (target.readOnly) {
+        error(a.location, target.readOnlyReason.isEmpty() ? QCoreApplication::translate("iec::interp::Compiler", "%1 cannot be changed.").arg(target.text) : target.readOnlyReason,
+              QCoreApplication::translate("iec::interp::Compiler", "VAR_IN_OUT %1 of %2 may change the variable it is given").arg(parameter.name, callee));
+        return {};
+    }
+    if (!sameInOutType(parameter.type, target.type)) {
+        error(a.location, QCoreApplication::translate("iec::interp::Compiler", "VAR_IN_OUT %1 of %2 needs a variable of type %3, not %4.")
+                              .arg(parameter.name, callee, typeName(parameter.type), typeName(target.type)),
+              QCoreApplication::translate("iec::interp::Compiler", "VAR_IN_OUT passes the variable itself, so no conversion is possible; use a variable of type %1").arg(typeName(parameter.type)));
+        return {};
+    }
+    return target;
+}
+
+std::uint32_t Codegen::inOutAddress(const Place &variable)
+{
+    if (variable.kind == Place::Kind::Indirect)
+        return variable.operand;
+    const std::uint32_t address = temp(elem(Elem::UDInt));
+    instr(op::Lea, address, variable.operand);
+    return address;
+}
+
+void Codegen::checkInOutBefore(const Member &parameter, const Place &variable, SourceLocation at, std::vector<InOutCheck> &after)
+{
+    if (parameter.type->kind != TypeKind::Elementary)
+        return; // arrays and structs of subranges must match exactly (sameInOutType)
+    if (!subrangeWithin(variable.type, parameter.type))
+        checkSubrange(read(variable), parameter.type, at);
+    if (!subrangeWithin(parameter.type, variable.type))
+        after.push_back({variable, at});
+}
+
+void Codegen::checkInOutAfter(const std::vector<InOutCheck> &after)
+{
+    for (const InOutCheck &c : after)
+        checkSubrange(read(c.variable), c.variable.type, c.location);
+}
+
 Value Codegen::compileCall(const Expr &call, bool asStatement, const Place *destination)
 {
     const Expr &callee = call.operands.front();
+    // IEC 61131-3 has formal calls (every argument named) and positional ones, not a mix: in
+    // F(1, b := 2) it is unclear which parameter the 1 is for.
+    const auto named = std::count_if(call.callArgs.begin(), call.callArgs.end(), [](const CallArg &a) { return !a.name.isEmpty(); });
+    if (named > 0 && named < static_cast<std::ptrdiff_t>(call.callArgs.size())) {
+        error(call.location, QCoreApplication::translate("iec::interp::Compiler", "A call gives either all its arguments by name or none; here only some have a name."),
+              QCoreApplication::translate("iec::interp::Compiler", "write each argument as name := value"));
+        return {};
+    }
     if (callAction(callee, call.callArgs, call.location, asStatement))
         return {};
     std::optional<Place> instance;
@@ -61,10 +179,14 @@ Value Codegen::compileCall(const Expr &call, bool asStatement, const Place *dest
         instance = resolvePlace(callee);
         if (instance->kind == Place::Kind::Invalid)
             return {};
-    } else if (m_pou && m_pou->frame && m_pou->frame->member(callee.text)) {
+    } else if (m_pou && m_pou->frame && m_pou->frame->member(callee.text)
+               && !(m_pou->kind == PouKind::Function && callee.text.compare(m_pou->name, Qt::CaseInsensitive) == 0)) {
+        // (A function's own name is its result variable; calling it is recursion, reported as such.)
         instance = resolvePlace(callee);
     } else if (m_globals.contains(key(callee.text))) {
         instance = resolvePlace(callee);
+    } else if (callee.kind == ExprKind::Name && unusableVar(callee.text)) {
+        return {}; // an instance whose type is unknown: reported with its declaration
     }
     return callNamed(callee.text, instance ? &*instance : nullptr, arguments(call.callArgs), call.location, asStatement, destination);
 }
@@ -186,6 +308,8 @@ void Codegen::callFunctionBlock(const Place &instance, const std::vector<Argumen
     }
     size_t next = 0;
     std::vector<std::pair<const Member *, const Argument *>> outputs;
+    std::vector<InOutCheck> inOutChecks;
+    std::vector<const Member *> inOutGiven;
     for (const Argument &a : args) {
         const Member *m = nullptr;
         if (a.name.isEmpty()) {
@@ -216,23 +340,29 @@ void Codegen::callFunctionBlock(const Place &instance, const std::vector<Argumen
             continue;
         }
         if (m->kind == VarKind::InOut) {
-            const Place target = resolvePlace(*a.expr);
-            if (target.kind != Place::Kind::Direct && target.kind != Place::Kind::Indirect) {
-                error(a.location, QCoreApplication::translate("iec::interp::Compiler", "VAR_IN_OUT %1 needs a variable.").arg(m->name));
+            inOutGiven.push_back(m);
+            const Place target = inOutVariable(*m, a, typeName(fbType));
+            if (target.kind == Place::Kind::Invalid)
                 continue;
-            }
             Member slot = *m;
             slot.byReference = false;
             slot.type = elem(Elem::UDInt);
             const Place slotPlace = memberPlace(inner, slot, m->name);
-            const std::uint32_t address = target.kind == Place::Kind::Direct ? temp(elem(Elem::UDInt)) : target.operand;
-            if (target.kind == Place::Kind::Direct)
-                instr(op::Lea, address, target.operand);
-            store(slotPlace, operandValue(address, elem(Elem::UDInt)), a.location);
+            store(slotPlace, operandValue(inOutAddress(target), elem(Elem::UDInt)), a.location);
+            // After the address is taken: reading first could fold the element's address away.
+            checkInOutBefore(*m, target, a.location, inOutChecks);
             continue;
         }
         const Value value = a.value ? *a.value : compileExpr(*a.expr);
         store(memberPlace(inner, *m, instance.text + QLatin1Char('.') + m->name), value, a.location);
+    }
+    // A VAR_IN_OUT left out would be used through whatever address its slot still holds.
+    for (const Member *m : positional) {
+        if (m->kind == VarKind::InOut && std::find(inOutGiven.begin(), inOutGiven.end(), m) == inOutGiven.end()) {
+            error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 needs a variable for its VAR_IN_OUT %2.").arg(instance.text, m->name),
+                  QCoreApplication::translate("iec::interp::Compiler", "pass it in every call, e.g. %1(%2 := variable)").arg(instance.text, m->name));
+            return;
+        }
     }
     if (const auto native = nativeBlock(fbType)) {
         instr(instance.kind == Place::Kind::Direct ? op::NativeFb : op::NativeFbPtr, instance.operand, 0, 0, 0, static_cast<std::uint16_t>(*native));
@@ -241,6 +371,7 @@ void Codegen::callFunctionBlock(const Place &instance, const std::vector<Argumen
     } else {
         instr(op::CallFbPtr, instance.operand, 0, 0, 0, static_cast<std::uint16_t>(fbType->pou));
     }
+    checkInOutAfter(inOutChecks);
     for (const auto &[m, a] : outputs) {
         if (!a->expr || a->expr->kind == ExprKind::Error)
             continue; // Q => (left open)
@@ -272,6 +403,7 @@ Value Codegen::callUserFunction(PouInfo &fn, const std::vector<Argument> &args, 
             computed[i] = args[i].value ? *args[i].value : compileExpr(*args[i].expr);
     }
     size_t next = 0;
+    std::vector<InOutCheck> inOutChecks;
     for (const Argument &a : args) {
         const Member *m = nullptr;
         if (a.name.isEmpty()) {
@@ -301,17 +433,11 @@ Value Codegen::callUserFunction(PouInfo &fn, const std::vector<Argument> &args, 
                 given[k] = true;
         }
         if (m->kind == VarKind::InOut) {
-            const Place target = a.expr ? resolvePlace(*a.expr) : Place{};
-            if (target.kind != Place::Kind::Direct && target.kind != Place::Kind::Indirect) {
-                error(a.location, QCoreApplication::translate("iec::interp::Compiler", "VAR_IN_OUT %1 needs a variable.").arg(m->name));
+            const Place target = inOutVariable(*m, a, fn.name);
+            if (target.kind == Place::Kind::Invalid)
                 continue;
-            }
-            std::uint32_t address = target.operand;
-            if (target.kind == Place::Kind::Direct) {
-                address = temp(elem(Elem::UDInt));
-                instr(op::Lea, address, target.operand);
-            }
-            instr(op::Mov4, fn.frameBase + m->offset, address);
+            instr(op::Mov4, fn.frameBase + m->offset, inOutAddress(target));
+            checkInOutBefore(*m, target, a.location, inOutChecks);
             continue;
         }
         const Value value = computed[size_t(&a - args.data())];
@@ -328,6 +454,7 @@ Value Codegen::callUserFunction(PouInfo &fn, const std::vector<Argument> &args, 
         emitMove(fn.frameBase + m->offset, fn.templateOffset + m->offset, m->type);
     }
     instr(op::CallFn, 0, 0, 0, 0, static_cast<std::uint16_t>(fn.index));
+    checkInOutAfter(inOutChecks);
     for (const auto &[m, a] : outputs) {
         Value value = operandValue(fn.frameBase + m->offset, m->type);
         if (a->negated)

@@ -11,6 +11,7 @@
 #include "interpreter/vm/bytecode.h"
 
 #include <QHash>
+#include <QSet>
 #include <QString>
 
 #include <map>
@@ -117,7 +118,9 @@ public:
     // ---- expressions.cpp ----
     Value compileExpr(const ast::Expr &expr, const Place *destination = nullptr);
     Place resolvePlace(const ast::Expr &expr, bool reportUnknown = true);
-    Value read(const Place &place);
+    // mayFuse: an element's address computed just before may be folded into the load (then the
+    // place's address operand is never written; false when it is needed again).
+    Value read(const Place &place, bool mayFuse = true);
     std::optional<std::uint16_t> fusedIndexOp(const Place &place, bool load) const;
     void store(const Place &place, Value value, SourceLocation at);
     // A value assigned to a subrange type: a constant is checked now, anything else at run time.
@@ -155,6 +158,20 @@ public:
     void callFunctionBlock(const Place &instance, const std::vector<Argument> &args, SourceLocation at);
     Value callUserFunction(PouInfo &fn, const std::vector<Argument> &args, SourceLocation at, const Place *destination);
     void noteCall(int callee, SourceLocation at);
+    // VAR_IN_OUT passes the variable itself, so its type must be the parameter's (a subrange and
+    // its base type count as one; their values are checked where they cross). Invalid after a
+    // message. inOutAddress: the operand holding the variable's address for the parameter slot.
+    Place inOutVariable(const Member &parameter, const Argument &a, const QString &callee);
+    std::uint32_t inOutAddress(const Place &variable);
+    bool sameInOutType(const Type *parameter, const Type *variable) const;
+    // A variable passed to VAR_IN_OUT whose type allows values the other side does not: its value
+    // is checked before the call (for the parameter's subrange) and after it (for its own).
+    struct InOutCheck {
+        Place variable;
+        SourceLocation location;
+    };
+    void checkInOutBefore(const Member &parameter, const Place &variable, SourceLocation at, std::vector<InOutCheck> &after);
+    void checkInOutAfter(const std::vector<InOutCheck> &after);
     // CODESYS actions: `Act();` inside the POU, `Inst.Act();` on an instance (ST, and CAL in IL).
     // False when `callee` names no action; then it is an ordinary call.
     bool callAction(const ast::Expr &callee, const std::vector<ast::CallArg> &args, SourceLocation at, bool asStatement);
@@ -170,6 +187,8 @@ public:
     void compileStatements(const std::vector<ast::Stmt> &list);
     void compileStatement(const ast::Stmt &stmt);
     Value condition(const ast::Expr &expr);
+    // A FOR loop whose counter cannot pass a constant end value (wraparound or subrange).
+    void warnForLoopEnd(const ast::Stmt &s, const Place &counter, const Value &start, const ConstValue &end, const ConstValue &step, bool up);
 
     // ---- il.cpp ----
     void compileIl(const std::vector<ast::IlInstruction> &list);
@@ -240,6 +259,10 @@ public:
     void packRungs();
     Value lookupName(const QString &name, SourceLocation at);
     Place namePlace(const ast::Expr &expr, bool reportUnknown);
+    // Variables whose declaration was reported (an unknown type): their uses stay quiet, so one
+    // typo gives one message. "<POU index>:<upper-case name>", POU index -1 for globals.
+    QSet<QString> m_unusableVars;
+    bool unusableVar(const QString &name) const;
 };
 
 // Upper-case key for case-insensitive IEC names.

@@ -49,6 +49,19 @@ Value Codegen::coerce(Value v, const Type *to, SourceLocation at, const QString 
             }
             return mismatch();
         }
+        if (from->kind == TypeKind::String && to->kind == TypeKind::Elementary && (to->elem == Elem::Char || to->elem == Elem::WChar)
+            && v.constant.kind == ConstValue::Kind::String && (!from->wide || to->elem == Elem::WChar)) {
+            // A CHAR literal is a one-character string: c : CHAR := 'A' (also CHAR#'A').
+            if (v.constant.s.size() != 1) {
+                error(at, QCoreApplication::translate("iec::interp::Compiler", "A %1 holds exactly one character, not %2.")
+                              .arg(typeName(to)).arg(v.constant.s.size()));
+                return {};
+            }
+            ConstValue c;
+            c.kind = ConstValue::Kind::Int;
+            c.i = v.constant.s.front().unicode();
+            return constantValue(to, c);
+        }
         if (from->kind == TypeKind::String && to->kind == TypeKind::String && from->wide == to->wide) {
             if (v.constant.s.size() > qsizetype(to->capacity)) {
                 error(at, QCoreApplication::translate("iec::interp::Compiler", "The text has %1 characters but %2 holds only %3.")
@@ -145,6 +158,20 @@ Value Codegen::convertExplicit(Value v, const Type *to, SourceLocation at, bool 
             instr(op::StrMov, out, materialize(v), 0, 0, (to->wide ? 1 : 0) | (from->wide ? 2 : 0));
             return operandValue(out, result);
         }
+        if (to->kind == TypeKind::String && from->kind == TypeKind::Elementary && (from->elem == Elem::Char || from->elem == Elem::WChar)) {
+            // CHAR_TO_STRING('A') is 'A', not the character's code: a one-character string
+            // (capacity, length, then the character, as the VM lays strings out).
+            const Type *result = m_types->string(to->wide, 1);
+            const std::uint32_t out = temp(result);
+            const std::uint32_t one = constantOperand(elem(Elem::UInt), ConstValue{ConstValue::Kind::Int, 1, false, 0, {}, false});
+            instr(op::Mov2, out + 2, one);
+            const Type *character = elem(to->wide ? Elem::WChar : Elem::Char);
+            if (from->size == character->size)
+                instr(to->wide ? op::Mov2 : op::Mov1, out + 4, materialize(v));
+            else
+                instr(convertOp(vtOf(*from), vtOf(*character)), out + 4, materialize(v)); // CHAR_TO_WSTRING, WCHAR_TO_STRING
+            return operandValue(out, result);
+        }
         if (to->kind == TypeKind::String) {
             if (!from->isElementary()) {
                 error(at, QCoreApplication::translate("iec::interp::Compiler", "A %1 cannot be converted to text.").arg(typeName(from)));
@@ -159,6 +186,24 @@ Value Codegen::convertExplicit(Value v, const Type *to, SourceLocation at, bool 
         if (!to->isElementary()) {
             error(at, QCoreApplication::translate("iec::interp::Compiler", "Text cannot be converted to %1.").arg(typeName(to)));
             return {};
+        }
+        if (to->kind == TypeKind::Elementary && (to->elem == Elem::Char || to->elem == Elem::WChar)) {
+            // STRING_TO_CHAR('65') is '6': the first character, or the character 0 of an empty text.
+            const std::uint32_t source = materialize(v);
+            const std::uint32_t out = temp(to);
+            const ConstValue zero{ConstValue::Kind::Int, 0, false, 0, {}, false};
+            emitMove(out, constantOperand(to, zero), to);
+            const std::uint32_t length = temp(elem(Elem::DInt));
+            instr(op::StrLen, length, source, 0, 0, from->wide ? 1 : 0);
+            const Value empty = binary(QStringLiteral("="), operandValue(length, elem(Elem::DInt)), constantValue(elem(Elem::DInt), zero), at);
+            const std::uint32_t skip = instr(op::Jnz, 0, empty.operand);
+            const Type *character = elem(from->wide ? Elem::WChar : Elem::Char);
+            if (character->size == to->size)
+                instr(to->size == 2 ? op::Mov2 : op::Mov1, out, source + 4);
+            else
+                instr(convertOp(vtOf(*character), vtOf(*to)), out, source + 4);
+            patchJump(skip, here());
+            return operandValue(out, to);
         }
         const std::uint32_t out = temp(to);
         instr(typedOp(op::FromStr, vtOf(*to)), out, materialize(v), 0, 0,

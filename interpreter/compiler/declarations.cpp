@@ -106,6 +106,13 @@ const Type *Codegen::namedType(const QString &name, SourceLocation at, bool repo
         }
         if (decl->init.kind != Initializer::Kind::None)
             own->init = &decl->init;
+        if (own->subrange && decl->init.kind == Initializer::Kind::Expression) {
+            const QString pou = m_pouName;
+            m_pouName.clear(); // reported with the type, not with the POU that uses it first
+            if (const auto value = evalConst(*decl->init.value); value && value->kind == Value::Kind::Constant)
+                checkSubrange(*value, own, decl->init.location);
+            m_pouName = pou;
+        }
         m_namedTypes.insert(k, own);
         return own;
     }
@@ -290,8 +297,13 @@ bool Codegen::layoutPou(PouInfo &pou)
                 m.address = v.address;
                 m.byReference = section.kind == VarKind::InOut;
                 m.init = v.init.kind == Initializer::Kind::None ? nullptr : &v.init;
-                m.type = resolveType(v.type);
+                // A VAR_IN_OUT of the block's own type holds an address, not an instance: the
+                // block need not be laid out before it.
+                const bool ownTypeByReference = m.byReference && pou.kind == PouKind::FunctionBlock
+                    && v.type.kind == TypeSpec::Kind::Named && key(v.type.name) == key(pou.name);
+                m.type = ownTypeByReference ? frame : resolveType(v.type);
                 if (!m.type) {
+                    m_unusableVars.insert(QString::number(pou.index) + QLatin1Char(':') + key(v.name));
                     ok = false;
                     continue;
                 }
@@ -361,8 +373,10 @@ void Codegen::declareGlobals(const std::vector<VarSection> &sections)
                 continue;
             }
             const Type *type = resolveType(v.type);
-            if (!type)
+            if (!type) {
+                m_unusableVars.insert(QStringLiteral("-1:") + k);
                 continue;
+            }
             GlobalVar g;
             g.name = v.name;
             g.type = type;
@@ -457,7 +471,8 @@ void Codegen::writeInitial(std::uint32_t offset, const Type *type, const Initial
         if (init && init->kind == Initializer::Kind::Expression) {
             if (auto value = evalConst(*init->value)) {
                 const Value typed = coerce(*value, type, init->location, name);
-                if (typed.kind == Value::Kind::Constant)
+                // A type's own default was checked once where the type is declared.
+                if (typed.kind == Value::Kind::Constant && (init == type->init || checkSubrange(typed, type, init->location)))
                     writeConstant(offset, type, typed.constant, init->location);
             }
         } else if (init) {
@@ -522,7 +537,16 @@ void Codegen::writeInitial(std::uint32_t offset, const Type *type, const Initial
                         memberInit = &init->items[size_t(i)];
                 }
             }
-            writeInitial(offset + m.offset, m.type, memberInit, m.name);
+            if (memberInit && memberInit == m.init) {
+                // The member's own default: a problem with it belongs to the POU or the type that
+                // declares it, not to the one that holds an instance.
+                const QString holder = m_pouName;
+                m_pouName = type->pou >= 0 ? m_pous[size_t(type->pou)].name : QString();
+                writeInitial(offset + m.offset, m.type, memberInit, m.name);
+                m_pouName = holder;
+            } else {
+                writeInitial(offset + m.offset, m.type, memberInit, m.name);
+            }
         }
         if (init && init->kind == Initializer::Kind::Struct) {
             for (qsizetype i = 0; i < init->memberNames.size(); ++i) {

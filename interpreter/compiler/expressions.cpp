@@ -273,7 +273,7 @@ Place Codegen::namePlace(const Expr &expr, bool reportUnknown)
         p.constant.i = it->value;
         return p;
     }
-    if (reportUnknown) {
+    if (reportUnknown && !unusableVar(name)) {
         if (m_pouIndex.contains(key(name)))
             error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "%1 is a POU, not a variable.").arg(name));
         else
@@ -281,6 +281,12 @@ Place Codegen::namePlace(const Expr &expr, bool reportUnknown)
                   QCoreApplication::translate("iec::interp::Compiler", "declare it in a VAR section"));
     }
     return {};
+}
+
+bool Codegen::unusableVar(const QString &name) const
+{
+    return m_unusableVars.contains(QStringLiteral("-1:") + key(name))
+        || (m_pou && m_unusableVars.contains(QString::number(m_pou->index) + QLatin1Char(':') + key(name)));
 }
 
 Place Codegen::resolvePlace(const Expr &expr, bool reportUnknown)
@@ -439,7 +445,7 @@ std::optional<std::uint16_t> Codegen::fusedIndexOp(const Place &p, bool load) co
     }
 }
 
-Value Codegen::read(const Place &p)
+Value Codegen::read(const Place &p, bool mayFuse)
 {
     switch (p.kind) {
     case Place::Kind::Invalid:
@@ -450,7 +456,7 @@ Value Codegen::read(const Place &p)
         return operandValue(p.operand, p.type);
     case Place::Kind::Indirect: {
         const std::uint32_t t = temp(p.type);
-        if (const auto fused = fusedIndexOp(p, true)) {
+        if (const auto fused = mayFuse ? fusedIndexOp(p, true) : std::nullopt) {
             std::vector<Instr> &code = m_module->code;
             Instr &index = code.back();
             // a[i * n + k]: the index computed by a MulAdd just before joins the load.
@@ -530,6 +536,17 @@ void Codegen::store(const Place &p, Value value, SourceLocation at)
     const Value v = coerce(value, bit ? boolType() : p.type, at, p.text);
     if (!v.valid() || (!bit && !checkSubrange(v, p.type, at)))
         return;
+    if (bit && p.type->subrange) {
+        // A bit of a subrange variable: the changed word is checked before it is stored.
+        Place word = p;
+        word.kind = p.kind == Place::Kind::Bit ? Place::Kind::Direct : Place::Kind::Indirect;
+        word.text = p.text.section(QLatin1Char('.'), 0, -2);
+        const std::uint32_t changed = temp(p.type);
+        emitMove(changed, read(word, false).operand, p.type);
+        instr(typedOp(op::SetBit, vtOf(*p.type)), changed, materialize(v), 0, static_cast<std::uint32_t>(p.bit));
+        store(word, operandValue(changed, p.type), at);
+        return;
+    }
     if (p.kind == Place::Kind::Direct) {
         if (v.kind == Value::Kind::Operand && v.operand == p.operand)
             return;
@@ -546,7 +563,7 @@ void Codegen::store(const Place &p, Value value, SourceLocation at)
     if (p.kind == Place::Kind::IndirectBit || p.type->kind == TypeKind::String) {
         Place direct = p;
         direct.kind = Place::Kind::Indirect;
-        const Value current = read(direct);
+        const Value current = read(direct, false); // p.operand is needed for the store below
         if (p.kind == Place::Kind::IndirectBit)
             instr(typedOp(op::SetBit, vtOf(*p.type)), current.operand, materialize(v), 0, static_cast<std::uint32_t>(p.bit));
         else

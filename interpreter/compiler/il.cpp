@@ -40,6 +40,7 @@ void Codegen::compileIl(const std::vector<IlInstruction> &list)
         const char *op;
         Value saved;
         SourceLocation location;
+        bool negate = false; // ANDN( ... ): the result of the brackets is negated
     };
     std::vector<Deferred> stack;
     Value current;
@@ -143,8 +144,8 @@ void Codegen::compileIl(const std::vector<IlInstruction> &list)
                     emitMove(copy, saved.operand, saved.type);
                     saved = Codegen::operandValue(copy, saved.type);
                 }
-                stack.push_back({stOp, saved, ins.location});
-                current = ins.operand ? operandValue(ins, negated) : Value{};
+                stack.push_back({stOp, saved, ins.location, negated});
+                current = ins.operand ? operandValue(ins, false) : Value{};
                 continue;
             }
             current = binary(QLatin1String(stOp), current, operandValue(ins, negated), ins.location);
@@ -156,7 +157,7 @@ void Codegen::compileIl(const std::vector<IlInstruction> &list)
             const Deferred d = stack.back();
             stack.pop_back();
             if (needCurrent(ins))
-                current = binary(QLatin1String(d.op), d.saved, current, d.location);
+                current = binary(QLatin1String(d.op), d.saved, d.negate ? unary(QStringLiteral("NOT"), current, d.location) : current, d.location);
         } else if (op == QLatin1String("NOT")) {
             if (needCurrent(ins))
                 current = unary(QStringLiteral("NOT"), current, ins.location);
@@ -200,6 +201,10 @@ void Codegen::compileIl(const std::vector<IlInstruction> &list)
             input.value = current;
             input.location = ins.location;
             callFunctionBlock(instance, {input}, ins.location);
+        } else if (!ins.operand && !ins.callArgs.empty() && !ins.openParen) {
+            // A function with a formal argument list: the arguments are all it takes.
+            current = callNamed(op, nullptr, arguments(ins.callArgs), ins.location, false, nullptr);
+            quiet = !current.valid();
         } else {
             // A function: the current result is its first argument, the operands the others.
             if (!needCurrent(ins))

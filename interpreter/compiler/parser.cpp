@@ -183,8 +183,12 @@ private:
     void unexpected(const QString &expected)
     {
         if (!atEnd() && tok().kind == TokenKind::Error) {
-            error(here(), QCoreApplication::translate("iec::interp::Compiler", "'%1' is not valid IEC 61131-3 text.").arg(text().toString()),
-                  badTokenHint(text()));
+            const QStringView bad = text();
+            if (bad.startsWith(QLatin1Char('\'')) || bad.startsWith(QLatin1Char('"')))
+                error(here(), QCoreApplication::translate("iec::interp::Compiler", "This string is not closed on its line."), badTokenHint(bad));
+            else
+                error(here(), QCoreApplication::translate("iec::interp::Compiler", "'%1' is not valid IEC 61131-3 text.").arg(bad.toString()),
+                      badTokenHint(bad));
             return;
         }
         error(here(), QCoreApplication::translate("iec::interp::Compiler", "Expected %1 but found %2.").arg(expected, describeCurrent()));
@@ -246,6 +250,38 @@ private:
             || isWord("UNTIL") || isWord("VAR") || w.startsWith(QLatin1String("VAR_"), Qt::CaseInsensitive)
             || isPouStart();
     }
+    // END_FI, END_WHIL: an identifier where a block ends, most likely a misspelled END_ word.
+    bool isMisspelledEnd() const
+    {
+        return !atEnd() && tok().kind == TokenKind::Identifier && text().startsWith(QLatin1String("END_"), Qt::CaseInsensitive);
+    }
+    // The keyword a misspelled word most likely stands for (one letter added, missing, changed or
+    // two swapped), for a hint; empty when none is that close.
+    static QString nearKeyword(QStringView word)
+    {
+        static constexpr std::string_view keywords[] = {"IF", "ELSIF", "ELSE", "CASE", "FOR", "WHILE", "REPEAT", "UNTIL", "EXIT", "RETURN"};
+        const QString w = word.toString().toUpper();
+        for (const std::string_view k : keywords) {
+            const QString kw = QString::fromLatin1(k.data(), qsizetype(k.size()));
+            if (editDistanceAtMostOne(w, kw))
+                return kw;
+        }
+        return {};
+    }
+    static bool editDistanceAtMostOne(const QString &a, const QString &b)
+    {
+        if (a == b || std::abs(a.size() - b.size()) > 1)
+            return a == b;
+        qsizetype i = 0;
+        while (i < a.size() && i < b.size() && a[i] == b[i])
+            ++i;
+        if (a.size() == b.size()) {
+            if (i + 1 < a.size() && a[i] == b[i + 1] && a[i + 1] == b[i] && a.mid(i + 2) == b.mid(i + 2))
+                return true; // two letters swapped
+            return a.mid(i + 1) == b.mid(i + 1);
+        }
+        return a.size() > b.size() ? a.mid(i + 1) == b.mid(i) : a.mid(i) == b.mid(i + 1);
+    }
     bool isStatementKeyword() const
     {
         return isWord("IF") || isWord("CASE") || isWord("FOR") || isWord("WHILE") || isWord("REPEAT")
@@ -289,7 +325,8 @@ private:
     Stmt forStatement();
     Stmt whileStatement();
     Stmt repeatStatement();
-    void closeBlock(std::string_view endWord, const char *blockName, SourceLocation opened);
+    void closeBlock(std::string_view endWord, const char *blockName, SourceLocation opened, const QString &hint = {});
+    void recoverMisspelledBlock();
     void endStatement();
 
     // ---- expressions ----
@@ -390,7 +427,13 @@ void Parser::pou(CompilationUnit &unit)
             p.body.sfc->actions.push_back(std::move(action));
         p.actions.clear();
     }
-    if (!acceptWord(end)) {
+    if (acceptWord(end)) {
+        // closed
+    } else if (isMisspelledEnd()) {
+        error(here(), QCoreApplication::translate("iec::interp::Compiler", "Expected %1 but found '%2'.").arg(QString::fromLatin1(end.data(), qsizetype(end.size())), text().toString()));
+        ++m_pos;
+        m_recovering = false;
+    } else {
         error(p.location, QCoreApplication::translate("iec::interp::Compiler", "%1 has no %2.").arg(p.name, QString::fromLatin1(end.data(), qsizetype(end.size()))),
               QCoreApplication::translate("iec::interp::Compiler", "add %1 after its last statement").arg(QString::fromLatin1(end.data(), qsizetype(end.size()))));
         while (!atEnd() && !isPouStart())
@@ -719,7 +762,12 @@ Body Parser::body(std::initializer_list<std::string_view> ends)
     } else {
         b.language = Language::ST;
         b.statements = statements();
-        if (!isEnd(ends) && !atEnd()) {
+        // A misspelled END_PROGRAM that ends the text or comes before the next POU: the POU reports it.
+        const auto pouStartsAt = [&](size_t ahead) {
+            static constexpr std::string_view starts[] = {"PROGRAM", "FUNCTION", "FUNCTION_BLOCK", "TYPE", "CONFIGURATION", "ACTION"};
+            return atEnd(ahead) || std::any_of(std::begin(starts), std::end(starts), [&](std::string_view w) { return equalsUpper(text(ahead), w); });
+        };
+        if (!isEnd(ends) && !atEnd() && !(isMisspelledEnd() && pouStartsAt(1))) {
             unexpected(QCoreApplication::translate("iec::interp::Compiler", "a statement"));
             while (!isEnd(ends) && !isPouStart())
                 ++m_pos;
@@ -870,7 +918,7 @@ void Parser::sfcTransition(SfcChart &chart)
 bool Parser::isStatementListEnd() const
 {
     return atEnd() || isBlockWord() || isWord("ACTION") || isWord("STEP") || isWord("INITIAL_STEP")
-        || isWord("TRANSITION");
+        || isWord("TRANSITION") || isMisspelledEnd();
 }
 
 std::vector<Stmt> Parser::statements()
@@ -879,6 +927,10 @@ std::vector<Stmt> Parser::statements()
     while (!isStatementListEnd()) {
         const size_t before = m_pos;
         list.push_back(statement());
+        // A statement that reached its ';' after an error needs no skipping: the next one is
+        // read afresh, so that a second mistake on the next line is reported too.
+        if (m_recovering && m_pos > before && text(m_tokens[m_pos - 1]) == u";")
+            m_recovering = false;
         if (m_recovering)
             synchronize(true);
         if (m_pos == before) // never loop without progress
@@ -891,6 +943,10 @@ void Parser::endStatement()
 {
     if (acceptOp(u";"))
         return;
+    if (isOp(u")")) {
+        error(here(), QCoreApplication::translate("iec::interp::Compiler", "This ')' has no matching '('."));
+        return;
+    }
     error(afterPrevious(), QCoreApplication::translate("iec::interp::Compiler", "Missing ';' at the end of the statement."),
           QCoreApplication::translate("iec::interp::Compiler", "every ST statement ends with ';'"));
     // Carry on with the next statement when it clearly starts here, so one missing ';' gives
@@ -948,25 +1004,74 @@ Stmt Parser::statement()
         endStatement();
         return s;
     } else {
-        if (!m_recovering)
-            error(here(), QCoreApplication::translate("iec::interp::Compiler", "Expected ':=' or a call after '%1'.").arg(target.text));
+        if (!m_recovering) {
+            const QString keyword = target.kind == ExprKind::Name ? nearKeyword(target.text) : QString();
+            error(here(), QCoreApplication::translate("iec::interp::Compiler", "Expected ':=' or a call after '%1'.").arg(target.text),
+                  keyword.isEmpty() ? QString() : QCoreApplication::translate("iec::interp::Compiler", "did you mean %1?").arg(keyword));
+        }
+        if (target.kind == ExprKind::Name)
+            recoverMisspelledBlock();
         return s;
     }
     endStatement();
     return s;
 }
 
-void Parser::closeBlock(std::string_view endWord, const char *blockName, SourceLocation opened)
+void Parser::closeBlock(std::string_view endWord, const char *blockName, SourceLocation opened, const QString &hint)
 {
     if (acceptWord(endWord)) {
         acceptOp(u";");
         return;
     }
     const QString end = QString::fromLatin1(endWord.data(), static_cast<qsizetype>(endWord.size()));
+    if (isMisspelledEnd()) {
+        // END_FI: one message where the typo is, and the block ends there.
+        error(here(), QCoreApplication::translate("iec::interp::Compiler", "Expected %1 but found '%2'.").arg(end, text().toString()),
+              QCoreApplication::translate("iec::interp::Compiler", "the %1 of line %2 ends with %3").arg(QLatin1String(blockName)).arg(opened.line).arg(end));
+        ++m_pos;
+        acceptOp(u";");
+        m_recovering = false;
+        return;
+    }
     // Reported where the block starts: that is where the student has to look.
     error(opened, QCoreApplication::translate("iec::interp::Compiler", "This %1 has no matching %2.").arg(QLatin1String(blockName), end),
-          QCoreApplication::translate("iec::interp::Compiler", "add %1; after the last statement that belongs to it").arg(end));
+          hint.isEmpty() ? QCoreApplication::translate("iec::interp::Compiler", "add %1; after the last statement that belongs to it").arg(end) : hint);
     m_recovering = false;
+}
+
+void Parser::recoverMisspelledBlock()
+{
+    // "IFF a > 1 THEN ... END_IF": after the one message about the first word, the rest is read
+    // as the block it looks like, so that its body is still checked and its END_ word matched.
+    size_t k = m_pos;
+    while (k < m_tokens.size()) {
+        const QStringView w = text(m_tokens[k]);
+        if (w == u";" || (m_tokens[k].kind == TokenKind::Keyword && w.startsWith(QLatin1String("END_"), Qt::CaseInsensitive)))
+            return;
+        const bool then = equalsUpper(w, "THEN"), doWord = equalsUpper(w, "DO");
+        if (m_tokens[k].kind == TokenKind::Keyword && (then || doWord)) {
+            m_pos = k + 1;
+            m_recovering = false;
+            statements();
+            while (then && (isWord("ELSIF") || isWord("ELSE"))) {
+                const bool elsif = isWord("ELSIF");
+                ++m_pos;
+                if (elsif) {
+                    expression();
+                    if (!acceptWord("THEN"))
+                        unexpected(QStringLiteral("THEN"));
+                }
+                if (m_recovering)
+                    synchronize(true);
+                statements();
+            }
+            if (then ? acceptWord("END_IF") : (acceptWord("END_WHILE") || acceptWord("END_FOR")))
+                acceptOp(u";");
+            m_recovering = false;
+            return;
+        }
+        ++k;
+    }
 }
 
 Stmt Parser::ifStatement()
@@ -990,11 +1095,14 @@ Stmt Parser::ifStatement()
         branch.body = statements();
         s.branches.push_back(std::move(branch));
     } while (isWord("ELSIF"));
+    bool elseIf = false;
     if (acceptWord("ELSE")) {
         s.hasElse = true;
+        elseIf = isWord("IF");
         s.body = statements();
     }
-    closeBlock("END_IF", "IF", opened);
+    closeBlock("END_IF", "IF", opened,
+               elseIf ? QCoreApplication::translate("iec::interp::Compiler", "ELSE IF opens a second IF that needs its own END_IF; write ELSIF instead") : QString());
     return s;
 }
 
@@ -1008,7 +1116,7 @@ bool Parser::isCaseLabelStart() const
         next = 2;
     const TokenKind literal = tok(next - 1).kind;
     if (literal == TokenKind::IntegerLiteral || (next == 2 && tok(1).kind == TokenKind::IntegerLiteral))
-        return isOp(u":", next) || isOp(u",", next) || isOp(u"..", next);
+        return true; // no statement starts with a number: a label, perhaps without its ':'
     if (k == TokenKind::Identifier) {
         // Red:, and CODESYS's qualified Color.Red:
         size_t after = 1;
@@ -1043,7 +1151,8 @@ Stmt Parser::caseStatement()
                 label.high = expression();
             branch.labels.push_back(std::move(label));
         } while (acceptOp(u","));
-        expectOp(u":", QCoreApplication::translate("iec::interp::Compiler", "':' after the case label"));
+        if (!expectOp(u":", QCoreApplication::translate("iec::interp::Compiler", "':' after the case label")))
+            m_recovering = false; // the statements after it are still read
         while (!atEnd() && !isCaseLabelStart() && !isStatementListEnd()) {
             const size_t before = m_pos;
             branch.body.push_back(statement());
@@ -1227,6 +1336,9 @@ Expr Parser::primary()
     }
     if (t.kind == TokenKind::Error)
         unexpected(QString());
+    else if (isOp(u"=") && m_pos > 0 && text(m_tokens[m_pos - 1]) == u"=")
+        error(here(), QCoreApplication::translate("iec::interp::Compiler", "Expected a value, a variable or a function call but found '='."),
+              QCoreApplication::translate("iec::interp::Compiler", "IEC 61131-3 compares with a single '='"));
     else
         unexpected(QCoreApplication::translate("iec::interp::Compiler", "a value, a variable or a function call"));
     return e;
@@ -1332,6 +1444,21 @@ std::vector<IlInstruction> Parser::ilInstructions(std::initializer_list<std::str
             }
         }
         const Token opToken = tok();
+        // An IL line never ends with ';' and an IL operator is never followed by ':=', '[' or '.'.
+        size_t lineEnd = m_pos;
+        while (lineEnd + 1 < m_tokens.size() && lineOf(m_tokens[lineEnd + 1]) == lineOf(opToken))
+            ++lineEnd;
+        const bool endsWithSemicolon = text(m_tokens[lineEnd]) == u";";
+        if (isWord("IF") || isWord("FOR") || isWord("WHILE") || isWord("CASE") || isWord("REPEAT") || endsWithSemicolon
+            || (isName() && (isOp(u":=", 1) || isOp(u"[", 1) || isOp(u".", 1)))) {
+            // ST inside an IL body: one message, and the rest of the body is not read as IL.
+            error(here(), QCoreApplication::translate("iec::interp::Compiler", "This is ST, but the body is written in IL; a body uses one language."),
+                  QCoreApplication::translate("iec::interp::Compiler", "write it in IL (LD, ST, JMPC ...) or write the whole body in ST"));
+            while (!atEnd() && !isEnd(ends) && !isPouStart() && !isWord("ACTION"))
+                ++m_pos;
+            m_recovering = false;
+            break;
+        }
         if (isOp(u")")) {
             ins.op = QStringLiteral(")");
             ++m_pos;
@@ -1344,6 +1471,17 @@ std::vector<IlInstruction> Parser::ilInstructions(std::initializer_list<std::str
             m_recovering = false;
             if (m_pos == before)
                 ++m_pos;
+            continue;
+        }
+        const bool formalCall = opToken.kind == TokenKind::Identifier && ilOperandFollows(opToken) && isOp(u"(")
+            && (isOp(u")", 1) || ((isName(1) || (!atEnd(1) && isWordToken(tok(1)))) && (isOp(u":=", 2) || isOp(u"=>", 2))));
+        if (formalCall) {
+            // LIMIT( MN := 1, IN := x, MX := 5 ): a function with a formal argument list, which may
+            // span lines; the current result is not one of its arguments.
+            ++m_pos;
+            ins.callArgs = callArguments();
+            m_recovering = false;
+            list.push_back(std::move(ins));
             continue;
         }
         if (ilOperandFollows(opToken) && acceptOp(u"(")) {

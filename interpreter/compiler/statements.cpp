@@ -1,5 +1,6 @@
 // ST statements.
 #include "interpreter/compiler/codegen.h"
+#include "interpreter/compiler/typeutil.h"
 
 #include <QCoreApplication>
 
@@ -18,6 +19,41 @@ Value Codegen::condition(const Expr &expr)
         return {};
     }
     return v;
+}
+
+void Codegen::warnForLoopEnd(const Stmt &s, const Place &counter, const Value &start, const ConstValue &end, const ConstValue &step, bool up)
+{
+    if (end.kind != ConstValue::Kind::Int || step.kind != ConstValue::Kind::Int || end.bigUnsigned || step.bigUnsigned || step.i == 0)
+        return;
+    // The loop ends when the counter passes the end value. The value that passes it: exact when
+    // the start is known, else at least one beyond the end.
+    __int128 passing = static_cast<__int128>(end.i) + (up ? 1 : -1);
+    bool exact = step.i == 1 || step.i == -1;
+    if (start.kind == Value::Kind::Constant && start.constant.kind == ConstValue::Kind::Int && !start.constant.bigUnsigned) {
+        const __int128 first = start.constant.i;
+        if (up ? first > end.i : first < end.i)
+            return; // never runs
+        passing = first + ((static_cast<__int128>(end.i) - first) / step.i + 1) * step.i;
+        exact = true;
+    }
+    const Type *type = counter.type;
+    if (type->subrange) {
+        const auto [low, high] = *type->subrange;
+        if (passing > high || passing < low)
+            warning(s.location, (exact ? QCoreApplication::translate("iec::interp::Compiler",
+                                                                     "This FOR loop ends by setting %1 to %2, outside its range %3..%4, which stops the program.")
+                                       : QCoreApplication::translate("iec::interp::Compiler",
+                                                                     "This FOR loop ends by setting %1 beyond %2, outside its range %3..%4, which stops the program."))
+                                    .arg(counter.text).arg(static_cast<qlonglong>(exact ? passing : end.i)).arg(low).arg(high),
+                    QCoreApplication::translate("iec::interp::Compiler", "give %1 a type with room for the value that ends the loop").arg(counter.text));
+        return;
+    }
+    const IntRange r = rangeOf(type->elem);
+    if (passing > static_cast<__int128>(r.high) || passing < static_cast<__int128>(r.low))
+        warning(s.location, QCoreApplication::translate("iec::interp::Compiler",
+                                                        "This FOR loop never ends: %1 wraps around before it can pass %2.")
+                                .arg(counter.text).arg(end.i),
+                QCoreApplication::translate("iec::interp::Compiler", "use a larger type than %1 for %2").arg(typeName(type), counter.text));
 }
 
 void Codegen::compileStatements(const std::vector<Stmt> &list)
@@ -89,17 +125,39 @@ void Codegen::compileStatement(const Stmt &s)
             break;
         }
         std::vector<std::uint32_t> toEnd;
+        struct Seen {
+            std::int64_t low, high;
+            int line;
+        };
+        std::vector<Seen> seen; // constant labels so far: a value handled twice runs the first branch only
         for (const CaseBranch &branch : s.cases) {
             std::vector<std::uint32_t> toBody;
             for (const CaseLabel &label : branch.labels) {
                 const Value low = compileExpr(label.low);
+                const Value high = label.high ? compileExpr(*label.high) : low;
+                if (low.kind == Value::Kind::Constant && high.kind == Value::Kind::Constant && low.constant.kind == ConstValue::Kind::Int
+                    && high.constant.kind == ConstValue::Kind::Int) {
+                    for (const Seen &earlier : seen) {
+                        if (low.constant.i <= earlier.high && high.constant.i >= earlier.low) {
+                            const std::int64_t value = std::max(low.constant.i, earlier.low);
+                            QString shown = QString::number(value);
+                            for (size_t e = 0; selector.type->kind == TypeKind::Enum && e < selector.type->enumValues.size(); ++e) {
+                                if (selector.type->enumValues[e] == value)
+                                    shown = selector.type->enumNames[qsizetype(e)];
+                            }
+                            warning(label.low.location, QCoreApplication::translate("iec::interp::Compiler", "The case value %1 is already handled on line %2; only the first branch runs for it.")
+                                                            .arg(shown).arg(earlier.line));
+                            break;
+                        }
+                    }
+                    seen.push_back({low.constant.i, high.constant.i, label.low.location.line});
+                }
                 if (!label.high) {
                     const Value eq = binary(QStringLiteral("="), selector, low, label.low.location);
                     if (eq.kind == Value::Kind::Operand)
                         toBody.push_back(branchIf(eq, true));
                     continue;
                 }
-                const Value high = compileExpr(*label.high);
                 const Value ge = binary(QStringLiteral(">="), selector, low, label.low.location);
                 const Value le = binary(QStringLiteral("<="), selector, high, label.high->location);
                 const Value both = binary(QStringLiteral("AND"), ge, le, label.low.location);
@@ -127,7 +185,8 @@ void Codegen::compileStatement(const Stmt &s)
             error(s.target.location, QCoreApplication::translate("iec::interp::Compiler", "The FOR loop needs an integer variable as its counter."));
             break;
         }
-        store(counter, compileExpr(s.value), s.value.location);
+        const Value start = compileExpr(s.value);
+        store(counter, start, s.value.location);
         const Type *type = counter.type;
         // The end and the step are evaluated once, before the loop.
         Value end = coerce(compileExpr(*s.to), type, s.to->location, QCoreApplication::translate("iec::interp::Compiler", "(the end value)"));
@@ -157,6 +216,8 @@ void Codegen::compileStatement(const Stmt &s)
             // The direction is known. A guard skips the loop when it does not start; each round
             // then ends in one instruction that steps the counter and jumps back while it holds.
             const bool up = step.constant.i > 0 && !step.constant.bigUnsigned;
+            if (end.kind == Value::Kind::Constant)
+                warnForLoopEnd(s, counter, start, end.constant, step.constant, up);
             const std::uint32_t guard = branchIf(binary(up ? QStringLiteral(">") : QStringLiteral("<"), read(counter), end, s.location), true);
             const std::uint32_t top = here();
             markTarget(top);
@@ -164,7 +225,14 @@ void Codegen::compileStatement(const Stmt &s)
             compileStatements(s.body);
             const std::uint32_t continueTarget = here();
             markLine(s.location);
-            instr(typedOp(up ? op::IncBrLe : op::IncBrGe, vtOf(*type)), counter.operand, materialize(step), materialize(end), top);
+            if (type->subrange) {
+                // Every value the counter takes is checked, the one past the end value too (as
+                // CODESYS calls its range check on each step): one fused step cannot check.
+                store(counter, binary(QStringLiteral("+"), read(counter), step, s.location), s.location);
+                branchIf(binary(up ? QStringLiteral("<=") : QStringLiteral(">="), read(counter), end, s.location), true, top);
+            } else {
+                instr(typedOp(up ? op::IncBrLe : op::IncBrGe, vtOf(*type)), counter.operand, materialize(step), materialize(end), top);
+            }
             patchJump(guard, here());
             for (const std::uint32_t j : m_loops.back().exits)
                 patchJump(j, here());
@@ -180,7 +248,10 @@ void Codegen::compileStatement(const Stmt &s)
         compileStatements(s.body);
         const std::uint32_t continueTarget = here();
         markLine(s.location);
-        binary(QStringLiteral("+"), read(counter), step, s.location, &counter);
+        if (type->subrange)
+            store(counter, binary(QStringLiteral("+"), read(counter), step, s.location), s.location);
+        else
+            binary(QStringLiteral("+"), read(counter), step, s.location, &counter);
         patchJump(toTest, here());
         const Value counterValue = read(counter);
         ConstValue zero;

@@ -6,6 +6,7 @@
 #include <QCoreApplication>
 #include <QRegularExpression>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -132,8 +133,40 @@ Value compareChain(Codegen &g, const char *op, std::vector<Value> &args, SourceL
     return result;
 }
 
+bool allLiterals(const std::vector<Value> &values)
+{
+    return std::all_of(values.begin(), values.end(), [](const Value &v) { return v.untyped && v.kind == Value::Kind::Constant; });
+}
+
+// A literal's type from where it goes: s := MUX(k, 1, 2) with s : SINT makes the literals SINT
+// (commonOf would make them INT, which a SINT cannot take). nullptr when that does not apply.
+const Type *literalsTypeFrom(const std::vector<Value> &values, const Place *destination)
+{
+    const Type *to = destination ? destination->type : nullptr;
+    if (!to || to->kind != TypeKind::Elementary || !(isIntegral(to) || isReal(to) || (isBits(to) && to->elem != Elem::Bool)) || !allLiterals(values))
+        return nullptr;
+    for (const Value &v : values) {
+        const bool integer = v.constant.kind == ConstValue::Kind::Int;
+        if ((integer && !isReal(to) && !fits(v.constant, to->elem)) || (!integer && !isReal(to)))
+            return nullptr;
+    }
+    return to;
+}
+
 Value minMax(Codegen &g, bool max, std::vector<Value> &args, SourceLocation at)
 {
+    if (allLiterals(args)) {
+        // MAX(1, 2) of literals is the literal 2, which then fits any number type it is given to.
+        size_t chosen = 0;
+        for (size_t i = 1; i < args.size(); ++i) {
+            const Value greater = g.binary(QStringLiteral(">"), args[i], args[chosen], at);
+            if (!greater.valid() || greater.kind != Value::Kind::Constant)
+                return {};
+            if ((greater.constant.i != 0) == max)
+                chosen = i;
+        }
+        return args[chosen];
+    }
     const Type *type = commonOf(g, args, 0, max ? "MAX" : "MIN", at);
     if (!type)
         return {};
@@ -160,9 +193,16 @@ Value minMax(Codegen &g, bool max, std::vector<Value> &args, SourceLocation at)
 }
 
 // SEL and MUX: evaluate all inputs (IEC evaluates every argument), then pick one.
-Value select(Codegen &g, const Value &selector, std::vector<Value> inputs, const char *name, SourceLocation at)
+Value select(Codegen &g, const Value &selector, std::vector<Value> inputs, const char *name, SourceLocation at, const Place *destination)
 {
-    const Type *type = commonOf(g, inputs, 0, name, at);
+    if (selector.kind == Value::Kind::Constant && allLiterals(inputs)) {
+        // SEL(TRUE, 1, 2) of literals is the literal 2.
+        const std::int64_t k = selector.constant.i;
+        if (k >= 0 && k < std::int64_t(inputs.size()))
+            return inputs[size_t(k)];
+    }
+    const Type *fromDestination = literalsTypeFrom(inputs, destination);
+    const Type *type = fromDestination ? fromDestination : commonOf(g, inputs, 0, name, at);
     if (!type)
         return {};
     for (Value &v : inputs) {
@@ -195,11 +235,36 @@ Value select(Codegen &g, const Value &selector, std::vector<Value> inputs, const
     return g.operandValue(out, type);
 }
 
-Value shift(Codegen &g, std::uint16_t family, const char *name, std::vector<Value> &args, SourceLocation at)
+// SHL(1, 3) of literals is a literal (8), which then fits any bit string it is given to.
+std::optional<Value> foldLiteralShift(Codegen &g, std::uint16_t family, const Value &in, const Value &n)
+{
+    if ((family != op::Shl && family != op::Shr) || !in.untyped || in.kind != Value::Kind::Constant || in.constant.kind != ConstValue::Kind::Int
+        || n.kind != Value::Kind::Constant || n.constant.kind != ConstValue::Kind::Int || (in.constant.i < 0 && !in.constant.bigUnsigned)
+        || n.constant.i < 0)
+        return std::nullopt;
+    const auto bits = static_cast<std::uint64_t>(in.constant.i);
+    const auto count = static_cast<std::uint64_t>(n.constant.i);
+    const std::uint64_t result = count >= 64 ? 0 : family == op::Shl ? bits << count : bits >> count;
+    ConstValue c;
+    c.kind = ConstValue::Kind::Int;
+    c.i = static_cast<std::int64_t>(result);
+    c.bigUnsigned = result > std::uint64_t(INT64_MAX);
+    return g.constantValue(g.elem(Elem::LInt), c, true);
+}
+
+Value shift(Codegen &g, std::uint16_t family, const char *name, std::vector<Value> &args, SourceLocation at, const Place *destination)
 {
     Value in = args[0];
-    if (in.untyped)
-        in = g.coerce(in, g.elem(Elem::DWord), at);
+    if (const auto folded = foldLiteralShift(g, family, in, args[1]))
+        return *folded;
+    if (in.untyped) {
+        // A literal takes the width of the variable the result goes to (b := ROL(16#81, 1) rotates
+        // a BYTE), else a DWORD.
+        const Type *destinationType = destination ? destination->type : nullptr;
+        const bool toBits = destinationType && destinationType->kind == TypeKind::Elementary && isBits(destinationType)
+            && destinationType->elem != Elem::Bool && in.kind == Value::Kind::Constant && fits(in.constant, destinationType->elem);
+        in = g.coerce(in, toBits ? destinationType : g.elem(Elem::DWord), at);
+    }
     if (!in.valid())
         return {};
     if (!isBits(in.type) || in.type->elem == Elem::Bool) {
@@ -318,22 +383,22 @@ const std::vector<StdFunction> &table()
         };
         static const Shift shifts[] = {{"SHL", op::Shl}, {"SHR", op::Shr}, {"ROL", op::Rol}, {"ROR", op::Ror}};
         for (const Shift &s : shifts) {
-            t.push_back({s.name, {"IN", "N"}, false, [&s](Codegen &g, std::vector<Value> &a, SourceLocation at, const Place *) {
-                             return shift(g, s.family, s.name, a, at);
+            t.push_back({s.name, {"IN", "N"}, false, [&s](Codegen &g, std::vector<Value> &a, SourceLocation at, const Place *d) {
+                             return shift(g, s.family, s.name, a, at, d);
                          }});
         }
-        t.push_back({"SEL", {"G", "IN0", "IN1"}, false, [](Codegen &g, std::vector<Value> &a, SourceLocation at, const Place *) {
+        t.push_back({"SEL", {"G", "IN0", "IN1"}, false, [](Codegen &g, std::vector<Value> &a, SourceLocation at, const Place *d) {
                          const Value selector = g.coerce(a[0], g.boolType(), at, QCoreApplication::translate("iec::interp::Compiler", "(the G input of SEL)"));
                          if (!selector.valid())
                              return Value{};
-                         return select(g, selector, {a[1], a[2]}, "SEL", at);
+                         return select(g, selector, {a[1], a[2]}, "SEL", at, d);
                      }});
-        t.push_back({"MUX", {"K", "IN"}, true, [](Codegen &g, std::vector<Value> &a, SourceLocation at, const Place *) {
+        t.push_back({"MUX", {"K", "IN"}, true, [](Codegen &g, std::vector<Value> &a, SourceLocation at, const Place *d) {
                          if (!a[0].untyped && !isIntegral(a[0].type)) {
                              g.error(at, QCoreApplication::translate("iec::interp::Compiler", "The selector K of MUX must be an integer."));
                              return Value{};
                          }
-                         return select(g, a[0], std::vector<Value>(a.begin() + 1, a.end()), "MUX", at);
+                         return select(g, a[0], std::vector<Value>(a.begin() + 1, a.end()), "MUX", at, d);
                      }});
         t.push_back({"MAX", {"IN1", "IN2"}, true, [](Codegen &g, std::vector<Value> &a, SourceLocation at, const Place *) {
                          return minMax(g, true, a, at);
@@ -513,13 +578,36 @@ std::optional<Value> Codegen::standardFunction(const QString &name, std::vector<
         Value result = operandValue(out, work);
         return toBinary ? convertExplicit(result, to, at) : result;
     };
+    static constexpr Elem bitsOfSize[] = {Elem::Byte, Elem::Byte, Elem::Word, Elem::Word, Elem::DWord, Elem::DWord, Elem::DWord, Elem::DWord, Elem::LWord};
     if (const auto m = legacyBcd.match(name); m.hasMatch() && !name.contains(QLatin1String("_TO_BCD_"))) {
         // INT_TO_BCD: the bit string of the same size holding the BCD digits.
         const Type *from = namedType(m.captured(1), at, false);
         if (from && isIntegral(from) && single("INT_TO_BCD")) {
-            static constexpr Elem bitsOfSize[] = {Elem::Byte, Elem::Byte, Elem::Word, Elem::Word, Elem::DWord, Elem::DWord, Elem::DWord, Elem::DWord, Elem::LWord};
             const Value v = coerce(args[0], from, at);
             return bcd(v, elem(bitsOfSize[from->size]), false);
+        }
+        // WORD_TO_BCD: a bit string read as a binary number, written back in BCD digits.
+        if (from && isBits(from) && from->elem != Elem::Bool && single(qPrintable(name)))
+            return bcd(coerce(args[0], from, at), from, false);
+    }
+    static const QRegularExpression genericBcd(QStringLiteral("^BCD_TO_([A-Z]+)$"));
+    if (const auto m = genericBcd.match(name); m.hasMatch()) {
+        // BCD_TO_INT(w): the BCD digits of any bit string as a number (a literal is taken as
+        // the bit string of the result's size: BCD_TO_INT(16#1234) reads a WORD).
+        const Type *to = namedType(m.captured(1), at, false);
+        if (to && (isIntegral(to) || (isBits(to) && to->elem != Elem::Bool))) {
+            if (!single(qPrintable(name)))
+                return Value{};
+            Value v = args[0];
+            if (v.valid() && v.untyped)
+                v = coerce(v, elem(bitsOfSize[to->size]), at);
+            if (!v.valid())
+                return Value{};
+            if (!isBits(v.type) || v.type->elem == Elem::Bool) {
+                error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 needs a bit string holding BCD digits.").arg(name));
+                return Value{};
+            }
+            return bcd(v, to, true);
         }
     }
     if (const auto m = conversion.match(name); m.hasMatch()) {

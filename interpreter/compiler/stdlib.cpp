@@ -1,6 +1,8 @@
 // The standard function blocks, written in ST and compiled with the user's program. Timers
 // read the virtual clock through the intrinsic __SYSTIME(); the counters come in one version
-// per integer type from one template.
+// per integer type from one template. The bistables and counters also take the input names of
+// CODESYS V2.3 (SR: SET1, RESET; RS: SET, RESET1; CTU/CTUD: RESET; CTD/CTUD: LOAD), which the
+// editors propose, after the IEC inputs so positional calls keep the IEC order.
 #include "interpreter/compiler/compiler.h"
 #include "interpreter/compiler/parser.h"
 
@@ -10,15 +12,15 @@ namespace {
 
 const char *const kBistables = R"(
 FUNCTION_BLOCK SR
-VAR_INPUT S1 : BOOL; R : BOOL; END_VAR
+VAR_INPUT S1 : BOOL; R : BOOL; SET1 : BOOL; RESET : BOOL; END_VAR
 VAR_OUTPUT Q1 : BOOL; END_VAR
-Q1 := S1 OR (NOT R AND Q1);
+Q1 := S1 OR SET1 OR (NOT (R OR RESET) AND Q1);
 END_FUNCTION_BLOCK
 
 FUNCTION_BLOCK RS
-VAR_INPUT S : BOOL; R1 : BOOL; END_VAR
+VAR_INPUT S : BOOL; R1 : BOOL; SET : BOOL; RESET1 : BOOL; END_VAR
 VAR_OUTPUT Q1 : BOOL; END_VAR
-Q1 := NOT R1 AND (S OR Q1);
+Q1 := NOT (R1 OR RESET1) AND (S OR SET OR Q1);
 END_FUNCTION_BLOCK
 
 FUNCTION_BLOCK R_TRIG
@@ -39,13 +41,14 @@ END_FUNCTION_BLOCK
 )";
 
 // Counters: %1 is the name suffix ("" or "_DINT"...), %2 the counter type, %3 its maximum,
-// %4 its minimum.
+// %4 its minimum. CU and CD count on rising edges (R_EDGE in the standard): in CTUD, a rising
+// edge on both in the same call leaves CV unchanged, even while the other input stays TRUE.
 const char *const kCounters = R"(
 FUNCTION_BLOCK CTU%1
-VAR_INPUT CU : BOOL; R : BOOL; PV : %2; END_VAR
+VAR_INPUT CU : BOOL; R : BOOL; PV : %2; RESET : BOOL; END_VAR
 VAR_OUTPUT Q : BOOL; CV : %2; END_VAR
 VAR M : BOOL; END_VAR
-IF R THEN
+IF R OR RESET THEN
     CV := 0;
 ELSIF CU AND NOT M AND CV < %3 THEN
     CV := CV + 1;
@@ -55,10 +58,10 @@ Q := CV >= PV;
 END_FUNCTION_BLOCK
 
 FUNCTION_BLOCK CTD%1
-VAR_INPUT CD : BOOL; LD : BOOL; PV : %2; END_VAR
+VAR_INPUT CD : BOOL; LD : BOOL; PV : %2; LOAD : BOOL; END_VAR
 VAR_OUTPUT Q : BOOL; CV : %2; END_VAR
 VAR M : BOOL; END_VAR
-IF LD THEN
+IF LD OR LOAD THEN
     CV := PV;
 ELSIF CD AND NOT M AND CV > %4 THEN
     CV := CV - 1;
@@ -68,20 +71,20 @@ Q := CV <= 0;
 END_FUNCTION_BLOCK
 
 FUNCTION_BLOCK CTUD%1
-VAR_INPUT CU : BOOL; CD : BOOL; R : BOOL; LD : BOOL; PV : %2; END_VAR
+VAR_INPUT CU : BOOL; CD : BOOL; R : BOOL; LD : BOOL; PV : %2; RESET : BOOL; LOAD : BOOL; END_VAR
 VAR_OUTPUT QU : BOOL; QD : BOOL; CV : %2; END_VAR
-VAR MU : BOOL; MD : BOOL; END_VAR
-IF R THEN
+VAR MU : BOOL; MD : BOOL; UP : BOOL; DOWN : BOOL; END_VAR
+UP := CU AND NOT MU;
+DOWN := CD AND NOT MD;
+IF R OR RESET THEN
     CV := 0;
-ELSIF LD THEN
+ELSIF LD OR LOAD THEN
     CV := PV;
-ELSE
-    IF NOT (CU AND CD) THEN
-        IF CU AND NOT MU AND CV < %3 THEN
-            CV := CV + 1;
-        ELSIF CD AND NOT MD AND CV > %4 THEN
-            CV := CV - 1;
-        END_IF;
+ELSIF NOT (UP AND DOWN) THEN
+    IF UP AND CV < %3 THEN
+        CV := CV + 1;
+    ELSIF DOWN AND CV > %4 THEN
+        CV := CV - 1;
     END_IF;
 END_IF;
 MU := CU;
@@ -169,6 +172,7 @@ QString librarySource()
     };
     static const Counter counters[] = {
         {"", "INT", "32767", "-32768"},
+        {"_INT", "INT", "32767", "-32768"}, // the typed names of IEC 61131-3 ed. 3
         {"_DINT", "DINT", "2147483647", "-2147483648"},
         {"_LINT", "LINT", "9223372036854775807", "-9223372036854775807"},
         {"_UDINT", "UDINT", "4294967295", "0"},

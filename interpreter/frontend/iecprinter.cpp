@@ -4,6 +4,7 @@
 #include "interpreter/runtime/valueformat.h"
 #include "interpreter/sfc/sfctext.h"
 
+#include <QRegularExpression>
 #include <QTextStream>
 
 namespace iec::interp::frontend {
@@ -145,7 +146,14 @@ QString printTask(const model::Task &task)
 QString printProgramInstance(const model::PouInstance &instance, const QString &task)
 {
     const QString with = task.isEmpty() ? QString() : QStringLiteral(" WITH ") + task;
-    return QStringLiteral("PROGRAM %1%2 : %3;\n").arg(instance.name, with, instance.typeName);
+    if (!instance.typeName.isEmpty())
+        return QStringLiteral("PROGRAM %1%2 : %3;\n").arg(instance.name, with, instance.typeName);
+    // CODESYS 3.5 writes typeName="" and names the instance after its program (main), or after a
+    // program it generates and does not export (VisuElems.Visu_Prg), which is left out.
+    static const QRegularExpression identifier(QStringLiteral("^[A-Za-z_][A-Za-z0-9_]*$"));
+    if (identifier.match(instance.name).hasMatch())
+        return QStringLiteral("PROGRAM %1%2 : %1;\n").arg(instance.name, with);
+    return QStringLiteral("(* PROGRAM %1%2 has no program type in the file and was left out. *)\n").arg(instance.name, with);
 }
 
 QString printResource(const model::Resource &resource)

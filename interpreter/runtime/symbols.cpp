@@ -53,6 +53,12 @@ std::optional<VariableRef> resolveAddress(const Module &module, const QString &n
     return ref;
 }
 
+// The compiler names an enumeration declared inside a VAR section "enumeration".
+bool isAnonymousEnum(const Type &type)
+{
+    return type.name == QLatin1String("enumeration");
+}
+
 QString formatElementary(const Type *type, const std::uint8_t *p)
 {
     if (type->kind == TypeKind::Enum) {
@@ -61,8 +67,12 @@ QString formatElementary(const Type *type, const std::uint8_t *p)
         if (type->size == 2)
             v = load<std::int16_t>(p);
         for (size_t i = 0; i < type->enumValues.size(); ++i) {
-            if (type->enumValues[i] == v)
-                return type->name + QLatin1Char('#') + type->enumNames[qsizetype(i)];
+            if (type->enumValues[i] != v)
+                continue;
+            // An enumeration declared in place (x : (A, B)) has no name to qualify its values.
+            if (isAnonymousEnum(*type))
+                return type->enumNames[qsizetype(i)];
+            return type->name + QLatin1Char('#') + type->enumNames[qsizetype(i)];
         }
         return QString::number(v);
     }
@@ -72,8 +82,11 @@ QString formatElementary(const Type *type, const std::uint8_t *p)
     case Elem::Int: return formatInteger(load<std::int16_t>(p));
     case Elem::DInt: return formatInteger(load<std::int32_t>(p));
     case Elem::LInt: return formatInteger(load<std::int64_t>(p));
-    case Elem::USInt: case Elem::Byte: case Elem::Char: return formatUnsigned(load<std::uint8_t>(p));
-    case Elem::UInt: case Elem::Word: case Elem::WChar: return formatUnsigned(load<std::uint16_t>(p));
+    // CHAR and WCHAR as their literals: 'A', "A".
+    case Elem::Char: return formatString(QString(QChar(char16_t(load<std::uint8_t>(p)))));
+    case Elem::WChar: return formatWString(QString(QChar(load<char16_t>(p))));
+    case Elem::USInt: case Elem::Byte: return formatUnsigned(load<std::uint8_t>(p));
+    case Elem::UInt: case Elem::Word: return formatUnsigned(load<std::uint16_t>(p));
     case Elem::UDInt: case Elem::DWord: return formatUnsigned(load<std::uint32_t>(p));
     case Elem::ULInt: case Elem::LWord: return formatUnsigned(load<std::uint64_t>(p));
     case Elem::Real: return formatReal(load<float>(p));
@@ -218,6 +231,17 @@ std::optional<VariableRef> resolveSymbol(const Module &module, const QString &na
     }
     if (first || pos != name.size())
         return std::nullopt;
+    // A variable located at an input (start AT %IX0.0) is copied from the input image at the start
+    // of every cycle, so it is read and written there: --set Main.start=TRUE then reaches the program.
+    for (const LocatedVar &l : module.located) {
+        if (l.area == 'I' && l.offset == ref.offset && ref.bit < 0 && ref.type && ref.type->isElementary()
+            && (l.bit >= 0 ? ref.type->size == 1 : l.size == ref.type->size)) {
+            ref.imageArea = 'I';
+            ref.offset = l.byte;
+            ref.bit = l.bit;
+            break;
+        }
+    }
     return ref;
 }
 
@@ -303,6 +327,31 @@ std::optional<QString> writeLiteral(const VariableRef &ref, const QString &input
         return QStringLiteral("Only elementary variables and strings can be written.");
     const LiteralParts parts = splitTypedLiteral(text);
     const Elem e = type->elem;
+    if (type->kind == TypeKind::Enum) {
+        // Color#Red, Red or the value's number.
+        if (parts.typePrefix.isEmpty() || parts.typePrefix.compare(type->name, Qt::CaseInsensitive) == 0) {
+            for (size_t i = 0; i < type->enumValues.size(); ++i) {
+                if (parts.body.compare(type->enumNames[qsizetype(i)], Qt::CaseInsensitive) == 0) {
+                    const std::int64_t value = type->enumValues[i];
+                    std::memcpy(p, &value, type->size); // little endian: the low bytes
+                    return std::nullopt;
+                }
+            }
+        }
+        if (!parts.typePrefix.isEmpty() || !decodeInteger(parts.body))
+            return bad();
+    }
+    if ((e == Elem::Char || e == Elem::WChar) && type->kind == TypeKind::Elementary && parts.body.startsWith(e == Elem::Char ? u'\'' : u'"')) {
+        // 'A' (CHAR) or "A" (WCHAR): exactly one character.
+        const auto decoded = decodeString(parts.body);
+        if (!decoded || decoded->size() != 1)
+            return bad();
+        if (e == Elem::Char)
+            *p = static_cast<std::uint8_t>(decoded->front().unicode());
+        else
+            put<char16_t>(p, decoded->front().unicode());
+        return std::nullopt;
+    }
     if (e == Elem::Bool) {
         const QString upper = parts.body.toString().toUpper();
         bool value = false;

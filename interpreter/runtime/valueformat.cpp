@@ -23,23 +23,62 @@ QString formatUnsigned(std::uint64_t value)
     return QString::number(value);
 }
 
-QString formatReal(double value)
+namespace {
+
+// "1.5e+07" as plain digits, "15000000": the digits of the shortest form with the point moved, so a
+// float keeps its shortest digits (1e+15 is not written as the float's exact 999999986991104).
+QString withoutExponent(const QString &scientific)
+{
+    const qsizetype e = scientific.indexOf(QLatin1Char('e'));
+    const bool negative = scientific.startsWith(QLatin1Char('-'));
+    QString mantissa = scientific.mid(negative ? 1 : 0, e - (negative ? 1 : 0));
+    const int exponent = scientific.mid(e + 1).toInt();
+    qsizetype point = mantissa.indexOf(QLatin1Char('.'));
+    if (point < 0)
+        point = mantissa.size();
+    mantissa.remove(QLatin1Char('.'));
+    const qsizetype position = point + exponent; // digits before the point
+    QString text;
+    if (position <= 0)
+        text = QStringLiteral("0.") + QString(-position, QLatin1Char('0')) + mantissa;
+    else if (position >= mantissa.size())
+        text = mantissa + QString(position - mantissa.size(), QLatin1Char('0'));
+    else
+        text = mantissa.left(position) + QLatin1Char('.') + mantissa.mid(position);
+    return negative ? QLatin1Char('-') + text : text;
+}
+
+// Shortest round-trip text of a float or double; plain digits rather than 1e+06 for the
+// magnitudes a PLC program meets every day; always a '.' or an exponent.
+template <typename Real>
+QString formatFloating(Real value)
 {
     if (std::isnan(value))
         return QStringLiteral("NaN");
     if (std::isinf(value))
         return value > 0 ? QStringLiteral("+Inf") : QStringLiteral("-Inf");
     std::array<char, 64> buffer{};
-    // std::to_chars without a precision gives the shortest round-trip form.
-    auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-    // Plain digits read better than 1e+06 for magnitudes a PLC program meets every day.
-    const double magnitude = std::fabs(value);
-    if (std::find(buffer.data(), result.ptr, 'e') != result.ptr && magnitude >= 1e-5 && magnitude < 1e16)
-        result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value, std::chars_format::fixed);
+    // std::to_chars without a precision gives the shortest round-trip form of the type.
+    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
     QString text = QString::fromLatin1(buffer.data(), result.ptr - buffer.data());
+    const Real magnitude = std::fabs(value);
+    if (text.contains(QLatin1Char('e')) && magnitude >= Real(1e-5) && magnitude < Real(1e16))
+        text = withoutExponent(text);
     if (!text.contains(QLatin1Char('.')) && !text.contains(QLatin1Char('e')))
         text += QStringLiteral(".0");
     return text;
+}
+
+} // namespace
+
+QString formatReal(double value)
+{
+    return formatFloating(value);
+}
+
+QString formatReal(float value)
+{
+    return formatFloating(value);
 }
 
 QString formatDuration(std::int64_t nanoseconds)

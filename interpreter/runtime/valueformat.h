@@ -15,6 +15,8 @@ QString formatUnsigned(std::uint64_t value);
 // Shortest text that reads back to the same double; always has a '.' or an exponent so it
 // stays a REAL literal (1.0, not 1).
 QString formatReal(double value);
+// A REAL: the shortest text that reads back to the same float (0.1, not 0.10000000149011612).
+QString formatReal(float value);
 // TIME and LTIME: nanoseconds as T#1h2m3s4ms5us6ns with zero parts left out; T#0s for zero.
 QString formatDuration(std::int64_t nanoseconds);
 // DATE: D#2024-01-31; TIME_OF_DAY: TOD#12:30:00(.5); DATE_AND_TIME: DT#2024-01-31-12:30:00.

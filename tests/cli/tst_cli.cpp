@@ -18,6 +18,7 @@ private Q_SLOTS:
     void cycleTimeForms();
     void setAppliesAtItsCycleAndCsvTrace();
     void vcdTrace();
+    void vcdEscapesArrayElements();
     void namesByInstanceOrProgram_data();
     void namesByInstanceOrProgram();
     void programOptionRunsOneProgramAlone();
@@ -209,6 +210,25 @@ void TestCli::vcdTrace()
             "iecstudio-cli: Main.s is a STRING, which a VCD trace cannot show; trace it to a .csv file instead.\n"));
 }
 
+void TestCli::vcdEscapesArrayElements()
+{
+    // Main.a[2] written plainly reads as bit 2 of a vector Main.a in GTKWave: escaped identifier.
+    QTemporaryDir dir;
+    const QString file = writeFile(dir, QStringLiteral("array.st"),
+        QStringLiteral("PROGRAM Main\nVAR a : ARRAY[1..2] OF INT; m : ARRAY[0..1, 0..1] OF BOOL; END_VAR\n"
+                       "a[2] := a[2] - 1; m[1, 0] := TRUE;\nEND_PROGRAM\n"));
+    const QString vcd = dir.filePath(QStringLiteral("trace.vcd"));
+    const Result result = cli({QStringLiteral("run"), file, QStringLiteral("--watch"), QStringLiteral("Main.a[2]"),
+        QStringLiteral("--watch"), QStringLiteral("Main.m[1, 0]"), QStringLiteral("--trace"), vcd});
+    QCOMPARE(result.err, QString());
+    QCOMPARE(result.out, QStringLiteral("Main.a[2] = -1\nMain.m[1, 0] = TRUE\n"));
+    QCOMPARE(readAll(vcd),
+        QStringLiteral("$version iecstudio-cli run $end\n$timescale 1 us $end\n$scope module iecstudio $end\n"
+                       "$var wire 16 ! \\Main.a[2] $end\n$var wire 1 \" \\Main.m[1,_0] $end\n"
+                       "$upscope $end\n$enddefinitions $end\n#0\n$dumpvars\nb0 !\n0\"\n$end\n"
+                       "#10000\nb1111111111111111 !\n1\"\n"));
+}
+
 void TestCli::namesByInstanceOrProgram_data()
 {
     QTest::addColumn<QString>("name");
@@ -316,6 +336,20 @@ x := y;]]></xhtml:p></ST></body></pou></pous></types><instances><configurations/
   <types><dataTypes/><pous><pou name="P" pouType="program"><interface><localVars><variable name="x"><type><INT/></type></variable></localVars></interface>
   <body><FBD><outVariable localId="10000000012"><position x="200" y="10"/><connectionPointIn/><expression>x</expression></outVariable></FBD></body></pou></pous></types><instances><configurations/></instances></project>)")
         << 1 << QStringLiteral("FILE:P: error: Nothing is wired to the output 'x'. (hint: draw a wire to it) [localId 10000000012]\n");
+    // CODESYS 3.5 leaves typeName empty and names the instance after its program; its own
+    // visualisation program (VisuElems.Visu_Prg) is not in the file and is left out.
+    QTest::newRow("XML CODESYS program instances without typeName")
+        << QStringLiteral("codesys.xml") << QStringLiteral(R"(<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <fileHeader companyName="t" productName="t" productVersion="1" creationDateTime="2026-01-01T00:00:00"/>
+  <contentHeader name="t"><coordinateInfo><fbd><scaling x="1" y="1"/></fbd><ld><scaling x="1" y="1"/></ld><sfc><scaling x="1" y="1"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous><pou name="main" pouType="program"><interface><localVars><variable name="x"><type><INT/></type></variable></localVars></interface>
+  <body><ST><xhtml:p><![CDATA[x := x + 1;]]></xhtml:p></ST></body></pou></pous></types>
+  <instances><configurations><configuration name="SoftPLC"><resource name="Application">
+  <task name="Task" interval="PT0.02S" priority="1"><pouInstance name="main" typeName=""/></task>
+  <task name="VISU_TASK" interval="PT0.1S" priority="31"><pouInstance name="VisuElems.Visu_Prg" typeName=""/></task>
+  </resource></configuration></configurations></instances></project>)")
+        << 0 << QString();
     QTest::newRow("not XML") << QStringLiteral("broken.xml") << QStringLiteral("<project") << 1 << QString();
 }
 
