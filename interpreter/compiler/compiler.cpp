@@ -23,7 +23,7 @@ bool sameShape(const Type *a, const Type *b)
     if (!a || !b || a->kind != b->kind)
         return false;
     switch (a->kind) {
-    case TypeKind::Elementary: return a->elem == b->elem && a->subrange == b->subrange;
+    case TypeKind::Elementary: return a->elem == b->elem; // a subrange may be declared on either side
     case TypeKind::String: return a->capacity == b->capacity && a->wide == b->wide;
     case TypeKind::Array: {
         if (a->dims.size() != b->dims.size())

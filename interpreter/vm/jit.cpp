@@ -83,8 +83,11 @@ std::unique_ptr<JitProgram> JitProgram::compile(const Module &module)
     std::unique_ptr<JitProgram> program(new JitProgram);
     for (const Region &region : regions) {
         RegionTranslator translator(module, emitter, region);
-        if (!translator.translate())
-            return nullptr; // describe() promised more than the translator does: run interpreted
+        if (!translator.translate()) {
+            // describe() promised more than the translator does: a bug; run interpreted.
+            Q_ASSERT_X(false, "JitProgram::compile", "an instruction describe() accepts has no translation");
+            return nullptr;
+        }
         Translated t{translator.prologue(), {}};
         for (std::uint32_t pc : region.entries)
             t.entries.emplace_back(pc, translator.labelOf(pc));

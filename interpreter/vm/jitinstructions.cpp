@@ -145,29 +145,25 @@ bool RegionTranslator::typed(std::uint32_t pc, const Instr &in, const Typed &t)
         if (wordBinary(in, vt, t.family))
             return true;
         const bool wide = n == 8;
-        m_compareAtWidth = true;
         switch (t.family) {
         case op::Eq: case op::Ne: case op::Lt: case op::Le: case op::Gt: case op::Ge:
             aluWith(Alu::Cmp, wide, wordLeft(in.b, wide), source(in.c));
-            m.setcc(intCondition(t.family, vt), rax);
+            m.setcc(intCondition(t.family, vt, true), rax);
             storeByte(in.a, rax);
-            m_compareAtWidth = false;
             return true;
         case op::BrEq: case op::BrNe: case op::BrLt: case op::BrLe: case op::BrGt: case op::BrGe: {
             aluWith(Alu::Cmp, wide, wordLeft(in.b, wide), source(in.c));
-            const Cond cond = intCondition(t.family, vt);
-            m_compareAtWidth = false;
+            const Cond cond = intCondition(t.family, vt, true);
             branch(pc, &cond, in.a, in.a <= pc);
             return true;
         }
         case op::IncBrLe: case op::IncBrGe: case op::IncBrLt: case op::IncBrGt: {
             wordIncrement(in, vt);
-            const Cond cond = intCondition(t.family, vt);
-            m_compareAtWidth = false;
+            const Cond cond = intCondition(t.family, vt, true);
             branch(pc, &cond, in.d, true);
             return true;
         }
-        default: m_compareAtWidth = false; break;
+        default: break;
         }
     }
     switch (t.family) {
@@ -212,7 +208,7 @@ bool RegionTranslator::typed(std::uint32_t pc, const Instr &in, const Typed &t)
             floatCompareToAl(t.family, in.b, in.c, dbl);
         } else {
             intCompare(in.b, in.c, vt);
-            m.setcc(intCondition(t.family, vt), rax);
+            m.setcc(intCondition(t.family, vt, false), rax);
         }
         storeByte(in.a, rax);
         return true;
@@ -230,7 +226,7 @@ bool RegionTranslator::typed(std::uint32_t pc, const Instr &in, const Typed &t)
             m.test(false, rax, rax);
         } else {
             intCompare(in.b, in.c, vt);
-            cond = intCondition(t.family, vt);
+            cond = intCondition(t.family, vt, false);
         }
         branch(pc, &cond, in.a, in.a <= pc);
         return true;
@@ -243,7 +239,7 @@ bool RegionTranslator::typed(std::uint32_t pc, const Instr &in, const Typed &t)
         m.extend(n, isSignedInt(vt), rax); // compare the wrapped value, as the VM does
         loadInt(rcx, in.c, vt);
         m.alu(Alu::Cmp, true, rax, rcx);
-        const Cond cond = intCondition(t.family, vt);
+        const Cond cond = intCondition(t.family, vt, false);
         branch(pc, &cond, in.d, true);
         return true;
     }

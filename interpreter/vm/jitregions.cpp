@@ -287,16 +287,19 @@ ByteRange rangeOf(std::uint32_t operand, std::uint64_t bytes)
     return {(operand & kInstanceRelative) != 0, offset, offset + bytes};
 }
 
-// Absolute operands inside a global or program instance that is not a plain scalar might be the
-// very bytes the running instance's relative operands name (a program touching itself through a
-// global path); a region mixing both keeps nothing in registers.
+// Absolute operands inside a program instance or a global that holds function block instances
+// might be the very bytes the running instance's relative operands name (a block touching itself
+// through a global path); a region mixing both keeps nothing in registers.
 class CompositeGlobals
 {
 public:
     explicit CompositeGlobals(const Module &module)
     {
+        std::set<std::uint32_t> programBases;
+        for (const ProgramInstance &p : module.programs)
+            programBases.insert(p.base);
         for (const Symbol &s : module.symbols) {
-            if (s.type && !s.type->isElementary())
+            if (s.type && (programBases.count(s.offset) || canHoldInstance(*s.type)))
                 m_ranges.emplace_back(s.offset, std::uint64_t(s.offset) + s.type->size);
         }
         std::sort(m_ranges.begin(), m_ranges.end());
@@ -311,6 +314,19 @@ public:
     }
 
 private:
+    // Program instances and function blocks run with their own instance-relative code; a plain
+    // global array or structure never does, so the program's registers cannot alias it.
+    static bool canHoldInstance(const Type &type)
+    {
+        switch (type.kind) {
+        case TypeKind::FunctionBlock: return true;
+        case TypeKind::Array: return type.element && canHoldInstance(*type.element);
+        case TypeKind::Struct:
+            return std::any_of(type.members.begin(), type.members.end(), [](const Member &m) { return m.type && canHoldInstance(*m.type); });
+        default: return false;
+        }
+    }
+
     std::vector<std::pair<std::uint64_t, std::uint64_t>> m_ranges;
 };
 

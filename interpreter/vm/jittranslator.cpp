@@ -27,7 +27,7 @@ bool RegionTranslator::translate()
 void RegionTranslator::emitPrologue()
 {
     // NativeRegion(memory = rdi, instance = rsi, budget = rdx, target = rcx, clock = r8), System V.
-    // Eight pushes after the return address keep rsp 16-byte aligned for calls to C++.
+    // Nine pushes after the return address keep rsp 16-byte aligned for calls to C++.
     m.bind(m_prologue);
     for (Reg r : {rbx, rbp, r12, r13, r14, r15})
         m.push(r);
@@ -298,10 +298,10 @@ void RegionTranslator::intCompare(std::uint32_t b, std::uint32_t c, VT vt)
 
 // The condition of `b op c` after intCompare. Values are extended to 64 bits by their type, so
 // only ULINT/LWORD compare unsigned.
-Cond RegionTranslator::intCondition(std::uint16_t family, VT vt) const
+Cond RegionTranslator::intCondition(std::uint16_t family, VT vt, bool atWidth)
 {
     // Words (isWord) are compared at their own width instead: UDINT/DWORD unsigned too.
-    const bool u = vt == VT::U64 || (vt == VT::U32 && m_compareAtWidth);
+    const bool u = vt == VT::U64 || (vt == VT::U32 && atWidth);
     switch (family) {
     case op::Eq: case op::BrEq: return E;
     case op::Ne: case op::BrNe: return NE;

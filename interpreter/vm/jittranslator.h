@@ -107,7 +107,8 @@ private:
     void loadElement(std::uint32_t dst, const Mem &element, int bytes);
     void storeElement(const Mem &element, std::uint32_t src, int bytes);
     void intCompare(std::uint32_t b, std::uint32_t c, VT vt);
-    Cond intCondition(std::uint16_t family, VT vt) const;
+    // The condition of `b op c` after a compare; atWidth: a word compared at its own width.
+    static Cond intCondition(std::uint16_t family, VT vt, bool atWidth);
     void floatCompareToAl(std::uint16_t family, std::uint32_t b, std::uint32_t c, bool isDouble);
     void divide(std::uint32_t pc, const Instr &in, VT vt, bool modulo);
     void nativeBlock(const Instr &in);
@@ -134,7 +135,6 @@ private:
     };
     std::optional<HeldByte> m_held, m_carried;
     std::vector<bool> m_joins; // per pc: control may also come from a jump or from outside
-    bool m_compareAtWidth = false; // set around a word compare, read by intCondition()
 };
 
 } // namespace iec::interp::jit

@@ -213,7 +213,7 @@ QString toText(T v, TextFormat format)
         }
     }
     if constexpr (std::is_floating_point_v<T>) {
-        QString text = formatReal(static_cast<double>(v));
+        QString text = formatReal(v); // REAL prints its own shortest digits, not the widened double's
         if (text.endsWith(QLatin1String(".0")))
             text.chop(2);
         return text;

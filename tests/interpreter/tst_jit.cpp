@@ -237,6 +237,60 @@ void TestJit::sameAsInterpreter_data()
                    "FOR i := 0 TO 5 DO FOR j := 0 TO 5 DO sum := 0.0; FOR k := 0 TO 5 DO sum := sum + a[i * 6 + k] * b[k * 6 + j]; END_FOR;\n"
                    " c[i * 6 + j] := sum; ld[j] := ld[j] + REAL_TO_LREAL(sum); END_FOR; END_FOR;")
         << 3 << QString();
+    // Rows added by the JIT review (jitrev): cases the rows above do not reach.
+    QTest::newRow("FOR on SINT that wraps never ends")
+        << program("s : SINT; n : DINT;", "FOR s := 120 TO 127 DO\n  n := n + 1;\nEND_FOR;")
+        << 2 << QStringLiteral("Main:5: The program ran too long in one cycle; is there an endless loop? (cycle 1)");
+    QTest::newRow("USINT FOR that wraps, counted against the budget")
+        << program("us : USINT; m : DINT; l : LINT;", "FOR us := 250 TO 255 DO\n  m := m + 1; l := l + m;\nEND_FOR;")
+        << 2 << QStringLiteral("Main:5: The program ran too long in one cycle; is there an endless loop? (cycle 1)");
+    QTest::newRow("MIN / -1 and MOD -1 of SINT, INT, DINT from variables; bits of negative values")
+        << program("i : INT := -32768; m : INT := -1; q : INT; r : INT; us : USINT := 250; ud : USINT; w : UINT := 65535; wq : UINT; k : INT;\n"
+                   "s : SINT := -128; sm : SINT := -1; sq : SINT; sr : SINT; d : DINT := -2147483648; dm : DINT := -1; dq : DINT; dr : DINT;\n"
+                   "b1 : BOOL; b2 : BOOL; b3 : BOOL; b4 : BOOL; b5 : BOOL; lq : LINT := -5;",
+                   "FOR k := 1 TO 5 DO\n q := i / m; r := i MOD m; sq := s / sm; sr := s MOD sm; dq := d / dm; dr := d MOD dm;\n"
+                   " ud := us / USINT#7 + us MOD INT_TO_USINT(k); wq := w / INT_TO_UINT(k) + w MOD INT_TO_UINT(k + 3);\n"
+                   " b1 := i.15; b2 := s.7; b3 := lq.63; b4 := q.0; b5 := w.15; lq := lq * 3;\nEND_FOR;")
+        << 2 << QString();
+    QTest::newRow("a timer called in a loop: cached variables live across the call")
+        << program("t : TON; k : DINT; a : DINT; b : DINT; c : DINT; l : LINT; n : DINT; r : REAL; q : BOOL; x : LREAL;",
+                   "FOR k := 1 TO 20 DO\n t(IN := k MOD 3 <> 0, PT := T#0ms);\n"
+                   " a := a + k; b := b + a; c := c * 3 + b; l := l + a; r := r + 1.5; x := x * 1.01 + 1.0;\n"
+                   " IF t.Q THEN n := n + 1; END_IF;\n q := t.Q;\nEND_FOR;")
+        << 5 << QString();
+    QTest::newRow("a function block writes its own instance through a global")
+        << QStringLiteral("FUNCTION_BLOCK Acc\nVAR_EXTERNAL g : Acc; END_VAR\nVAR_INPUT inc : DINT; END_VAR\nVAR_OUTPUT sum : DINT; END_VAR\nVAR k : DINT; END_VAR\n"
+                          "FOR k := 1 TO 10 DO sum := sum + k + inc; g.inc := g.inc + sum; inc := inc * 2; END_FOR;\nEND_FUNCTION_BLOCK\n"
+                          "VAR_GLOBAL g : Acc; END_VAR\nPROGRAM Main\nVAR x : DINT; y : DINT; END_VAR\ng(); x := g.sum; y := g.inc;\nEND_PROGRAM\n")
+        << 3 << QString();
+    QTest::newRow("a jump into a run of packed rungs")
+        << program("a : BOOL := TRUE; b : BOOL; c : BOOL := TRUE; d : BOOL; e : BOOL; f : BOOL := TRUE; n : INT;\n"
+                   "o0 : BOOL; o1 : BOOL; o2 : BOOL; o3 : BOOL; o4 : BOOL; o5 : BOOL; o6 : BOOL; o7 : BOOL; o8 : BOOL; o9 : BOOL;",
+                   "n := n + 1; a := n MOD 2 = 0; b := n MOD 3 = 0; d := n MOD 5 < 2;\n"
+                   "IF a THEN\no0 := (a AND NOT b) OR (c AND o9);\no1 := (b AND NOT c) OR (o0 AND d);\nEND_IF;\n"
+                   "o2 := (c AND NOT d) OR (o1 AND a);\no3 := (d AND NOT o2) OR (o2 AND b);\no4 := (o3 AND NOT a) OR (o3 AND c);\n"
+                   "o5 := (o4 AND NOT b) OR (o4 AND d);\no6 := (o5 AND NOT c) OR (o5 AND f);\no7 := (o6 AND NOT o0) OR (o6 AND a);\n"
+                   "o8 := (o7 AND NOT o1) OR (o7 AND e);\no9 := (o8 AND NOT o2) OR (o8 AND b);\ne := NOT e;")
+        << 12 << QString();
+    QTest::newRow("structure arrays, INT index arithmetic, a function and FB instances with loops")
+        << QStringLiteral("TYPE P : STRUCT x : DINT; y : REAL; f : BOOL; END_STRUCT; END_TYPE\n"
+                          "FUNCTION Sum3 : DINT\nVAR_INPUT n : DINT; END_VAR\nVAR k : DINT; acc : DINT; END_VAR\n"
+                          "acc := 0; FOR k := 1 TO n DO acc := acc + k * k; END_FOR; Sum3 := acc;\nEND_FUNCTION\n"
+                          "FUNCTION_BLOCK Acc\nVAR_INPUT n : INT; END_VAR\nVAR_OUTPUT sum : DINT; END_VAR\nVAR k : INT; m : ARRAY[0..49] OF INT; t : TON; END_VAR\n"
+                          "FOR k := 0 TO n DO m[k MOD 5 * 10 + k MOD 10] := m[k MOD 5 * 10 + k MOD 10] + k; sum := sum + m[(k MOD 5) * 10 + 3];\n"
+                          " t(IN := k MOD 2 = 0, PT := T#0ms); IF t.Q THEN sum := sum + 1; END_IF; END_FOR;\nEND_FUNCTION_BLOCK\n"
+                          "PROGRAM Main\nVAR pts : ARRAY[0..9] OF P; a : Acc; b : Acc; i : INT; j : INT; s : DINT; r : REAL; g : ARRAY[0..99] OF DINT; fs : DINT; END_VAR\n"
+                          "FOR i := 0 TO 9 DO pts[i].x := pts[i].x + i * 3; pts[i].y := pts[i].y + INT_TO_REAL(i) * 0.5; pts[i].f := NOT pts[i].f;\n"
+                          " s := s + pts[i].x; r := r + pts[i].y; END_FOR;\n"
+                          "FOR i := 0 TO 9 DO FOR j := 0 TO 9 DO g[i * 10 + j] := g[i * 10 + j] + i - j; s := s + g[i * 10 + j]; END_FOR; END_FOR;\n"
+                          "a(n := 20); b(n := 7); fs := Sum3(10) + Sum3(INT_TO_DINT(i));\nEND_PROGRAM\n")
+        << 5 << QString();
+    QTest::newRow("more accumulators than registers, then a subrange fault")
+        << QStringLiteral("TYPE Pct : INT (0..100); END_TYPE\nPROGRAM Main\n"
+                          "VAR p : Pct; k : INT; a : DINT; b : DINT; c : DINT; d : DINT; e : DINT; f : DINT; g : DINT; h : DINT; i : DINT; j : DINT; m : DINT; x : LREAL; y : REAL; END_VAR\n"
+                          "FOR k := 1 TO 40 DO\n  a := a + k; b := b + a; c := c + b; d := d + c; e := e - d; f := f + e; g := g + f; h := h + g; i := i + h; j := j + i; m := m + j;\n"
+                          "  x := x * 1.5 + y; y := y + 0.25;\n  p := k * 3;\nEND_FOR;\nEND_PROGRAM\n")
+        << 2 << QStringLiteral("Main:7: A value outside the subrange of its type was assigned. (cycle 1)");
 }
 
 void TestJit::sameAsInterpreter()
