@@ -15,10 +15,6 @@
             <source>%1 exists already; the imported one is named %2.</source>
             <translation>%1 existiert bereits; das importierte Objekt heißt %2.</translation>
         </message>
-        <message>
-            <source>The imported configurations were left out; the project keeps its own.</source>
-            <translation>Die importierten Konfigurationen wurden ausgelassen; das Projekt behält seine eigenen.</translation>
-        </message>
         <message numerus="yes">
             <source>Import %n object(s)</source>
             <translation>
@@ -29,6 +25,14 @@
         <message>
             <source>%1 cannot be written: %2</source>
             <translation>%1 kann nicht geschrieben werden: %2</translation>
+        </message>
+        <message>
+            <source>The imported configuration %1 joins the project's configuration %2.</source>
+            <translation>Die importierte Konfiguration %1 wird mit der Konfiguration %2 des Projekts zusammengeführt.</translation>
+        </message>
+        <message>
+            <source>%1 exists already in resource %2; the imported one is named %3.</source>
+            <translation>%1 gibt es in der Ressource %2 schon; das importierte Objekt heißt %3.</translation>
         </message>
     </context>
     <context>
@@ -90,6 +94,21 @@
         <message>
             <source>The item does not exist any more.</source>
             <translation>Das Element existiert nicht mehr.</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app</name>
+        <message>
+            <source>Rename variable %1 to %2</source>
+            <translation>Variable %1 in %2 umbenennen</translation>
+        </message>
+        <message>
+            <source>Rename global variable %1 to %2</source>
+            <translation>Globale Variable %1 in %2 umbenennen</translation>
+        </message>
+        <message>
+            <source>Rename member %1 to %2</source>
+            <translation>Komponente %1 in %2 umbenennen</translation>
         </message>
     </context>
     <context>
@@ -613,11 +632,11 @@ Automatisch gespeichert: %2</translation>
         </message>
         <message>
             <source>RUN</source>
-            <translation>RUN</translation>
+            <translation>LÄUFT</translation>
         </message>
         <message>
             <source>STOP</source>
-            <translation>STOP</translation>
+            <translation>GESTOPPT</translation>
         </message>
         <message>
             <source>ONLINE %1 | cycle %2 | t = %3 s | %4 ms, %5</source>
@@ -1165,6 +1184,17 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>Line %1, column %2: %3</source>
             <translation>Zeile %1, Spalte %2: %3</translation>
+        </message>
+        <message>
+            <source>Rename variable %1 to %2</source>
+            <translation>Variable %1 in %2 umbenennen</translation>
+        </message>
+        <message numerus="yes">
+            <source>Rename %n variable(s)</source>
+            <translation>
+                <numerusform>%n Variable umbenennen</numerusform>
+                <numerusform>%n Variablen umbenennen</numerusform>
+            </translation>
         </message>
     </context>
     <context>
@@ -1897,6 +1927,18 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>Jump to step:</source>
             <translation>Sprung zu Schritt:</translation>
+        </message>
+        <message>
+            <source>Arrange Chart</source>
+            <translation>Plan anordnen</translation>
+        </message>
+        <message>
+            <source>The chart is empty: there is nothing to arrange.</source>
+            <translation>Der Plan ist leer: es gibt nichts anzuordnen.</translation>
+        </message>
+        <message>
+            <source>Arrange chart</source>
+            <translation>Plan anordnen</translation>
         </message>
     </context>
     <context>
@@ -2791,10 +2833,6 @@ Automatisch gespeichert: %2</translation>
             <translation>%1 =&gt; Variable schreiben</translation>
         </message>
         <message>
-            <source>VAR_IN_OUT %1 needs a variable.</source>
-            <translation>VAR_IN_OUT %1 braucht eine Variable.</translation>
-        </message>
-        <message>
             <source>%1 takes only %2 argument(s).</source>
             <translation>%1 nimmt nur %2 Argument(e).</translation>
         </message>
@@ -2965,6 +3003,110 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>declare the variable as %1</source>
             <translation>deklarieren Sie die Variable als %1</translation>
+        </message>
+        <message>
+            <source>This string is not closed on its line.</source>
+            <translation>Diese Zeichenkette wird in ihrer Zeile nicht geschlossen.</translation>
+        </message>
+        <message>
+            <source>Expected %1 but found '%2'.</source>
+            <translation>%1 erwartet, aber '%2' gefunden.</translation>
+        </message>
+        <message>
+            <source>This ')' has no matching '('.</source>
+            <translation>Zu dieser ')' gibt es keine passende '('.</translation>
+        </message>
+        <message>
+            <source>did you mean %1?</source>
+            <translation>meinten Sie %1?</translation>
+        </message>
+        <message>
+            <source>the %1 of line %2 ends with %3</source>
+            <translation>das %1 aus Zeile %2 endet mit %3</translation>
+        </message>
+        <message>
+            <source>ELSE IF opens a second IF that needs its own END_IF; write ELSIF instead</source>
+            <translation>ELSE IF öffnet ein zweites IF, das ein eigenes END_IF braucht; schreiben Sie stattdessen ELSIF</translation>
+        </message>
+        <message>
+            <source>Expected a value, a variable or a function call but found '='.</source>
+            <translation>Ein Wert, eine Variable oder ein Funktionsaufruf erwartet, aber '=' gefunden.</translation>
+        </message>
+        <message>
+            <source>IEC 61131-3 compares with a single '='</source>
+            <translation>IEC 61131-3 vergleicht mit einem einzelnen '='</translation>
+        </message>
+        <message>
+            <source>This is ST, but the body is written in IL; a body uses one language.</source>
+            <translation>Das ist ST, aber der Rumpf ist in AWL geschrieben; ein Rumpf verwendet eine Sprache.</translation>
+        </message>
+        <message>
+            <source>write it in IL (LD, ST, JMPC ...) or write the whole body in ST</source>
+            <translation>schreiben Sie es in AWL (LD, ST, JMPC ...) oder den ganzen Rumpf in ST</translation>
+        </message>
+        <message>
+            <source>A %1 holds exactly one character, not %2.</source>
+            <translation>Ein %1 enthält genau ein Zeichen, nicht %2.</translation>
+        </message>
+        <message>
+            <source>VAR_IN_OUT %1 of %2 needs a variable, not a value.</source>
+            <translation>VAR_IN_OUT %1 von %2 braucht eine Variable, keinen Wert.</translation>
+        </message>
+        <message>
+            <source>it may change what it is given; pass a variable</source>
+            <translation>der Baustein darf das Übergebene ändern; übergeben Sie eine Variable</translation>
+        </message>
+        <message>
+            <source>%1 cannot be changed.</source>
+            <translation>%1 kann nicht geändert werden.</translation>
+        </message>
+        <message>
+            <source>VAR_IN_OUT %1 of %2 may change the variable it is given</source>
+            <translation>VAR_IN_OUT %1 von %2 darf die übergebene Variable ändern</translation>
+        </message>
+        <message>
+            <source>VAR_IN_OUT %1 of %2 needs a variable of type %3, not %4.</source>
+            <translation>VAR_IN_OUT %1 von %2 braucht eine Variable vom Typ %3, nicht %4.</translation>
+        </message>
+        <message>
+            <source>VAR_IN_OUT passes the variable itself, so no conversion is possible; use a variable of type %1</source>
+            <translation>VAR_IN_OUT übergibt die Variable selbst, daher ist keine Konvertierung möglich; verwenden Sie eine Variable vom Typ %1</translation>
+        </message>
+        <message>
+            <source>A call gives either all its arguments by name or none; here only some have a name.</source>
+            <translation>Ein Aufruf gibt entweder alle Argumente mit Namen an oder keines; hier haben nur einige einen Namen.</translation>
+        </message>
+        <message>
+            <source>write each argument as name := value</source>
+            <translation>schreiben Sie jedes Argument als Name := Wert</translation>
+        </message>
+        <message>
+            <source>pass it in every call, e.g. %1(%2 := variable)</source>
+            <translation>übergeben Sie sie bei jedem Aufruf, z. B. %1(%2 := Variable)</translation>
+        </message>
+        <message>
+            <source>This FOR loop ends by setting %1 to %2, outside its range %3..%4, which stops the program.</source>
+            <translation>Diese FOR-Schleife endet, indem sie %1 auf %2 setzt, außerhalb des Bereichs %3..%4; das hält das Programm an.</translation>
+        </message>
+        <message>
+            <source>This FOR loop ends by setting %1 beyond %2, outside its range %3..%4, which stops the program.</source>
+            <translation>Diese FOR-Schleife endet, indem sie %1 über %2 hinaus setzt, außerhalb des Bereichs %3..%4; das hält das Programm an.</translation>
+        </message>
+        <message>
+            <source>give %1 a type with room for the value that ends the loop</source>
+            <translation>geben Sie %1 einen Typ, der auch den Wert aufnimmt, mit dem die Schleife endet</translation>
+        </message>
+        <message>
+            <source>This FOR loop never ends: %1 wraps around before it can pass %2.</source>
+            <translation>Diese FOR-Schleife endet nie: %1 läuft über, bevor es %2 überschreiten kann.</translation>
+        </message>
+        <message>
+            <source>use a larger type than %1 for %2</source>
+            <translation>verwenden Sie für %2 einen größeren Typ als %1</translation>
+        </message>
+        <message>
+            <source>The case value %1 is already handled on line %2; only the first branch runs for it.</source>
+            <translation>Der CASE-Wert %1 wird bereits in Zeile %2 behandelt; nur der erste Zweig wird für ihn ausgeführt.</translation>
         </message>
     </context>
     <context>

@@ -15,10 +15,6 @@
             <source>%1 exists already; the imported one is named %2.</source>
             <translation>%1 已存在；导入的对象命名为 %2。</translation>
         </message>
-        <message>
-            <source>The imported configurations were left out; the project keeps its own.</source>
-            <translation>导入的配置未被合并；项目保留其自身的配置。</translation>
-        </message>
         <message numerus="yes">
             <source>Import %n object(s)</source>
             <translation>
@@ -28,6 +24,14 @@
         <message>
             <source>%1 cannot be written: %2</source>
             <translation>无法写入 %1：%2</translation>
+        </message>
+        <message>
+            <source>The imported configuration %1 joins the project's configuration %2.</source>
+            <translation>导入的配置 %1 已并入项目的配置 %2。</translation>
+        </message>
+        <message>
+            <source>%1 exists already in resource %2; the imported one is named %3.</source>
+            <translation>资源 %2 中已有 %1；导入的对象命名为 %3。</translation>
         </message>
     </context>
     <context>
@@ -89,6 +93,21 @@
         <message>
             <source>The item does not exist any more.</source>
             <translation>该项已不存在。</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app</name>
+        <message>
+            <source>Rename variable %1 to %2</source>
+            <translation>将变量 %1 重命名为 %2</translation>
+        </message>
+        <message>
+            <source>Rename global variable %1 to %2</source>
+            <translation>将全局变量 %1 重命名为 %2</translation>
+        </message>
+        <message>
+            <source>Rename member %1 to %2</source>
+            <translation>将成员 %1 重命名为 %2</translation>
         </message>
     </context>
     <context>
@@ -1165,6 +1184,16 @@ Autosaved: %2</source>
             <source>Line %1, column %2: %3</source>
             <translation>第 %1 行，第 %2 列：%3</translation>
         </message>
+        <message>
+            <source>Rename variable %1 to %2</source>
+            <translation>将变量 %1 重命名为 %2</translation>
+        </message>
+        <message numerus="yes">
+            <source>Rename %n variable(s)</source>
+            <translation>
+                <numerusform>重命名 %n 个变量</numerusform>
+            </translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::DeclarationRows</name>
@@ -1895,6 +1924,18 @@ Autosaved: %2</source>
         <message>
             <source>Jump to step:</source>
             <translation>跳转到步:</translation>
+        </message>
+        <message>
+            <source>Arrange Chart</source>
+            <translation>整理图表</translation>
+        </message>
+        <message>
+            <source>The chart is empty: there is nothing to arrange.</source>
+            <translation>图表为空：没有可整理的内容。</translation>
+        </message>
+        <message>
+            <source>Arrange chart</source>
+            <translation>整理图表</translation>
         </message>
     </context>
     <context>
@@ -2789,10 +2830,6 @@ Autosaved: %2</source>
             <translation>写成 %1 =&gt; 变量</translation>
         </message>
         <message>
-            <source>VAR_IN_OUT %1 needs a variable.</source>
-            <translation>VAR_IN_OUT %1 需要一个变量。</translation>
-        </message>
-        <message>
             <source>%1 takes only %2 argument(s).</source>
             <translation>%1 只接受 %2 个参数。</translation>
         </message>
@@ -2963,6 +3000,110 @@ Autosaved: %2</source>
         <message>
             <source>declare the variable as %1</source>
             <translation>将该变量声明为 %1</translation>
+        </message>
+        <message>
+            <source>This string is not closed on its line.</source>
+            <translation>此字符串在本行内没有闭合。</translation>
+        </message>
+        <message>
+            <source>Expected %1 but found '%2'.</source>
+            <translation>应为 %1，但发现了 '%2'。</translation>
+        </message>
+        <message>
+            <source>This ')' has no matching '('.</source>
+            <translation>此 ')' 没有匹配的 '('。</translation>
+        </message>
+        <message>
+            <source>did you mean %1?</source>
+            <translation>您是否想写 %1？</translation>
+        </message>
+        <message>
+            <source>the %1 of line %2 ends with %3</source>
+            <translation>第 %2 行的 %1 以 %3 结束</translation>
+        </message>
+        <message>
+            <source>ELSE IF opens a second IF that needs its own END_IF; write ELSIF instead</source>
+            <translation>ELSE IF 会开启第二个 IF，它需要自己的 END_IF；请改写为 ELSIF</translation>
+        </message>
+        <message>
+            <source>Expected a value, a variable or a function call but found '='.</source>
+            <translation>应为值、变量或函数调用，但发现了 '='。</translation>
+        </message>
+        <message>
+            <source>IEC 61131-3 compares with a single '='</source>
+            <translation>IEC 61131-3 使用单个 '=' 进行比较</translation>
+        </message>
+        <message>
+            <source>This is ST, but the body is written in IL; a body uses one language.</source>
+            <translation>这是 ST，但该程序体是用 IL（指令表）编写的；一个程序体只能使用一种语言。</translation>
+        </message>
+        <message>
+            <source>write it in IL (LD, ST, JMPC ...) or write the whole body in ST</source>
+            <translation>用 IL（LD、ST、JMPC ……）编写，或将整个程序体改用 ST 编写</translation>
+        </message>
+        <message>
+            <source>A %1 holds exactly one character, not %2.</source>
+            <translation>%1 只能包含一个字符，而不是 %2 个。</translation>
+        </message>
+        <message>
+            <source>VAR_IN_OUT %1 of %2 needs a variable, not a value.</source>
+            <translation>%2 的 VAR_IN_OUT %1 需要一个变量，而不是一个值。</translation>
+        </message>
+        <message>
+            <source>it may change what it is given; pass a variable</source>
+            <translation>它可能修改传入的内容；请传入一个变量</translation>
+        </message>
+        <message>
+            <source>%1 cannot be changed.</source>
+            <translation>%1 不能被修改。</translation>
+        </message>
+        <message>
+            <source>VAR_IN_OUT %1 of %2 may change the variable it is given</source>
+            <translation>%2 的 VAR_IN_OUT %1 可能修改传入的变量</translation>
+        </message>
+        <message>
+            <source>VAR_IN_OUT %1 of %2 needs a variable of type %3, not %4.</source>
+            <translation>%2 的 VAR_IN_OUT %1 需要 %3 类型的变量，而不是 %4。</translation>
+        </message>
+        <message>
+            <source>VAR_IN_OUT passes the variable itself, so no conversion is possible; use a variable of type %1</source>
+            <translation>VAR_IN_OUT 传递的是变量本身，因此无法进行类型转换；请使用 %1 类型的变量</translation>
+        </message>
+        <message>
+            <source>A call gives either all its arguments by name or none; here only some have a name.</source>
+            <translation>调用要么所有实参都带名称，要么都不带；此处只有部分带名称。</translation>
+        </message>
+        <message>
+            <source>write each argument as name := value</source>
+            <translation>将每个实参写成 名称 := 值</translation>
+        </message>
+        <message>
+            <source>pass it in every call, e.g. %1(%2 := variable)</source>
+            <translation>每次调用都要传入，例如 %1(%2 := 变量)</translation>
+        </message>
+        <message>
+            <source>This FOR loop ends by setting %1 to %2, outside its range %3..%4, which stops the program.</source>
+            <translation>此 FOR 循环结束时会将 %1 设为 %2，超出其范围 %3..%4，这会使程序停止。</translation>
+        </message>
+        <message>
+            <source>This FOR loop ends by setting %1 beyond %2, outside its range %3..%4, which stops the program.</source>
+            <translation>此 FOR 循环结束时会将 %1 设为超过 %2 的值，超出其范围 %3..%4，这会使程序停止。</translation>
+        </message>
+        <message>
+            <source>give %1 a type with room for the value that ends the loop</source>
+            <translation>为 %1 选择一个能容纳循环结束值的类型</translation>
+        </message>
+        <message>
+            <source>This FOR loop never ends: %1 wraps around before it can pass %2.</source>
+            <translation>此 FOR 循环永不结束：%1 在超过 %2 之前就会溢出回绕。</translation>
+        </message>
+        <message>
+            <source>use a larger type than %1 for %2</source>
+            <translation>为 %2 使用比 %1 更大的类型</translation>
+        </message>
+        <message>
+            <source>The case value %1 is already handled on line %2; only the first branch runs for it.</source>
+            <translation>CASE 值 %1 已在第 %2 行处理；对该值只执行第一个分支。</translation>
         </message>
     </context>
     <context>
