@@ -98,6 +98,9 @@ struct VarDecl {
 
 struct VarSection {
     VarKind kind = VarKind::Local;
+    // A named global variable list (a CODESYS GVL such as IO): its variables may also be written
+    // List.Variable. Empty for plain VAR_GLOBAL blocks.
+    QString listName;
     bool constant = false;
     bool retain = false;
     bool nonRetain = false;

@@ -225,6 +225,7 @@ public:
     QHash<QString, int> m_pouIndex;                  // upper-case name -> index in m_pous
     std::vector<PouInfo> m_pous;
     QHash<QString, GlobalVar> m_globals;             // upper-case name
+    QHash<QString, QSet<QString>> m_globalLists;     // upper-case list name -> its variables' upper-case names
     QHash<QString, EnumValue> m_enumValues;          // upper-case value name
     QHash<QByteArray, std::uint32_t> m_constants;    // type + bytes -> offset
     std::map<int, std::vector<std::pair<int, SourceLocation>>> m_calls;
@@ -259,6 +260,8 @@ public:
     void packRungs();
     Value lookupName(const QString &name, SourceLocation at);
     Place namePlace(const ast::Expr &expr, bool reportUnknown);
+    Place globalPlace(const GlobalVar &global, const QString &name);
+    void addToGlobalList(const QString &list, const QString &variable);
     // Variables whose declaration was reported (an unknown type): their uses stay quiet, so one
     // typo gives one message. "<POU index>:<upper-case name>", POU index -1 for globals.
     QSet<QString> m_unusableVars;

@@ -363,11 +363,23 @@ std::uint32_t Codegen::allocate(std::uint32_t size, std::uint32_t align)
     return offset;
 }
 
+void Codegen::addToGlobalList(const QString &list, const QString &variable)
+{
+    m_globalLists[key(list)].insert(key(variable));
+    auto &lists = m_module->globalLists;
+    auto it = std::find_if(lists.begin(), lists.end(), [&](const GlobalList &l) { return key(l.name) == key(list); });
+    if (it == lists.end())
+        it = lists.insert(lists.end(), GlobalList{list, {}});
+    it->variables << variable;
+}
+
 void Codegen::declareGlobals(const std::vector<VarSection> &sections)
 {
     for (const VarSection &section : sections) {
         for (const VarDecl &v : section.vars) {
             const QString k = key(v.name);
+            if (!section.listName.isEmpty())
+                addToGlobalList(section.listName, v.name);
             if (m_globals.contains(k)) {
                 error(v.location, QCoreApplication::translate("iec::interp::Compiler", "The global variable %1 is declared twice.").arg(v.name));
                 continue;

@@ -183,6 +183,25 @@ Place Codegen::memberPlace(const Place &base, const Member &member, const QStrin
     return p;
 }
 
+// A global variable by its declaration (also reached as List.Variable through a global list).
+Place Codegen::globalPlace(const GlobalVar &global, const QString &name)
+{
+    Place p;
+    p.text = name;
+    p.type = global.type;
+    p.fbPou = global.type->kind == TypeKind::FunctionBlock ? global.type->pou : -1;
+    if (global.constant && global.value) {
+        p.kind = Place::Kind::Constant;
+        p.constant = *global.value;
+    } else {
+        p.kind = Place::Kind::Direct;
+        p.operand = global.offset;
+    }
+    p.readOnly = global.constant;
+    p.readOnlyReason = QCoreApplication::translate("iec::interp::Compiler", "%1 is a constant and cannot be changed.").arg(name);
+    return p;
+}
+
 Place Codegen::namePlace(const Expr &expr, bool reportUnknown)
 {
     const QString &name = expr.text;
@@ -247,20 +266,8 @@ Place Codegen::namePlace(const Expr &expr, bool reportUnknown)
             }
         }
     }
-    if (const auto it = m_globals.constFind(key(name)); it != m_globals.constEnd()) {
-        p.type = it->type;
-        p.fbPou = it->type->kind == TypeKind::FunctionBlock ? it->type->pou : -1;
-        if (it->constant && it->value) {
-            p.kind = Place::Kind::Constant;
-            p.constant = *it->value;
-        } else {
-            p.kind = Place::Kind::Direct;
-            p.operand = it->offset;
-        }
-        p.readOnly = it->constant;
-        p.readOnlyReason = QCoreApplication::translate("iec::interp::Compiler", "%1 is a constant and cannot be changed.").arg(name);
-        return p;
-    }
+    if (const auto it = m_globals.constFind(key(name)); it != m_globals.constEnd())
+        return globalPlace(*it, name);
     if (const auto it = m_enumValues.constFind(key(name)); it != m_enumValues.constEnd()) {
         if (it->ambiguous) {
             error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "%1 is a value of several enumerations.").arg(name),
@@ -310,6 +317,17 @@ Place Codegen::resolvePlace(const Expr &expr, bool reportUnknown)
                 Expr qualified = b;
                 qualified.text = b.text + QLatin1Char('#') + expr.text;
                 return namePlace(qualified, reportUnknown);
+            }
+        }
+        // IO.Valve, a variable of the CODESYS global list IO, when IO is no variable.
+        if (const Expr &b = expr.operands[0]; b.kind == ExprKind::Name && namePlace(b, false).kind == Place::Kind::Invalid) {
+            if (const auto list = m_globalLists.constFind(key(b.text)); list != m_globalLists.constEnd()) {
+                const auto global = m_globals.constFind(key(expr.text));
+                if (!list->contains(key(expr.text)) || global == m_globals.constEnd()) {
+                    error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "The global list %1 has no variable %2.").arg(b.text, expr.text));
+                    return {};
+                }
+                return globalPlace(*global, b.text + QLatin1Char('.') + expr.text);
             }
         }
         const Place base = resolvePlace(expr.operands[0], reportUnknown);

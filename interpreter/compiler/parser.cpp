@@ -14,8 +14,10 @@ namespace {
 // Words that are keywords only in a few places (configurations, tasks, SFC) and ordinary names
 // elsewhere. RESOURCE and TASK are here because tools name them so ("RESOURCE Resource",
 // "TASK Task"), and PLCopen files carry such names.
-constexpr std::string_view kSoftKeywords[] = {"INTERVAL", "PRIORITY", "SINGLE",   "ON",       "FROM",     "STEP",
-                                              "READ_ONLY", "READ_WRITE", "CONSTANT", "RESOURCE", "TASK"};
+// STEP, TRANSITION and ACTION start textual SFC only when a name follows (STEP Fill:); CODESYS
+// programs commonly call a state variable Step.
+constexpr std::string_view kSoftKeywords[] = {"INTERVAL",  "PRIORITY",   "SINGLE",   "ON",       "FROM", "STEP", "TRANSITION",
+                                              "ACTION",    "READ_ONLY",  "READ_WRITE", "CONSTANT", "RESOURCE", "TASK"};
 // IL operators that are also ST operators, and so never names in ST.
 constexpr std::string_view kStOperatorWords[] = {"AND", "OR", "XOR", "NOT", "MOD"};
 
@@ -312,7 +314,19 @@ private:
     QStringList stepList();
     bool isEnd(std::initializer_list<std::string_view> ends) const
     {
-        return atEnd() || std::any_of(ends.begin(), ends.end(), [&](std::string_view e) { return isWord(e); });
+        return atEnd() || std::any_of(ends.begin(), ends.end(), [&](std::string_view e) {
+                   // "ACTION Fill:" starts an action; "Action := 3;" is a statement.
+                   return isWord(e) && (e != "ACTION" || startsSfcElement());
+               });
+    }
+    // STEP/INITIAL_STEP/TRANSITION/ACTION used as keywords: a name or the TRANSITION's FROM or
+    // (PRIORITY := n) follows, not an assignment or a member access.
+    bool startsSfcElement() const
+    {
+        if (isWord("TRANSITION") && (isOp(u"(", 1) || equalsUpper(text(1), "FROM")))
+            return true;
+        return (isWord("STEP") || isWord("INITIAL_STEP") || isWord("TRANSITION") || isWord("ACTION")) && !atEnd(1)
+            && (tok(1).kind == TokenKind::Identifier || tok(1).kind == TokenKind::Keyword) && !isOp(u":=", 1);
     }
 
     // ---- ST ----
@@ -412,7 +426,7 @@ void Parser::pou(CompilationUnit &unit)
         p.sections.push_back(varSection());
     p.body = body({end, "ACTION"});
     // Actions after the body, as CODESYS exports them.
-    while (isWord("ACTION")) {
+    while (isWord("ACTION") && startsSfcElement()) {
         SfcAction action;
         action.location = here();
         ++m_pos;
@@ -779,7 +793,7 @@ Body Parser::body(std::initializer_list<std::string_view> ends)
 
 bool Parser::looksLikeSfc() const
 {
-    return isWord("INITIAL_STEP") || isWord("STEP") || isWord("TRANSITION");
+    return (isWord("INITIAL_STEP") || isWord("STEP") || isWord("TRANSITION")) && startsSfcElement();
 }
 
 bool Parser::looksLikeIl() const
@@ -917,8 +931,7 @@ void Parser::sfcTransition(SfcChart &chart)
 
 bool Parser::isStatementListEnd() const
 {
-    return atEnd() || isBlockWord() || isWord("ACTION") || isWord("STEP") || isWord("INITIAL_STEP")
-        || isWord("TRANSITION") || isMisspelledEnd();
+    return atEnd() || isBlockWord() || startsSfcElement() || isMisspelledEnd();
 }
 
 std::vector<Stmt> Parser::statements()

@@ -93,6 +93,25 @@ void addPou(const model::Pou &pou, ast::CompilationUnit &unit, Diagnostics &diag
 }
 
 // The text of the project (declarations and ST/IL bodies) as the compiler's input.
+// The printed text has one VAR_GLOBAL block per global variable list, in order, but no list
+// names: they are copied over so that `List.Variable` resolves (CODESYS global lists).
+void nameSections(const std::vector<model::VarList> &lists, std::vector<ast::VarSection> &sections)
+{
+    if (lists.size() != sections.size())
+        return;
+    for (size_t i = 0; i < lists.size(); ++i)
+        sections[i].listName = lists[i].name.value_or(QString());
+}
+
+void nameGlobalLists(const model::Configuration &configuration, ast::ConfigurationDecl &declared)
+{
+    nameSections(configuration.globalVars, declared.globals);
+    if (configuration.resources.size() != declared.resources.size())
+        return;
+    for (size_t i = 0; i < configuration.resources.size(); ++i)
+        nameSections(configuration.resources[i].globalVars, declared.resources[i].globals);
+}
+
 ast::CompilationUnit parseProjectText(const model::Project &project, Diagnostics &diagnostics)
 {
     ast::CompilationUnit unit;
@@ -105,6 +124,8 @@ ast::CompilationUnit parseProjectText(const model::Project &project, Diagnostics
     for (const model::Configuration &configuration : project.instances.configurations) {
         ast::CompilationUnit declared
             = parseDeclarationsOf(printConfiguration(configuration), configuration.name, diagnostics);
+        if (declared.configurations.size() == 1)
+            nameGlobalLists(configuration, declared.configurations.front());
         moveAppend(unit.configurations, declared.configurations);
     }
     return unit;

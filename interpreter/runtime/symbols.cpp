@@ -169,6 +169,25 @@ const Symbol *rootSymbol(const Module &module, const QString &name)
 
 } // namespace
 
+// IO.Valve: when `list` names a global variable list (and nothing else), the global after it.
+// Consumes the ".Valve" from `parts`.
+const Symbol *globalThroughList(const Module &module, const QString &list, QRegularExpressionMatchIterator &parts, qsizetype &pos)
+{
+    const auto found = std::find_if(module.globalLists.begin(), module.globalLists.end(),
+                                    [&](const GlobalList &l) { return l.name.compare(list, Qt::CaseInsensitive) == 0; });
+    if (found == module.globalLists.end() || !parts.hasNext() || parts.peekNext().captured(0) != QLatin1String("."))
+        return nullptr;
+    parts.next();
+    if (!parts.hasNext())
+        return nullptr;
+    const auto match = parts.next();
+    const QString variable = match.captured(1);
+    if (!found->variables.contains(variable, Qt::CaseInsensitive))
+        return nullptr;
+    pos = match.capturedEnd();
+    return rootSymbol(module, variable);
+}
+
 std::optional<VariableRef> resolveSymbol(const Module &module, const QString &name)
 {
     if (name.startsWith(QLatin1Char('%')))
@@ -189,7 +208,7 @@ std::optional<VariableRef> resolveSymbol(const Module &module, const QString &na
             if (first) {
                 first = false;
                 const Symbol *root = rootSymbol(module, n);
-                if (!root)
+                if (!root && (root = globalThroughList(module, n, it, pos)) == nullptr)
                     return std::nullopt;
                 ref.type = root->type;
                 ref.offset = root->offset;

@@ -3,6 +3,7 @@
 #include "interpreter/compiler/types.h"
 
 #include <QString>
+#include <QStringList>
 
 #include <cstdint>
 #include <memory>
@@ -211,6 +212,12 @@ struct Symbol {
     std::uint32_t offset = 0; // absolute
 };
 
+// A named global variable list (CODESYS GVL): its variables can be named List.Variable too.
+struct GlobalList {
+    QString name;
+    QStringList variables; // as declared
+};
+
 struct RetainRange {
     std::uint32_t offset = 0;
     std::uint32_t size = 0;
@@ -228,6 +235,7 @@ struct Module {
     std::vector<TaskInfo> tasks;
     std::vector<LocatedVar> located;
     std::vector<Symbol> symbols;
+    std::vector<GlobalList> globalLists;
     std::vector<RetainRange> retain;
     std::vector<LineEntry> lines;
     std::uint32_t imageSizes[3] = {0, 0, 0}; // I, Q, M bytes

@@ -24,6 +24,7 @@ private Q_SLOTS:
     void configurationRunsTasksAtTheirIntervals();
     void programNameStandsForItsOnlyInstance();
     void projectWithoutConfigurationRunsItsProgram();
+    void namedGlobalListsQualifyTheirVariables();
     void bodyDiagnosticsAreLocatedInTheBody_data();
     void bodyDiagnosticsAreLocatedInTheBody();
     void actionDiagnosticsNameTheAction();
@@ -307,6 +308,41 @@ void TestProjectSource::projectWithoutConfigurationRunsItsProgram()
     Runtime runtime(module);
     QVERIFY(runtime.runCycles(3));
     QCOMPARE(runtime.read(QStringLiteral("Blinker.on")).value(), QStringLiteral("TRUE"));
+}
+
+// CODESYS exports each global variable list (GVL) as a named globalVars block and its programs
+// write IO.Valve as well as Valve.
+void TestProjectSource::namedGlobalListsQualifyTheirVariables()
+{
+    const QString main = pou(QStringLiteral("Main"), QStringLiteral("program"),
+        QStringLiteral("<localVars>") + var(QStringLiteral("Valve"), QStringLiteral("<INT/>"))
+            + QStringLiteral("</localVars>"),
+        QStringLiteral("IO.Valve := IO.Valve OR Level > 5;\nValve := Valve + 1;\nHMI.Count := HMI.Count + 1;"));
+    const QString configuration = QStringLiteral(R"(<configuration name="C"><resource name="R">
+        <task name="T" interval="T#10ms" priority="0"><pouInstance name="Main" typeName="Main"/></task>
+        <globalVars name="IO">%1%2</globalVars><globalVars name="HMI">%3</globalVars>
+        </resource></configuration>)")
+                                      .arg(var(QStringLiteral("Valve"), QStringLiteral("<BOOL/>")),
+                                           var(QStringLiteral("Level"), QStringLiteral("<INT/>"), simple(QStringLiteral("7"))),
+                                           var(QStringLiteral("Count"), QStringLiteral("<DINT/>")));
+    Diagnostics diagnostics;
+    const auto module = frontend::compileProject(project({}, main, configuration), diagnostics);
+    QCOMPARE(errors(diagnostics), QString());
+    QVERIFY(module);
+    Runtime runtime(module);
+    QVERIFY(runtime.runCycles(3));
+    // IO.Valve is the global; the program's own Valve is another variable.
+    QCOMPARE(runtime.read(QStringLiteral("IO.Valve")).value(), QStringLiteral("TRUE"));
+    QCOMPARE(runtime.read(QStringLiteral("Valve")).value(), QStringLiteral("TRUE"));
+    QCOMPARE(runtime.read(QStringLiteral("Main.Valve")).value(), QStringLiteral("3"));
+    QCOMPARE(runtime.read(QStringLiteral("hmi.count")).value(), QStringLiteral("3"));
+    QVERIFY(!runtime.find(QStringLiteral("HMI.Valve"))); // not in that list
+    QVERIFY(!runtime.find(QStringLiteral("IO")));
+
+    const QString wrong = pou(QStringLiteral("Main"), QStringLiteral("program"), QString(), QStringLiteral("HMI.Valve := TRUE;"));
+    Diagnostics wrongDiagnostics;
+    QVERIFY(!frontend::compileProject(project({}, wrong, configuration), wrongDiagnostics));
+    QCOMPARE(errors(wrongDiagnostics), QStringLiteral("Main:1:1: error: The global list HMI has no variable Valve."));
 }
 
 void TestProjectSource::bodyDiagnosticsAreLocatedInTheBody_data()

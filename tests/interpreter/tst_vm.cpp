@@ -134,6 +134,11 @@ void TestVm::statements_data()
     row("case lists and ranges",
         "VAR i : INT; c : INT; END_VAR\nCASE i OF 1, 2, 3, 5: c := 1; 4: c := 2; 10..20: c := 3; ELSE c := 0; END_CASE;",
         {"i=2 => c=1", "i=4 => c=2", "i=15 => c=3", "i=20 => c=3", "i=21 => c=0", "i=5 => c=1"});
+    // CODESYS state machines call their state Step: only "STEP name" starts textual SFC.
+    row("Step, Transition and Action as variable names",
+        "VAR Step : INT; Action : BOOL; Transition : INT; END_VAR\nStep := Step + 1;\nAction := Step > 2;\n"
+        "CASE Step OF 1: Transition := 5; 3: Transition := Transition * 2; END_CASE;",
+        {"=> Step=1; Action=FALSE; Transition=5", "=> Step=2", "=> Step=3; Action=TRUE; Transition=10"});
     row("case without else keeps value", "VAR i : INT; c : INT := 9; END_VAR\nCASE i OF 1: c := 1; END_CASE;", {"i=3 => c=9", "i=1 => c=1"});
     row("for", "VAR i : INT; s : INT; END_VAR\ns := 0; FOR i := 1 TO 10 DO s := s + i; END_FOR;", {"=> s=55; i=11"});
     row("for by negative", "VAR i : INT; s : INT; END_VAR\ns := 0; FOR i := 10 TO 1 BY -3 DO s := s * 10 + i; END_FOR;", {"=> s=10741; i=-2"});
