@@ -3108,6 +3108,14 @@ Automatisch gespeichert: %2</translation>
             <source>The case value %1 is already handled on line %2; only the first branch runs for it.</source>
             <translation>Der CASE-Wert %1 wird bereits in Zeile %2 behandelt; nur der erste Zweig wird für ihn ausgeführt.</translation>
         </message>
+        <message>
+            <source>The value %1 does not fit into %2.</source>
+            <translation>Der Wert %1 passt nicht in %2.</translation>
+        </message>
+        <message>
+            <source>The global list %1 has no variable %2.</source>
+            <translation>Die globale Variablenliste %1 hat keine Variable %2.</translation>
+        </message>
     </context>
     <context>
         <name>iec::interp::Runtime</name>

@@ -3105,6 +3105,14 @@ Autosaved: %2</source>
             <source>The case value %1 is already handled on line %2; only the first branch runs for it.</source>
             <translation>CASE 值 %1 已在第 %2 行处理；对该值只执行第一个分支。</translation>
         </message>
+        <message>
+            <source>The value %1 does not fit into %2.</source>
+            <translation>值 %1 超出了 %2 的范围。</translation>
+        </message>
+        <message>
+            <source>The global list %1 has no variable %2.</source>
+            <translation>全局变量列表 %1 中没有变量 %2。</translation>
+        </message>
     </context>
     <context>
         <name>iec::interp::Runtime</name>

@@ -261,6 +261,7 @@ public:
     Value lookupName(const QString &name, SourceLocation at);
     Place namePlace(const ast::Expr &expr, bool reportUnknown);
     Place globalPlace(const GlobalVar &global, const QString &name);
+    bool typedLiteralFits(const ConstValue &value, const Type *type, const ast::Expr &expr);
     void addToGlobalList(const QString &list, const QString &variable);
     // Variables whose declaration was reported (an unknown type): their uses stay quiet, so one
     // typo gives one message. "<POU index>:<upper-case name>", POU index -1 for globals.

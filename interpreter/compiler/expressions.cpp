@@ -183,6 +183,30 @@ Place Codegen::memberPlace(const Place &base, const Member &member, const QStrin
     return p;
 }
 
+// INT#40000 or BYTE#-1: a typed integer literal must lie in its type's range (it never wraps).
+bool Codegen::typedLiteralFits(const ConstValue &value, const Type *type, const Expr &expr)
+{
+    if (value.kind != ConstValue::Kind::Int || type->kind != TypeKind::Elementary || type->elem == Elem::Bool)
+        return true;
+    const ElemInfo &e = info(type->elem);
+    if ((!e.isInt && !e.isBit) || e.size >= 8) {
+        // 64-bit types: only a negative value for an unsigned one, or a too large one for a signed one.
+        const bool bad = e.size >= 8 && (e.isInt || e.isBit)
+            && ((e.isUnsigned || e.isBit) ? (!value.bigUnsigned && value.i < 0) : value.bigUnsigned);
+        if (bad)
+            error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "The value %1 does not fit into %2.").arg(expr.text, typeName(type)));
+        return !bad;
+    }
+    const unsigned bits = e.size * 8;
+    const bool isUnsigned = e.isUnsigned || e.isBit;
+    const std::int64_t low = isUnsigned ? 0 : -(std::int64_t(1) << (bits - 1));
+    const std::int64_t high = isUnsigned ? (std::int64_t(1) << bits) - 1 : (std::int64_t(1) << (bits - 1)) - 1;
+    if (!value.bigUnsigned && value.i >= low && value.i <= high)
+        return true;
+    error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "The value %1 does not fit into %2 (%3 to %4).").arg(expr.text, typeName(type)).arg(low).arg(high));
+    return false;
+}
+
 // A global variable by its declaration (also reached as List.Variable through a global list).
 Place Codegen::globalPlace(const GlobalVar &global, const QString &name)
 {
@@ -913,6 +937,16 @@ Value Codegen::unary(const QString &opText, Value v, SourceLocation at, const Pl
         return operandValue(out, t);
     }
     // NOT
+    // NOT 16#0F into a BYTE: an untyped literal takes the bit string type it is assigned to, or
+    // DWORD, the type CODESYS gives such a constant.
+    if (v.untyped && v.kind == Value::Kind::Constant && v.constant.kind == ConstValue::Kind::Int && v.constant.i >= 0) {
+        const Type *bits = destination && destination->type && isBits(destination->type) && destination->type->elem != Elem::Bool
+            ? destination->type
+            : elem(Elem::DWord);
+        const ElemInfo &e = info(bits->elem);
+        if (e.size >= 8 || v.constant.i < (std::int64_t(1) << (e.size * 8)))
+            t = bits;
+    }
     if (!isBits(t)) {
         error(at, QCoreApplication::translate("iec::interp::Compiler", "NOT needs BOOL or a bit string (BYTE, WORD, ...), not %1.").arg(v.untyped ? QCoreApplication::translate("iec::interp::Compiler", "an integer literal") : typeName(t)));
         return {};
@@ -943,6 +977,8 @@ Value Codegen::compileExpr(const Expr &expr, const Place *destination)
             error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "'%1' is not a valid literal.").arg(expr.text));
             return {};
         }
+        if (!untyped && !typedLiteralFits(*value, type, expr))
+            return {};
         return constantValue(type, *value, untyped);
     }
     case ExprKind::Name:

@@ -31,6 +31,9 @@ void TestSemantics::diagnostics_data()
         "Main:3:1: error: A value of type REAL cannot be used as INT i without a conversion. (hint: convert it explicitly, e.g. REAL_TO_INT(...))");
     row("literal out of range", "PROGRAM Main\nVAR s : SINT; END_VAR\ns := 200;\nEND_PROGRAM",
         "Main:3:1: error: The value 200 does not fit into SINT (-128 to 127).");
+    row("typed literals never wrap", "PROGRAM Main\nVAR i : INT; b : BYTE; END_VAR\ni := INT#40000;\nb := BYTE#-1;\nb := BYTE#255; i := INT#-32768;\nEND_PROGRAM",
+        "Main:3:6: error: The value INT#40000 does not fit into INT (-32768 to 32767).\n"
+        "Main:4:6: error: The value BYTE#-1 does not fit into BYTE (0 to 255).");
     row("initial value out of range", "PROGRAM Main\nVAR b : BYTE := 256; END_VAR\nEND_PROGRAM",
         "Main:2:17: error: The value 256 does not fit into BYTE (0 to 255).");
     row("condition must be bool", "PROGRAM Main\nVAR i : INT; END_VAR\nIF i THEN i := 0; END_IF;\nEND_PROGRAM",

@@ -139,6 +139,8 @@ void TestVm::statements_data()
         "VAR Step : INT; Action : BOOL; Transition : INT; END_VAR\nStep := Step + 1;\nAction := Step > 2;\n"
         "CASE Step OF 1: Transition := 5; 3: Transition := Transition * 2; END_CASE;",
         {"=> Step=1; Action=FALSE; Transition=5", "=> Step=2", "=> Step=3; Action=TRUE; Transition=10"});
+    row("NOT of a literal takes the bit string it is assigned to", "VAR b : BYTE; w : WORD; d : DWORD; END_VAR\nb := NOT 16#0F;\nw := NOT 0;\nd := NOT 1;",
+        {"=> b=240; w=65535; d=4294967294"});
     row("case without else keeps value", "VAR i : INT; c : INT := 9; END_VAR\nCASE i OF 1: c := 1; END_CASE;", {"i=3 => c=9", "i=1 => c=1"});
     row("for", "VAR i : INT; s : INT; END_VAR\ns := 0; FOR i := 1 TO 10 DO s := s + i; END_FOR;", {"=> s=55; i=11"});
     row("for by negative", "VAR i : INT; s : INT; END_VAR\ns := 0; FOR i := 10 TO 1 BY -3 DO s := s * 10 + i; END_FOR;", {"=> s=10741; i=-2"});
