@@ -75,6 +75,14 @@ bool hasAll(const QSet<QString> &parameters, const QSet<QString> &used)
     return true;
 }
 
+bool fitsStandard(const editors::StdPou &pou, const QSet<QString> &used)
+{
+    QSet<QString> parameters;
+    for (const editors::StdParameter &parameter : pou.inputs + pou.outputs)
+        parameters.insert(parameter.name.toUpper());
+    return hasAll(parameters, used);
+}
+
 // The first function block, the project's before the standard ones, that has every parameter used.
 QString functionBlockFor(const model::Project &project, const QSet<QString> &used)
 {
@@ -89,25 +97,13 @@ QString functionBlockFor(const model::Project &project, const QSet<QString> &use
         if (hasAll(parameters, used))
             return pou.name;
     }
-    // The most used first where several fit (T1.Q fits TP, TON and TOF alike).
-    static const char *const preferred[] = {"TON", "TOF", "TP", "CTU", "CTD", "CTUD", "R_TRIG", "F_TRIG", "SR", "RS"};
-    for (const char *name : preferred) {
-        const editors::StdPou *pou = editors::findStandardPou(QString::fromLatin1(name));
-        if (!pou)
-            continue;
-        QSet<QString> parameters;
-        for (const editors::StdParameter &parameter : pou->inputs + pou->outputs)
-            parameters.insert(parameter.name.toUpper());
-        if (hasAll(parameters, used))
+    for (const QString &name : commonFunctionBlocks()) {
+        const editors::StdPou *pou = editors::findStandardPou(name);
+        if (pou && fitsStandard(*pou, used))
             return pou->name;
     }
     for (const editors::StdPou &pou : editors::standardPous()) {
-        if (pou.kind != editors::StdPou::Kind::FunctionBlock)
-            continue;
-        QSet<QString> parameters;
-        for (const editors::StdParameter &parameter : pou.inputs + pou.outputs)
-            parameters.insert(parameter.name.toUpper());
-        if (hasAll(parameters, used))
+        if (pou.kind == editors::StdPou::Kind::FunctionBlock && fitsStandard(pou, used))
             return pou.name;
     }
     return {};
@@ -181,6 +177,14 @@ QString typeAt(const model::Project &project, model::PouId pou, const std::vecto
 }
 
 } // namespace
+
+const QStringList &commonFunctionBlocks()
+{
+    static const QStringList names {QStringLiteral("TON"), QStringLiteral("TOF"), QStringLiteral("TP"),
+        QStringLiteral("CTU"), QStringLiteral("CTD"), QStringLiteral("CTUD"), QStringLiteral("R_TRIG"),
+        QStringLiteral("F_TRIG"), QStringLiteral("SR"), QStringLiteral("RS")};
+    return names;
+}
 
 QString guessVariableType(
     const model::Project &project, model::PouId pou, const QString &bodyText, const QString &name, bool il)

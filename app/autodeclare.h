@@ -4,6 +4,7 @@
 #include "model/ids.h"
 
 #include <QString>
+#include <QStringList>
 
 class QUndoCommand;
 
@@ -25,6 +26,10 @@ namespace iec::app {
 // coils (S, R, ST after a logic operator) give BOOL, which is also the default.
 [[nodiscard]] QString guessVariableType(
     const model::Project &project, model::PouId pou, const QString &bodyText, const QString &name, bool il);
+
+// The standard function blocks students use most, the most used first: the type box offers them,
+// and where several fit a use the guess takes the first (T1.Q fits TON, TOF and TP alike).
+[[nodiscard]] const QStringList &commonFunctionBlocks();
 
 // The POU's declarations with `row` added after the last row of its class (the end when there
 // is none). Fails with the table's own messages when the row is not valid there.

@@ -430,16 +430,14 @@ bool DocumentArea::declareVariable(const BodyRef &ref, const editors::Declaratio
 
 namespace {
 
-// What the type box offers: the elementary types, the standard function blocks, the project's
-// data types and function blocks.
+// What the type box offers: the elementary types, the common standard function blocks, the
+// project's data types and function blocks.
 QStringList declarableTypeNames(const model::Project &project)
 {
     QStringList names {QStringLiteral("BOOL"), QStringLiteral("INT"), QStringLiteral("DINT"), QStringLiteral("UINT"),
         QStringLiteral("REAL"), QStringLiteral("LREAL"), QStringLiteral("TIME"), QStringLiteral("STRING"),
-        QStringLiteral("BYTE"), QStringLiteral("WORD"), QStringLiteral("DWORD"), QStringLiteral("TON"),
-        QStringLiteral("TOF"), QStringLiteral("TP"), QStringLiteral("CTU"), QStringLiteral("CTD"),
-        QStringLiteral("CTUD"), QStringLiteral("R_TRIG"), QStringLiteral("F_TRIG"), QStringLiteral("SR"),
-        QStringLiteral("RS")};
+        QStringLiteral("BYTE"), QStringLiteral("WORD"), QStringLiteral("DWORD")};
+    names += commonFunctionBlocks();
     for (const model::DataTypeDecl &type : project.types.dataTypes)
         names.append(type.name);
     for (const model::Pou &pou : project.types.pous) {

@@ -27,19 +27,6 @@ namespace iec::app {
 
 namespace {
 
-Message::Severity severityOf(model::Diagnostic::Severity severity)
-{
-    switch (severity) {
-    case model::Diagnostic::Severity::Info:
-        return Message::Severity::Info;
-    case model::Diagnostic::Severity::Warning:
-        return Message::Severity::Warning;
-    case model::Diagnostic::Severity::Error:
-        break;
-    }
-    return Message::Severity::Error;
-}
-
 QSet<QString> namesInUse(const model::Project &project)
 {
     // POUs and data types share one namespace in IEC 61131-3.
@@ -99,7 +86,7 @@ ImportExport::Read ImportExport::read(const QString &path)
     if (formatOf(path) == Format::PlcOpenXml) {
         model::plcopen::ReadResult xml = model::plcopen::readProjectFile(path);
         for (const model::Diagnostic &diagnostic : xml.diagnostics) {
-            result.messages.append({.severity = severityOf(diagnostic.severity),
+            result.messages.append({.severity = messageSeverity(diagnostic.severity),
                 .text = diagnostic.message,
                 .pouName = diagnostic.pouName.value_or(fileName),
                 .line = diagnostic.line,

@@ -398,19 +398,6 @@ void MainWindow::updateActiveUndoStack()
 
 namespace {
 
-Message::Severity messageSeverity(model::Diagnostic::Severity severity)
-{
-    switch (severity) {
-    case model::Diagnostic::Severity::Info:
-        return Message::Severity::Info;
-    case model::Diagnostic::Severity::Warning:
-        return Message::Severity::Warning;
-    case model::Diagnostic::Severity::Error:
-        return Message::Severity::Error;
-    }
-    return Message::Severity::Error;
-}
-
 QList<Message> messagesOf(const std::vector<model::Diagnostic> &diagnostics, const QString &fileName)
 {
     QList<Message> messages;

@@ -25,6 +25,19 @@ QString locationText(const Message &message)
     return message.pouName;
 }
 
+Message::Severity messageSeverity(model::Diagnostic::Severity severity)
+{
+    switch (severity) {
+    case model::Diagnostic::Severity::Info:
+        return Message::Severity::Info;
+    case model::Diagnostic::Severity::Warning:
+        return Message::Severity::Warning;
+    case model::Diagnostic::Severity::Error:
+        return Message::Severity::Error;
+    }
+    return Message::Severity::Error;
+}
+
 namespace {
 
 QString severityText(Message::Severity severity)

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "model/diagnostic.h"
+
 #include <QAbstractTableModel>
 #include <QWidget>
 
@@ -79,5 +81,7 @@ private:
 };
 
 QString locationText(const Message &message);
+// The pane's severity of a reader diagnostic (PLCopen XML or IEC text).
+Message::Severity messageSeverity(model::Diagnostic::Severity severity);
 
 } // namespace iec::app

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "app/textrename.h"
 #include "model/ids.h"
 #include "model/project.h"
 #include "model/undo/variablerename.h"
@@ -16,20 +17,9 @@ class ProjectModel;
 
 // Renames that reach every reference: one undo step per gesture, made of the model's own commands
 // (a parent QUndoCommand whose children change the declaration, the text bodies, the graphical
-// elements and the configurations). Every rewrite of text goes through the shared lexer, so
-// comments, strings and pragmas never change.
+// elements and the configurations). Every rewrite of text goes through the shared lexer
+// (app/textrename.h), so comments, strings and pragmas never change.
 namespace iec::app {
-
-using Renames = std::vector<model::VariableRename>;
-
-enum class TextDialect { ST, IL };
-
-// Replaces every reference to the old names by the new ones, all at once (a swap of two names
-// works): identifiers that match as a whole word, case-insensitively (IEC names are). Kept as they
-// are: a member after '.' (Timer.Q is another name), a formal parameter of a call (Timer(IN := x)
-// names the callee's input), and in IL a jump label (`Loop:`, `JMP Loop`).
-[[nodiscard]] QString renameIdentifiers(const QString &text, const Renames &renames, TextDialect dialect = TextDialect::ST);
-[[nodiscard]] QString renameIdentifier(const QString &text, const QString &oldName, const QString &newName);
 
 // One undo step that renames a POU and updates what refers to it: the ST and IL bodies of every
 // POU, action and transition, the LD/FBD blocks that call it, the variables declared with the

@@ -89,9 +89,9 @@ int runRender(const QStringList &arguments, Io io)
                << ", which cannot be drawn yet (SFC can).\n";
         return ExitFailed;
     }
+    const model::PouId id = pou->id; // `pou` points into the project moved below
     model::ProjectModel projectModel;
     projectModel.reset(std::move(loaded.project));
-    const model::PouId id = projectModel.project().findPou(args->pou)->id;
     editors::sfc::SfcPolicy policy;
     editors::DiagramScene scene(projectModel, model::BodyRef {id}, policy);
     scene.rebuild();

@@ -30,13 +30,6 @@ void showDockOf(QWidget &pane)
         dock->show();
 }
 
-bool sameCharts(const std::vector<ChartRequest> &a, const std::vector<ChartRequest> &b)
-{
-    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const ChartRequest &x, const ChartRequest &y) {
-        return x.instance == y.instance && x.pou.id == y.pou.id;
-    });
-}
-
 QString formatSeconds(std::int64_t ns)
 {
     return QString::number(double(ns) / 1e9, 'f', 3);
@@ -80,9 +73,10 @@ OnlineController::OnlineController(model::ProjectModel &projectModel, DocumentAr
     connect(&documents, &QTabWidget::currentChanged, this, [this] {
         if (!m_latest)
             return;
-        for (const DocumentArea::OnlineDocument &document : m_documents.onlineViews())
+        const QList<DocumentArea::OnlineDocument> views = m_documents.onlineViews();
+        for (const DocumentArea::OnlineDocument &document : views)
             document.view->setOnlineSnapshot(m_latest.get());
-        updateWatchRequest();
+        updateWatchRequestFor(views);
     });
     connect(&projectModel, &model::ProjectModel::projectReset, this, &OnlineController::logout);
     updateActions();
@@ -232,8 +226,8 @@ bool OnlineController::login()
         m_thread->start();
     }
     m_watch.setModule(module);
-    m_sentRequest = currentWatchRequest();
-    send([request = m_sentRequest](RuntimeWorker &worker) { worker.setWatch(request); });
+    m_sent = wanted(m_documents.onlineViews());
+    send([request = requestFor(m_sent)](RuntimeWorker &worker) { worker.setWatch(request); });
     // Editing is refused while online (the window locks the editors on onlineChanged): say so.
     m_statusBar.showMessage(
         tr("Logged in. F5 runs the program, F8 runs one cycle. Log out to edit (Online → Logout)."), 10000);
@@ -387,29 +381,39 @@ void OnlineController::setBudget(std::uint64_t backwardJumps)
     send([backwardJumps](RuntimeWorker &worker) { worker.setBudget(backwardJumps); });
 }
 
-WatchRequest OnlineController::currentWatchRequest() const
+OnlineController::Wanted OnlineController::wanted(const QList<DocumentArea::OnlineDocument> &views) const
 {
-    WatchRequest request;
+    Wanted wanted;
     QSet<QString> seen;
     const auto addName = [&](const QString &name) {
         const QString key = name.toUpper();
         if (seen.contains(key))
             return;
         seen.insert(key);
-        request.names.append(name);
+        wanted.names.append(name);
     };
     for (const QString &name : m_watch.model().names())
         addName(name);
-    const model::Project &project = m_projectModel.project();
-    for (const DocumentArea::OnlineDocument &document : m_documents.onlineViews()) {
+    for (const DocumentArea::OnlineDocument &document : views) {
         for (const QString &name : document.view->onlineNames())
             addName(name);
         // SFC editors get their chart through chartState (the SFC engine's view of the instance).
-        const model::Pou *pou = project.findPou(document.body.pou);
         const model::Body *body = m_projectModel.body(document.body);
         const QString instance = document.view->onlineInstance();
-        if (pou && body && body->language() == model::BodyLanguage::SFC && !instance.isEmpty()
+        if (body && body->language() == model::BodyLanguage::SFC && !instance.isEmpty()
             && document.body.part == model::BodyRef::Part::Pou)
+            wanted.charts.emplace_back(instance, document.body.pou);
+    }
+    return wanted;
+}
+
+WatchRequest OnlineController::requestFor(const Wanted &wanted) const
+{
+    WatchRequest request;
+    request.names = wanted.names;
+    const model::Project &project = m_projectModel.project();
+    for (const auto &[instance, id] : wanted.charts) {
+        if (const model::Pou *pou = project.findPou(id))
             request.charts.push_back({instance, *pou});
     }
     return request;
@@ -417,21 +421,28 @@ WatchRequest OnlineController::currentWatchRequest() const
 
 void OnlineController::updateWatchRequest()
 {
+    if (isOnline())
+        updateWatchRequestFor(m_documents.onlineViews());
+}
+
+void OnlineController::updateWatchRequestFor(const QList<DocumentArea::OnlineDocument> &views)
+{
     if (!isOnline())
         return;
-    WatchRequest request = currentWatchRequest();
-    if (request.names == m_sentRequest.names && sameCharts(request.charts, m_sentRequest.charts))
+    Wanted now = wanted(views);
+    if (now == m_sent)
         return;
-    m_sentRequest = request;
-    send([request = std::move(request)](RuntimeWorker &worker) { worker.setWatch(request); });
+    m_sent = std::move(now);
+    send([request = requestFor(m_sent)](RuntimeWorker &worker) { worker.setWatch(request); });
 }
 
 void OnlineController::showSnapshot(std::shared_ptr<const interp::RuntimeSnapshot> snapshot)
 {
     m_latest = std::move(snapshot);
     m_running = m_latest->running;
-    updateWatchRequest(); // a document opened or closed since the last one
-    for (const DocumentArea::OnlineDocument &document : m_documents.onlineViews())
+    const QList<DocumentArea::OnlineDocument> views = m_documents.onlineViews();
+    updateWatchRequestFor(views); // a document opened or closed since the last one
+    for (const DocumentArea::OnlineDocument &document : views)
         document.view->setOnlineSnapshot(m_latest.get());
     m_watch.setSnapshot(m_latest.get());
     updateStatus();

@@ -1,6 +1,8 @@
 #pragma once
 
+#include "app/documentarea.h"
 #include "app/online/runtimeworker.h"
+#include "model/ids.h"
 
 #include <QObject>
 #include <QPointer>
@@ -22,7 +24,6 @@ class ProjectModel;
 namespace iec::app {
 
 class BuildController;
-class DocumentArea;
 class MessagesPane;
 class WatchPane;
 
@@ -94,8 +95,17 @@ private:
     void shutDownWorker();
     void showSnapshot(std::shared_ptr<const interp::RuntimeSnapshot> snapshot);
     void showFault(const interp::RuntimeFault &fault);
+    // What the watch pane and the open views want, by name and by chart (instance, POU id):
+    // cheap to build and compare on every snapshot; the POUs are copied only when it changed.
+    struct Wanted {
+        QStringList names;
+        std::vector<std::pair<QString, model::PouId>> charts;
+        bool operator==(const Wanted &) const = default;
+    };
     void updateWatchRequest();
-    [[nodiscard]] WatchRequest currentWatchRequest() const;
+    void updateWatchRequestFor(const QList<DocumentArea::OnlineDocument> &views);
+    [[nodiscard]] Wanted wanted(const QList<DocumentArea::OnlineDocument> &views) const;
+    [[nodiscard]] WatchRequest requestFor(const Wanted &wanted) const;
     void updateActions();
     void updateStatus();
     void createActions();
@@ -124,7 +134,7 @@ private:
     int m_session = 0;
     std::shared_ptr<const interp::Module> m_module;
     std::shared_ptr<const interp::RuntimeSnapshot> m_latest;
-    WatchRequest m_sentRequest;
+    Wanted m_sent;
     std::int64_t m_cycleNs = 10'000'000;
     RunSpeed m_speed = RunSpeed::RealTime;
     std::uint64_t m_budget = 0; // 0: the VM's default

@@ -95,21 +95,20 @@ void RuntimeWorker::singleCycle()
 
 void RuntimeWorker::warmReset()
 {
-    const bool wasRunning = m_running;
-    m_running = false;
-    m_tick->stop();
-    rebuildRuntime(true);
-    publish();
-    if (wasRunning)
-        Q_EMIT stopped();
+    reset(true);
 }
 
 void RuntimeWorker::coldReset()
 {
+    reset(false);
+}
+
+void RuntimeWorker::reset(bool keepRetain)
+{
     const bool wasRunning = m_running;
     m_running = false;
     m_tick->stop();
-    rebuildRuntime(false);
+    rebuildRuntime(keepRetain);
     publish();
     if (wasRunning)
         Q_EMIT stopped();

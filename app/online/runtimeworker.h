@@ -88,6 +88,7 @@ Q_SIGNALS:
 private:
     void runSlice();
     bool stepOnce(); // false: a fault stopped the program
+    void reset(bool keepRetain); // stops a run, restarts the program, publishes
     void rebuildRuntime(bool keepRetain);
     void resolveWatch();
     void startPacing();

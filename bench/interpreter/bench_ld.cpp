@@ -10,41 +10,20 @@
 
 #include "model/element.h"
 
-#include <chrono>
+#include "benchutil.h"
+
 #include <cstdint>
 #include <cstdio>
-#include <functional>
 #include <vector>
 
 using namespace iec;
 using namespace iec::interp;
-using Clock = std::chrono::steady_clock;
+using namespace iec::bench;
 
 namespace {
 
 constexpr int kRungs = 2500;
 volatile std::int64_t g_sink = 0;
-
-double nsPerScan(int scans, const std::function<void()> &scan)
-{
-    for (int i = 0; i < scans / 10 + 1; ++i)
-        scan();
-    double best = 1e300;
-    for (int round = 0; round < 5; ++round) {
-        const auto start = Clock::now();
-        for (int i = 0; i < scans; ++i)
-            scan();
-        best = std::min(best, std::chrono::duration<double, std::nano>(Clock::now() - start).count() / scans);
-    }
-    return best;
-}
-
-__attribute__((noinline)) void rungsCpp(const std::uint8_t *a, const std::uint8_t *b, const std::uint8_t *c, std::uint8_t *o)
-{
-    o[0] = (a[0] & !b[0]) | c[0];
-    for (int k = 1; k < kRungs; ++k)
-        o[k] = (a[k] & !b[k]) | (c[k] & o[k - 1]);
-}
 
 model::ConnectionPointIn wire(std::initializer_list<quint64> sources)
 {
@@ -101,16 +80,8 @@ model::Body ladder()
 
 int main()
 {
-    QString declarations = QStringLiteral("PROGRAM Main\nVAR\n");
-    for (int k = 0; k < kRungs; ++k) {
-        declarations += QStringLiteral("A%1 : BOOL := %2; B%1 : BOOL := %3; C%1 : BOOL := %4; O%1 : BOOL;\n")
-                            .arg(k)
-                            .arg(k % 3 == 0 ? QStringLiteral("TRUE") : QStringLiteral("FALSE"))
-                            .arg(k % 5 == 0 ? QStringLiteral("TRUE") : QStringLiteral("FALSE"))
-                            .arg(k % 2 == 0 ? QStringLiteral("TRUE") : QStringLiteral("FALSE"));
-    }
-    declarations += QStringLiteral("END_VAR\nEND_PROGRAM\n");
-    auto read = frontend::readIecText(declarations, QStringLiteral("bench"));
+    const QString declarations = QStringLiteral("PROGRAM Main\nVAR\n") + rungDeclarations(kRungs) + QStringLiteral("END_VAR\n");
+    auto read = frontend::readIecText(QString(declarations + QStringLiteral("END_PROGRAM\n")), QStringLiteral("bench"));
     read.project.types.pous.front().bodies = {ladder()};
 
     Diagnostics diagnostics;
@@ -119,32 +90,20 @@ int main()
     const auto lowered = Clock::now();
     const auto module = frontend::compileUnit(unit, diagnostics);
     const double lowerMs = std::chrono::duration<double, std::milli>(lowered - start).count();
-    const double compileMs = std::chrono::duration<double, std::milli>(Clock::now() - lowered).count();
-    for (const Diagnostic &d : diagnostics.all())
-        std::fprintf(stderr, "%s\n", qPrintable(d.toString()));
+    const double compileMs = msSince(lowered);
+    printDiagnostics(diagnostics);
     if (!module)
         return 1;
     Runtime runtime(module);
     const double vm = nsPerScan(2000, [&] { runtime.runCycle(); });
 
-    std::vector<std::uint8_t> a(kRungs), b(kRungs), c(kRungs), o(kRungs);
-    for (int k = 0; k < kRungs; ++k) {
-        a[size_t(k)] = k % 3 == 0;
-        b[size_t(k)] = k % 5 == 0;
-        c[size_t(k)] = k % 2 == 0;
-    }
+    CppRungs rungs(kRungs);
     const double cpp = nsPerScan(2000, [&] {
-        rungsCpp(a.data(), b.data(), c.data(), o.data());
-        g_sink = g_sink + o[kRungs - 1];
+        rungs.scan();
+        g_sink = g_sink + rungs.output(kRungs - 1);
     });
     // The same rungs written in ST, to tell the lowering's cost from the VM's.
-    QString text = declarations;
-    text.chop(QStringLiteral("END_PROGRAM\n").size());
-    for (int k = 0; k < kRungs; ++k) {
-        text += k == 0 ? QStringLiteral("O0 := (A0 AND NOT B0) OR C0;\n")
-                       : QStringLiteral("O%1 := (A%1 AND NOT B%1) OR (C%1 AND O%2);\n").arg(k).arg(k - 1);
-    }
-    text += QStringLiteral("END_PROGRAM\n");
+    const QString text = declarations + rungStatements(kRungs) + QStringLiteral("END_PROGRAM\n");
     Diagnostics stDiagnostics;
     const auto stModule = compileText(text, stDiagnostics);
     double st = 0;
@@ -155,7 +114,7 @@ int main()
 
     int differences = 0;
     for (int k = 0; k < kRungs; ++k) {
-        const QString expected = o[size_t(k)] ? QStringLiteral("TRUE") : QStringLiteral("FALSE");
+        const QString expected = rungs.output(k) ? QStringLiteral("TRUE") : QStringLiteral("FALSE");
         differences += runtime.read(QStringLiteral("Main.O%1").arg(k)) != expected;
     }
     std::printf("LD, %d rungs, %d contacts: declarations parsed and body lowered in %.0f ms, compiled in %.0f ms, "

@@ -7,15 +7,15 @@
 #include "interpreter/frontend/projectsource.h"
 #include "interpreter/runtime/runtime.h"
 
+#include "benchutil.h"
+
 #include <array>
-#include <chrono>
 #include <cstdio>
 #include <cstdint>
-#include <functional>
 #include <vector>
 
 using namespace iec::interp;
-using Clock = std::chrono::steady_clock;
+using namespace iec::bench;
 
 namespace {
 
@@ -23,20 +23,6 @@ constexpr int kBranches = 10;
 constexpr int kLength = 100;
 
 volatile std::int64_t g_sink = 0;
-
-double nsPerScan(int scans, const std::function<void()> &scan)
-{
-    for (int i = 0; i < scans / 10 + 1; ++i)
-        scan();
-    double best = 1e300;
-    for (int round = 0; round < 5; ++round) {
-        const auto start = Clock::now();
-        for (int i = 0; i < scans; ++i)
-            scan();
-        best = std::min(best, std::chrono::duration<double, std::nano>(Clock::now() - start).count() / scans);
-    }
-    return best;
-}
 
 QString chartSource()
 {
@@ -127,9 +113,8 @@ int main()
     const auto read = frontend::readIecText(chartSource(), QStringLiteral("bench"));
     Diagnostics diagnostics;
     const auto module = frontend::compileProject(read.project, diagnostics);
-    const double compileMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-    for (const Diagnostic &d : diagnostics.all())
-        std::fprintf(stderr, "%s\n", qPrintable(d.toString()));
+    const double compileMs = msSince(start);
+    printDiagnostics(diagnostics);
     if (!module)
         return 1;
     Runtime runtime(module);

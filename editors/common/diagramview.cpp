@@ -39,7 +39,9 @@ void DiagramView::fitToWindow()
     if (!scene())
         return;
     const QRectF drawing = scene()->itemsBoundingRect().adjusted(-10, -10, 10, 10);
-    const QSizeF room = viewport()->size();
+    // A view not shown yet (a tab opened in the background, a picture taken offscreen) resizes
+    // its viewport only when shown: until then the room is its inside as its parent sized it.
+    const QSizeF room = isVisible() ? QSizeF(viewport()->size()) : QSizeF(contentsRect().size());
     if (drawing.isEmpty() || room.isEmpty())
         return;
     setZoom(std::min(room.width() / drawing.width(), room.height() / drawing.height()));

@@ -315,6 +315,21 @@ bool SfcEditor::refuseWhenOnline()
     return true;
 }
 
+std::vector<quint64> SfcEditor::selectedIds() const
+{
+    const QList<quint64> ids = selection();
+    return {ids.begin(), ids.end()};
+}
+
+bool SfcEditor::edit(const QString &text, const std::function<EditResult(ChartDocument &)> &change)
+{
+    if (refuseWhenOnline())
+        return false;
+    ChartDocument doc = document();
+    const EditResult result = change(doc);
+    return commit(std::move(doc), result, text);
+}
+
 bool SfcEditor::commit(ChartDocument doc, const EditResult &result, const QString &text)
 {
     if (!result.ok()) {
@@ -377,99 +392,60 @@ bool SfcEditor::arrangeChart()
 
 bool SfcEditor::createChart()
 {
-    if (refuseWhenOnline())
-        return false;
-    ChartDocument doc = document();
-    const EditResult result = createDefaultChart(doc);
-    return commit(std::move(doc), result, tr("New chart"));
+    return edit(tr("New chart"), [&](ChartDocument &doc) { return createDefaultChart(doc); });
 }
 
 bool SfcEditor::insertStepTransitionAfter()
 {
-    if (refuseWhenOnline())
-        return false;
-    ChartDocument doc = document();
-    const QList<quint64> ids = selection();
-    const EditResult result = sfc::insertStepTransition(doc, {ids.begin(), ids.end()}, true);
-    return commit(std::move(doc), result, tr("Insert step-transition"));
+    return edit(tr("Insert step-transition"),
+        [&](ChartDocument &doc) { return sfc::insertStepTransition(doc, selectedIds(), true); });
 }
 
 bool SfcEditor::insertStepTransitionBefore()
 {
-    if (refuseWhenOnline())
-        return false;
-    ChartDocument doc = document();
-    const QList<quint64> ids = selection();
-    const EditResult result = sfc::insertStepTransition(doc, {ids.begin(), ids.end()}, false);
-    return commit(std::move(doc), result, tr("Insert step-transition"));
+    return edit(tr("Insert step-transition"),
+        [&](ChartDocument &doc) { return sfc::insertStepTransition(doc, selectedIds(), false); });
 }
 
 bool SfcEditor::insertAlternativeBranch(bool right)
 {
-    if (refuseWhenOnline())
-        return false;
-    ChartDocument doc = document();
-    const QList<quint64> ids = selection();
-    const EditResult result = sfc::insertAlternativeBranch(doc, {ids.begin(), ids.end()}, right);
-    return commit(std::move(doc), result, tr("Insert alternative branch"));
+    return edit(tr("Insert alternative branch"),
+        [&](ChartDocument &doc) { return sfc::insertAlternativeBranch(doc, selectedIds(), right); });
 }
 
 bool SfcEditor::insertParallelBranch(bool right)
 {
-    if (refuseWhenOnline())
-        return false;
-    ChartDocument doc = document();
-    const QList<quint64> ids = selection();
-    const EditResult result = sfc::insertParallelBranch(doc, {ids.begin(), ids.end()}, right);
-    return commit(std::move(doc), result, tr("Insert parallel branch"));
+    return edit(tr("Insert parallel branch"),
+        [&](ChartDocument &doc) { return sfc::insertParallelBranch(doc, selectedIds(), right); });
 }
 
 bool SfcEditor::insertJump(const QString &target)
 {
-    if (refuseWhenOnline())
-        return false;
-    ChartDocument doc = document();
-    const QList<quint64> ids = selection();
-    const EditResult result = sfc::insertJump(doc, {ids.begin(), ids.end()}, target);
-    return commit(std::move(doc), result, tr("Insert jump"));
+    return edit(tr("Insert jump"), [&](ChartDocument &doc) { return sfc::insertJump(doc, selectedIds(), target); });
 }
 
 bool SfcEditor::insertTransitionJump(const QString &target)
 {
-    if (refuseWhenOnline())
-        return false;
-    ChartDocument doc = document();
-    const QList<quint64> ids = selection();
-    const EditResult result = sfc::insertTransitionJump(doc, {ids.begin(), ids.end()}, target);
-    return commit(std::move(doc), result, tr("Insert transition-jump"));
+    return edit(tr("Insert transition-jump"),
+        [&](ChartDocument &doc) { return sfc::insertTransitionJump(doc, selectedIds(), target); });
 }
 
 bool SfcEditor::insertMacroStep()
 {
-    if (refuseWhenOnline())
-        return false;
-    ChartDocument doc = document();
-    const QList<quint64> ids = selection();
-    const EditResult result = sfc::insertMacroStep(doc, {ids.begin(), ids.end()}, true);
-    return commit(std::move(doc), result, tr("Insert macro step"));
+    return edit(
+        tr("Insert macro step"), [&](ChartDocument &doc) { return sfc::insertMacroStep(doc, selectedIds(), true); });
 }
 
 bool SfcEditor::deleteSelection()
 {
-    if (refuseWhenOnline())
-        return false;
-    ChartDocument doc = document();
-    const QList<quint64> ids = selection();
-    const EditResult result = sfc::deleteSelection(doc, {ids.begin(), ids.end()});
-    return commit(std::move(doc), result, tr("Delete"));
+    return edit(tr("Delete"), [&](ChartDocument &doc) { return sfc::deleteSelection(doc, selectedIds()); });
 }
 
 bool SfcEditor::copySelection()
 {
     ChartDocument doc = document();
-    const QList<quint64> ids = selection();
     QString error;
-    std::optional<Fragment> fragment = copyFragment(doc, {ids.begin(), ids.end()}, &error);
+    std::optional<Fragment> fragment = copyFragment(doc, selectedIds(), &error);
     if (!fragment) {
         showMessage(error);
         return false;
@@ -493,84 +469,50 @@ bool SfcEditor::paste()
         showMessage(tr("There is nothing to paste."));
         return false;
     }
-    ChartDocument doc = document();
-    const QList<quint64> ids = selection();
-    const EditResult result = pasteFragment(doc, {ids.begin(), ids.end()}, *chartClipboard());
-    return commit(std::move(doc), result, tr("Paste"));
+    return edit(tr("Paste"), [&](ChartDocument &doc) { return pasteFragment(doc, selectedIds(), *chartClipboard()); });
 }
 
 // ---- properties
 
 bool SfcEditor::setStepProperties(quint64 id, const StepProperties &properties)
 {
-    if (refuseWhenOnline())
-        return false;
-    ChartDocument doc = document();
-    const EditResult result = sfc::setStepProperties(doc, id, properties);
-    return commit(std::move(doc), result, tr("Change step"));
+    return edit(tr("Change step"), [&](ChartDocument &doc) { return sfc::setStepProperties(doc, id, properties); });
 }
 
 bool SfcEditor::addActionAssociation(quint64 id, const ActionBlockAction &action, int index)
 {
-    if (refuseWhenOnline())
-        return false;
-    ChartDocument doc = document();
-    const EditResult result = sfc::addAction(doc, id, action, index);
-    return commit(std::move(doc), result, tr("Add action"));
+    return edit(tr("Add action"), [&](ChartDocument &doc) { return sfc::addAction(doc, id, action, index); });
 }
 
 bool SfcEditor::changeActionAssociation(quint64 id, int index, const ActionBlockAction &action)
 {
-    if (refuseWhenOnline())
-        return false;
-    ChartDocument doc = document();
-    const EditResult result = sfc::changeAction(doc, id, index, action);
-    return commit(std::move(doc), result, tr("Change action"));
+    return edit(tr("Change action"), [&](ChartDocument &doc) { return sfc::changeAction(doc, id, index, action); });
 }
 
 bool SfcEditor::removeActionAssociation(quint64 id, int index)
 {
-    if (refuseWhenOnline())
-        return false;
-    ChartDocument doc = document();
-    const EditResult result = sfc::removeAction(doc, id, index);
-    return commit(std::move(doc), result, tr("Remove action"));
+    return edit(tr("Remove action"), [&](ChartDocument &doc) { return sfc::removeAction(doc, id, index); });
 }
 
 bool SfcEditor::moveActionAssociation(quint64 id, int from, int to)
 {
-    if (refuseWhenOnline())
-        return false;
-    ChartDocument doc = document();
-    const EditResult result = sfc::moveAction(doc, id, from, to);
-    return commit(std::move(doc), result, tr("Move action"));
+    return edit(tr("Move action"), [&](ChartDocument &doc) { return sfc::moveAction(doc, id, from, to); });
 }
 
 bool SfcEditor::setTransitionCondition(quint64 id, const QString &stText)
 {
-    if (refuseWhenOnline())
-        return false;
-    ChartDocument doc = document();
-    const EditResult result = setInlineCondition(doc, id, stText);
-    return commit(std::move(doc), result, tr("Change condition"));
+    return edit(tr("Change condition"), [&](ChartDocument &doc) { return setInlineCondition(doc, id, stText); });
 }
 
 bool SfcEditor::setTransitionReference(quint64 id, const QString &transitionName)
 {
-    if (refuseWhenOnline())
-        return false;
-    ChartDocument doc = document();
-    const EditResult result = setConditionReference(doc, id, transitionName);
-    return commit(std::move(doc), result, tr("Change condition"));
+    return edit(
+        tr("Change condition"), [&](ChartDocument &doc) { return setConditionReference(doc, id, transitionName); });
 }
 
 bool SfcEditor::setTransitionPriority(quint64 id, std::optional<quint64> priority)
 {
-    if (refuseWhenOnline())
-        return false;
-    ChartDocument doc = document();
-    const EditResult result = setPriority(doc, id, priority);
-    return commit(std::move(doc), result, tr("Change priority"));
+    return edit(tr("Change priority"), [&](ChartDocument &doc) { return setPriority(doc, id, priority); });
 }
 
 bool SfcEditor::openStepAction(quint64 id, const QString &which)
@@ -800,15 +742,16 @@ void SfcEditor::editActionsDialog(quint64 stepId)
     ActionAssociationsDialog dialog(stepActions(doc, stepId), partNames(m_model, m_ref.pou, true), this);
     if (dialog.exec() != QDialog::Accepted)
         return;
-    ChartDocument edited = document();
-    EditResult result {{}, {stepId}};
-    while (!stepActions(edited, stepId).empty() && result.ok())
-        result = sfc::removeAction(edited, stepId, 0);
-    for (const ActionBlockAction &action : dialog.actions()) {
-        if (result.ok())
-            result = sfc::addAction(edited, stepId, action);
-    }
-    commit(std::move(edited), result, tr("Change actions"));
+    edit(tr("Change actions"), [&](ChartDocument &edited) {
+        EditResult result {{}, {stepId}};
+        while (!stepActions(edited, stepId).empty() && result.ok())
+            result = sfc::removeAction(edited, stepId, 0);
+        for (const ActionBlockAction &action : dialog.actions()) {
+            if (result.ok())
+                result = sfc::addAction(edited, stepId, action);
+        }
+        return result;
+    });
 }
 
 void SfcEditor::chooseJumpTarget(bool withTransition)
@@ -906,18 +849,11 @@ bool SfcEditor::eventFilter(QObject *watched, QEvent *event)
 void SfcEditor::fitToWindow()
 {
     m_scene->rebuildIfDirty();
-    // An editor not shown yet (a tab opened in the background, a picture taken offscreen) has not
-    // laid out its view, and the view resizes its viewport only when shown: the zoom is fitted to
-    // the view's inside as the layout sizes it, not to the viewport's default size.
+    // An editor not shown yet has not laid out its view: size the view as the layout will, so
+    // that the view fits the chart to that size (small charts up to the largest zoom step).
     if (!isVisible())
         layout()->setGeometry(rect());
-    const QRectF drawing = m_scene->itemsBoundingRect().adjusted(-10, -10, 10, 10);
-    const QSizeF room = m_view->isVisible() ? QSizeF(m_view->viewport()->size()) : QSizeF(m_view->contentsRect().size());
-    if (drawing.isEmpty() || room.isEmpty())
-        return;
-    // Small charts are zoomed in as far as the largest zoom step (400 %).
-    m_view->setZoom(std::min(room.width() / drawing.width(), room.height() / drawing.height()));
-    m_view->centerOn(drawing.center());
+    m_view->fitToWindow();
 }
 
 QString SfcEditor::exportTo(const QString &path)

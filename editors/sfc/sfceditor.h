@@ -7,6 +7,7 @@
 
 #include <QWidget>
 
+#include <functional>
 #include <optional>
 
 class QAction;
@@ -112,6 +113,10 @@ protected:
 
 private:
     bool refuseWhenOnline();
+    [[nodiscard]] std::vector<quint64> selectedIds() const;
+    // One chart command: `change` edits a copy of the current level, which is committed as one
+    // undo step named `text` (refused while online, the error shown when it fails).
+    bool edit(const QString &text, const std::function<EditResult(ChartDocument &)> &change);
     bool commit(ChartDocument document, const EditResult &result, const QString &text);
     void placeLevel(const ChartDocument &before, ChartDocument &edited) const;
     bool pushLevel(std::vector<model::Element> level, const QString &text);

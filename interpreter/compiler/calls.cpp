@@ -65,6 +65,13 @@ bool subrangeWithin(const Type *inner, const Type *outer)
 
 } // namespace
 
+// Elements and members are written by the callee without knowing the caller's subrange, so a
+// subrange must be the same on both sides (or absent on both).
+bool Codegen::sameStoredType(const Type *parameter, const Type *variable) const
+{
+    return sameInOutType(parameter, variable) && (parameter == variable || parameter->subrange == variable->subrange);
+}
+
 bool Codegen::sameInOutType(const Type *parameter, const Type *variable) const
 {
     if (parameter == variable)
@@ -89,9 +96,7 @@ bool Codegen::sameInOutType(const Type *parameter, const Type *variable) const
             if (parameter->dims[d].count() != variable->dims[d].count())
                 return false;
         }
-        // Elements of a subrange type are written by the callee without knowing the other range.
-        return sameInOutType(parameter->element, variable->element)
-            && subrangeWithin(parameter->element, variable->element) && subrangeWithin(variable->element, parameter->element);
+        return sameStoredType(parameter->element, variable->element);
     case TypeKind::FunctionBlock:
         return parameter->pou == variable->pou;
     case TypeKind::Struct:
@@ -99,7 +104,7 @@ bool Codegen::sameInOutType(const Type *parameter, const Type *variable) const
             return false;
         for (size_t i = 0; i < parameter->members.size(); ++i) {
             const Member &a = parameter->members[i], &b = variable->members[i];
-            if (a.offset != b.offset || !sameInOutType(a.type, b.type) || !subrangeWithin(a.type, b.type) || !subrangeWithin(b.type, a.type))
+            if (a.offset != b.offset || !sameStoredType(a.type, b.type))
                 return false;
         }
         return true;

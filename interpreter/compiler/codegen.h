@@ -164,6 +164,7 @@ public:
     Place inOutVariable(const Member &parameter, const Argument &a, const QString &callee);
     std::uint32_t inOutAddress(const Place &variable);
     bool sameInOutType(const Type *parameter, const Type *variable) const;
+    bool sameStoredType(const Type *parameter, const Type *variable) const; // same type and same subrange
     // A variable passed to VAR_IN_OUT whose type allows values the other side does not: its value
     // is checked before the call (for the parameter's subrange) and after it (for its own).
     struct InOutCheck {
@@ -225,7 +226,6 @@ public:
     QHash<QString, int> m_pouIndex;                  // upper-case name -> index in m_pous
     std::vector<PouInfo> m_pous;
     QHash<QString, GlobalVar> m_globals;             // upper-case name
-    QHash<QString, QSet<QString>> m_globalLists;     // upper-case list name -> its variables' upper-case names
     QHash<QString, EnumValue> m_enumValues;          // upper-case value name
     QHash<QByteArray, std::uint32_t> m_constants;    // type + bytes -> offset
     std::map<int, std::vector<std::pair<int, SourceLocation>>> m_calls;
@@ -263,6 +263,7 @@ public:
     Place globalPlace(const GlobalVar &global, const QString &name);
     bool typedLiteralFits(const ConstValue &value, const Type *type, const ast::Expr &expr);
     void addToGlobalList(const QString &list, const QString &variable);
+    GlobalList *globalList(const QString &name); // the module's list of that name, or null
     // Variables whose declaration was reported (an unknown type): their uses stay quiet, so one
     // typo gives one message. "<POU index>:<upper-case name>", POU index -1 for globals.
     QSet<QString> m_unusableVars;

@@ -363,14 +363,21 @@ std::uint32_t Codegen::allocate(std::uint32_t size, std::uint32_t align)
     return offset;
 }
 
+// The module's lists are the only record of them: the compiler resolves List.Variable through
+// them as the runtime resolves watched names.
+GlobalList *Codegen::globalList(const QString &name)
+{
+    auto &lists = m_module->globalLists;
+    const auto it = std::find_if(lists.begin(), lists.end(), [&](const GlobalList &l) { return key(l.name) == key(name); });
+    return it == lists.end() ? nullptr : &*it;
+}
+
 void Codegen::addToGlobalList(const QString &list, const QString &variable)
 {
-    m_globalLists[key(list)].insert(key(variable));
-    auto &lists = m_module->globalLists;
-    auto it = std::find_if(lists.begin(), lists.end(), [&](const GlobalList &l) { return key(l.name) == key(list); });
-    if (it == lists.end())
-        it = lists.insert(lists.end(), GlobalList{list, {}});
-    it->variables << variable;
+    GlobalList *found = globalList(list);
+    if (!found)
+        found = &m_module->globalLists.emplace_back(GlobalList{list, {}});
+    found->variables << variable;
 }
 
 void Codegen::declareGlobals(const std::vector<VarSection> &sections)

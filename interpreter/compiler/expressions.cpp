@@ -189,21 +189,14 @@ bool Codegen::typedLiteralFits(const ConstValue &value, const Type *type, const 
     if (value.kind != ConstValue::Kind::Int || type->kind != TypeKind::Elementary || type->elem == Elem::Bool)
         return true;
     const ElemInfo &e = info(type->elem);
-    if ((!e.isInt && !e.isBit) || e.size >= 8) {
-        // 64-bit types: only a negative value for an unsigned one, or a too large one for a signed one.
-        const bool bad = e.size >= 8 && (e.isInt || e.isBit)
-            && ((e.isUnsigned || e.isBit) ? (!value.bigUnsigned && value.i < 0) : value.bigUnsigned);
-        if (bad)
-            error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "The value %1 does not fit into %2.").arg(expr.text, typeName(type)));
-        return !bad;
-    }
-    const unsigned bits = e.size * 8;
-    const bool isUnsigned = e.isUnsigned || e.isBit;
-    const std::int64_t low = isUnsigned ? 0 : -(std::int64_t(1) << (bits - 1));
-    const std::int64_t high = isUnsigned ? (std::int64_t(1) << bits) - 1 : (std::int64_t(1) << (bits - 1)) - 1;
-    if (!value.bigUnsigned && value.i >= low && value.i <= high)
+    if ((!e.isInt && !e.isBit) || fits(value, type->elem))
         return true;
-    error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "The value %1 does not fit into %2 (%3 to %4).").arg(expr.text, typeName(type)).arg(low).arg(high));
+    if (e.size >= 8) {
+        error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "The value %1 does not fit into %2.").arg(expr.text, typeName(type)));
+        return false;
+    }
+    const IntRange range = rangeOf(type->elem);
+    error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "The value %1 does not fit into %2 (%3 to %4).").arg(expr.text, typeName(type)).arg(range.low).arg(range.high));
     return false;
 }
 
@@ -335,19 +328,17 @@ Place Codegen::resolvePlace(const Expr &expr, bool reportUnknown)
         return p;
     }
     case ExprKind::Member: {
-        // Color.Red, the CODESYS spelling of Color#Red, when Color is an enumeration and no variable.
         if (const Expr &b = expr.operands[0]; b.kind == ExprKind::Name && namePlace(b, false).kind == Place::Kind::Invalid) {
+            // Color.Red, the CODESYS spelling of Color#Red, when Color is an enumeration and no variable.
             if (const Type *t = namedType(b.text, b.location, false); t && t->kind == TypeKind::Enum) {
                 Expr qualified = b;
                 qualified.text = b.text + QLatin1Char('#') + expr.text;
                 return namePlace(qualified, reportUnknown);
             }
-        }
-        // IO.Valve, a variable of the CODESYS global list IO, when IO is no variable.
-        if (const Expr &b = expr.operands[0]; b.kind == ExprKind::Name && namePlace(b, false).kind == Place::Kind::Invalid) {
-            if (const auto list = m_globalLists.constFind(key(b.text)); list != m_globalLists.constEnd()) {
+            // IO.Valve, a variable of the CODESYS global list IO, when IO is no variable.
+            if (const GlobalList *list = globalList(b.text)) {
                 const auto global = m_globals.constFind(key(expr.text));
-                if (!list->contains(key(expr.text)) || global == m_globals.constEnd()) {
+                if (!list->variables.contains(expr.text, Qt::CaseInsensitive) || global == m_globals.constEnd()) {
                     error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "The global list %1 has no variable %2.").arg(b.text, expr.text));
                     return {};
                 }

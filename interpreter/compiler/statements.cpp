@@ -21,19 +21,22 @@ Value Codegen::condition(const Expr &expr)
     return v;
 }
 
+// Room for a FOR counter's value one step past a 64-bit end (__extension__: no -Wpedantic warning).
+__extension__ typedef __int128 Wide128;
+
 void Codegen::warnForLoopEnd(const Stmt &s, const Place &counter, const Value &start, const ConstValue &end, const ConstValue &step, bool up)
 {
     if (end.kind != ConstValue::Kind::Int || step.kind != ConstValue::Kind::Int || end.bigUnsigned || step.bigUnsigned || step.i == 0)
         return;
     // The loop ends when the counter passes the end value. The value that passes it: exact when
     // the start is known, else at least one beyond the end.
-    __int128 passing = static_cast<__int128>(end.i) + (up ? 1 : -1);
+    Wide128 passing = static_cast<Wide128>(end.i) + (up ? 1 : -1);
     bool exact = step.i == 1 || step.i == -1;
     if (start.kind == Value::Kind::Constant && start.constant.kind == ConstValue::Kind::Int && !start.constant.bigUnsigned) {
-        const __int128 first = start.constant.i;
+        const Wide128 first = start.constant.i;
         if (up ? first > end.i : first < end.i)
             return; // never runs
-        passing = first + ((static_cast<__int128>(end.i) - first) / step.i + 1) * step.i;
+        passing = first + ((static_cast<Wide128>(end.i) - first) / step.i + 1) * step.i;
         exact = true;
     }
     const Type *type = counter.type;
@@ -49,7 +52,7 @@ void Codegen::warnForLoopEnd(const Stmt &s, const Place &counter, const Value &s
         return;
     }
     const IntRange r = rangeOf(type->elem);
-    if (passing > static_cast<__int128>(r.high) || passing < static_cast<__int128>(r.low))
+    if (passing > static_cast<Wide128>(r.high) || passing < static_cast<Wide128>(r.low))
         warning(s.location, QCoreApplication::translate("iec::interp::Compiler",
                                                         "This FOR loop never ends: %1 wraps around before it can pass %2.")
                                 .arg(counter.text).arg(end.i),

@@ -159,6 +159,27 @@ void relocate(ast::Expr &expr, SourceLocation at)
         relocate(arg.value, at);
 }
 
+void relocate(std::vector<ast::Stmt> &statements, SourceLocation at)
+{
+    for (ast::Stmt &s : statements) {
+        s.location = at;
+        relocate(s.target, at);
+        relocate(s.value, at);
+        if (s.to)
+            relocate(*s.to, at);
+        if (s.by)
+            relocate(*s.by, at);
+        for (ast::ConditionalBlock &branch : s.branches) {
+            branch.location = at;
+            relocate(branch.condition, at);
+            relocate(branch.body, at);
+        }
+        for (ast::CaseBranch &branch : s.cases)
+            relocate(branch.body, at);
+        relocate(s.body, at);
+    }
+}
+
 std::optional<ast::Expr> parseExpression(const QString &text, const QString &owner, SourceLocation at,
     Diagnostics &diagnostics)
 {

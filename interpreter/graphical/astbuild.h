@@ -35,6 +35,8 @@ bool isSimple(const ast::Expr &expr);
 
 // Sets the location of `expr` and everything inside it.
 void relocate(ast::Expr &expr, SourceLocation at);
+// Sets the location of every statement, branch and expression in `statements`.
+void relocate(std::vector<ast::Stmt> &statements, SourceLocation at);
 
 // Parses the text of a variable, contact, coil or pin ("Motor", "Tank.Level", "%QX0.1", "a + 1",
 // "T#5s") as one ST expression. Problems go to `diagnostics` under `owner`, located at `at`.

@@ -46,27 +46,6 @@ Signal combine(const QString &op, Signal left, Signal right)
     return out;
 }
 
-void relocateStatements(std::vector<ast::Stmt> &statements, SourceLocation at)
-{
-    for (ast::Stmt &s : statements) {
-        s.location = at;
-        relocate(s.target, at);
-        relocate(s.value, at);
-        if (s.to)
-            relocate(*s.to, at);
-        if (s.by)
-            relocate(*s.by, at);
-        for (ast::ConditionalBlock &branch : s.branches) {
-            branch.location = at;
-            relocate(branch.condition, at);
-            relocateStatements(branch.body, at);
-        }
-        for (ast::CaseBranch &branch : s.cases)
-            relocateStatements(branch.body, at);
-        relocateStatements(s.body, at);
-    }
-}
-
 // The ST text of a CODESYS EXECUTE box, kept in its addData.
 std::optional<QString> executeCode(const model::Block &block)
 {
@@ -690,7 +669,7 @@ void Evaluator::evaluateExecuteBox(std::size_t n, const model::Block &block, con
     }
     if (!canEmit(n, QStringLiteral("An EXECUTE box")))
         return;
-    relocateStatements(statements, at(n));
+    relocate(statements, at(n));
     if (isBoolLiteral(enable.expr, true)) {
         for (ast::Stmt &s : statements)
             push(std::move(s));

@@ -111,21 +111,35 @@ std::vector<ast::Stmt> lowerBody(const model::Body &body, LoweringContext &conte
 std::optional<ast::Expr> lowerInput(const model::Body &body, const model::ConnectionPointIn &input,
     LoweringContext &context)
 {
+    return InputLowering(body, context.owner, context.diagnostics).lower(input, context);
+}
+
+InputLowering::InputLowering(const model::Body &body, const QString &owner, Diagnostics &diagnostics)
+    : m_body(body)
+{
     const std::vector<model::Element> *elements = body.elements();
     if (!elements)
+        return;
+    auto network = std::make_unique<Network>(*elements, owner, diagnostics);
+    if (network->ok() && network->breakLoops(owner, diagnostics))
+        m_network = std::move(network);
+}
+
+InputLowering::~InputLowering() = default;
+
+std::optional<ast::Expr> InputLowering::lower(const model::ConnectionPointIn &input, LoweringContext &context) const
+{
+    if (!m_network)
         return std::nullopt;
     // The element the input belongs to, for the location of diagnostics.
     quint64 owner = 0;
-    for (const model::Element &element : *elements) {
+    for (const model::Element &element : *m_body.elements()) {
         for (const model::ConnectionPointIn *point : model::inputPoints(element)) {
             if (point == &input || (owner == 0 && *point == input)) // the caller may pass a copy
                 owner = model::header(element).localId;
         }
     }
-    Network network(*elements, context.owner, context.diagnostics);
-    if (!network.ok() || !network.breakLoops(context.owner, context.diagnostics))
-        return std::nullopt;
-    Evaluator evaluator(network, context, true);
+    Evaluator evaluator(*m_network, context, true);
     evaluator.setSink(context.setup);
     auto value = evaluator.valueOf(input, owner, QStringLiteral("This condition"));
     evaluator.declareHidden();

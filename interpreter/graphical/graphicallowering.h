@@ -6,6 +6,7 @@
 #include "model/body.h"
 #include "model/graphics.h"
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -39,6 +40,25 @@ std::vector<ast::Stmt> lowerBody(const model::Body &body, LoweringContext &conte
 // diagnostic) when the input is not connected or its source cannot be lowered.
 std::optional<ast::Expr> lowerInput(const model::Body &body, const model::ConnectionPointIn &input,
     LoweringContext &context);
+
+class Network;
+
+// lowerInput for many inputs of one body (every wired transition of a chart): the body's network
+// is built and checked once, and its problems are reported once. `body` must outlive it.
+class InputLowering
+{
+public:
+    InputLowering(const model::Body &body, const QString &owner, Diagnostics &diagnostics);
+    ~InputLowering();
+    InputLowering(const InputLowering &) = delete;
+    InputLowering &operator=(const InputLowering &) = delete;
+
+    std::optional<ast::Expr> lower(const model::ConnectionPointIn &input, LoweringContext &context) const;
+
+private:
+    const model::Body &m_body;
+    std::unique_ptr<Network> m_network; // null: no elements, or a network that cannot run
+};
 
 // CODESYS keeps a CFC diagram in the addData of a body whose ST text is empty
 // (http://www.3s-software.com/plcopenxml/cfc). Returns it as an FBD body (its elements carry

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <memory>
 
 namespace iec::interp::sfc {
 
@@ -74,72 +75,7 @@ QString quoted(const QString &text)
     return QLatin1Char('\'') + escaped + QLatin1Char('\'');
 }
 
-
-// Every location inside generated code points at the chart element it came from.
-void stamp(ast::Expr &expr, const SourceLocation &at)
-{
-    expr.location = at;
-    for (ast::Expr &operand : expr.operands)
-        stamp(operand, at);
-    for (ast::CallArg &arg : expr.callArgs)
-        stamp(arg.value, at);
-}
-
-void stamp(std::vector<ast::Stmt> &statements, const SourceLocation &at);
-
-void stamp(ast::Stmt &s, const SourceLocation &at)
-{
-    s.location = at;
-    stamp(s.target, at);
-    stamp(s.value, at);
-    if (s.to)
-        stamp(*s.to, at);
-    if (s.by)
-        stamp(*s.by, at);
-    for (ast::ConditionalBlock &b : s.branches) {
-        stamp(b.condition, at);
-        b.location = at;
-        stamp(b.body, at);
-    }
-    for (ast::CaseBranch &c : s.cases)
-        stamp(c.body, at);
-    stamp(s.body, at);
-}
-
-void stamp(std::vector<ast::Stmt> &statements, const SourceLocation &at)
-{
-    for (ast::Stmt &s : statements)
-        stamp(s, at);
-}
-
-ast::Expr nameExpr(const QString &name)
-{
-    ast::Expr e;
-    e.kind = ast::ExprKind::Name;
-    e.text = name;
-    return e;
-}
-
-ast::Expr notExpr(ast::Expr operand)
-{
-    ast::Expr e;
-    e.kind = ast::ExprKind::Unary;
-    e.text = QStringLiteral("NOT");
-    e.location = operand.location;
-    e.operands.push_back(std::move(operand));
-    return e;
-}
-
-ast::Stmt assign(const QString &target, ast::Expr value)
-{
-    ast::Stmt s;
-    s.kind = ast::StmtKind::Assign;
-    s.location = value.location;
-    s.target = nameExpr(target);
-    s.target.location = value.location;
-    s.value = std::move(value);
-    return s;
-}
+using graphical::notExpr; // folds NOT TRUE to FALSE; the parser writes TRUE/FALSE upper-case
 
 // A simple IL condition (LD, AND, OR, XOR with N, NOT, comparisons, ST to the result) as an
 // expression. nullopt when the list uses jumps, parentheses or calls.
@@ -248,7 +184,7 @@ private:
             m_failed = true;
             return {};
         }
-        stamp(statements, at(localId));
+        graphical::relocate(statements, at(localId)); // point at the chart element
         return statements;
     }
 
@@ -526,7 +462,7 @@ private:
             m_declared.insert(key(name), QStringLiteral("BOOL"));
             m_conditionVariables << name;
         }
-        return nameExpr(name);
+        return graphical::nameExpr(name, {});
     }
 
     std::optional<ast::Expr> bodyCondition(const model::Body &body, const QString &owner, const QString &name,
@@ -575,7 +511,7 @@ private:
             if (const model::PouTransition *named = m_pouTransitions.value(key(reference->name))) {
                 expr = bodyCondition(named->body, m_pou.name + QLatin1Char('.') + named->name, named->name, t.localId, pre);
             } else if (declared(reference->name)) {
-                expr = nameExpr(reference->name);
+                expr = graphical::nameExpr(reference->name, {});
             } else {
                 error(t.localId, QStringLiteral("The transition refers to %1, which is neither a transition of %2 nor a variable.").arg(reference->name, m_pou.name));
             }
@@ -613,8 +549,11 @@ private:
         }
         // Blocks in the network (function block calls, edge detectors) run before the condition
         // is read, every cycle, like a network of the chart's body.
+        std::unique_ptr<graphical::InputLowering> &inputs = m_wiredInputs[t.scope];
+        if (!inputs)
+            inputs = std::make_unique<graphical::InputLowering>(*t.scope, m_pou.name, m_diagnostics);
         graphical::LoweringContext context {m_result, m_pou.name, m_diagnostics, &pre};
-        auto expr = graphical::lowerInput(*t.scope, wire, context);
+        auto expr = inputs->lower(wire, context);
         if (!expr)
             m_failed = true;
         return expr;
@@ -628,7 +567,7 @@ private:
             error(localId, QStringLiteral("The condition %1 is not an expression: %2").arg(text, local.all().empty() ? QString() : local.all().front().message));
             return std::nullopt;
         }
-        stamp(statements, at(localId));
+        graphical::relocate(statements, at(localId)); // point at the chart element
         return std::move(statements.front().value);
     }
 
@@ -746,26 +685,18 @@ private:
         return text;
     }
 
-    QString exitPhase()
-    {
-        QString text;
-        for (int i = 0; i < int(m_chart.steps.size()); ++i) {
-            const ChartStep &s = m_chart.steps[size_t(i)];
-            const QString body = stepActionText(s.options.exitAction, s);
-            if (!body.isEmpty())
-                text += QStringLiteral("IF %1 THEN\n%2END_IF;\n").arg(hidden("s", i, "ex"), body);
-        }
-        return text;
-    }
+    QString exitPhase() { return stepActionPhase(&model::StepOptions::exitAction, "ex"); }
+    QString entryPhase() { return stepActionPhase(&model::StepOptions::entryAction, "en"); }
 
-    QString entryPhase()
+    // The steps' exit or entry actions (CoDeSys), each guarded by its step's hidden flag `flag`.
+    QString stepActionPhase(QString model::StepOptions::*action, const char *flag)
     {
         QString text;
         for (int i = 0; i < int(m_chart.steps.size()); ++i) {
             const ChartStep &s = m_chart.steps[size_t(i)];
-            const QString body = stepActionText(s.options.entryAction, s);
+            const QString body = stepActionText(s.options.*action, s);
             if (!body.isEmpty())
-                text += QStringLiteral("IF %1 THEN\n%2END_IF;\n").arg(hidden("s", i, "en"), body);
+                text += QStringLiteral("IF %1 THEN\n%2END_IF;\n").arg(hidden("s", i, flag), body);
         }
         return text;
     }
@@ -1013,7 +944,8 @@ private:
             if (!cond)
                 continue;
             const QString c = hidden("t", k, "c");
-            pre.push_back(assign(c, std::move(*cond)));
+            const SourceLocation where = cond->location;
+            pre.push_back(graphical::assignStmt(graphical::nameExpr(c, where), std::move(*cond)));
             QStringList enabled;
             for (int s : t.sources) {
                 const ChartStep &step = m_chart.steps[size_t(s)];
@@ -1065,6 +997,8 @@ private:
     QString m_extraDeclarations;
     QStringList m_conditionVariables;
     std::vector<std::vector<ast::Stmt>> m_splices;
+    // The wired conditions' networks, built once per body that holds wired transitions.
+    std::map<const model::Body *, std::unique_ptr<graphical::InputLowering>> m_wiredInputs;
     const std::vector<ast::SfcAction> *m_parsed = nullptr;
     QSet<QString> m_calledActions; // keys of the actions already in m_result.actions
     bool m_failed = false;

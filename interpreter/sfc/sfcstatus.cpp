@@ -24,32 +24,52 @@ std::int64_t readTime(const Runtime &runtime, const QString &name)
 
 } // namespace
 
-std::optional<ChartState> chartState(const Runtime &runtime, const model::Pou &pou, const QString &instancePath)
+std::optional<ChartLayout> chartLayout(const model::Pou &pou)
 {
     const model::Body *body = pou.body();
     if (!body || body->language() != model::BodyLanguage::SFC)
         return std::nullopt;
     Diagnostics ignored; // the compiler reported them
     const Chart chart = buildChart(*body, pou.name, ignored);
+    ChartLayout layout;
+    layout.pou = pou.name;
+    for (const ChartStep &step : chart.steps)
+        layout.steps.push_back({step.name, step.localId, stepActive(step), stepTime(step)});
+    layout.actions = chartActions(chart);
+    for (const ChartTransition &transition : chart.transitions)
+        layout.transitions.push_back(transition.localId);
+    return layout;
+}
+
+std::optional<ChartState> chartState(const Runtime &runtime, const model::Pou &pou, const QString &instancePath)
+{
+    const model::Body *body = pou.body();
+    if (!body || body->language() != model::BodyLanguage::SFC
+        || !runtime.find(instancePath + QStringLiteral(".__sfc_now")))
+        return std::nullopt; // cheap checks first: no chart to build
+    return chartState(runtime, *chartLayout(pou), instancePath);
+}
+
+std::optional<ChartState> chartState(const Runtime &runtime, const ChartLayout &layout, const QString &instancePath)
+{
     const QString prefix = instancePath + QLatin1Char('.');
     if (!runtime.find(prefix + QStringLiteral("__sfc_now")))
         return std::nullopt; // no such instance, or the chart did not compile
     ChartState state;
     state.instance = instancePath;
-    state.pou = pou.name;
-    for (const ChartStep &step : chart.steps) {
+    state.pou = layout.pou;
+    for (const ChartLayout::Step &step : layout.steps) {
         StepState s;
         s.name = step.name;
         s.localId = step.localId;
-        s.active = readBool(runtime, prefix + stepActive(step));
-        s.elapsedNs = s.active ? readTime(runtime, prefix + stepTime(step)) : 0;
+        s.active = readBool(runtime, prefix + step.active);
+        s.elapsedNs = s.active ? readTime(runtime, prefix + step.time) : 0;
         state.steps.push_back(s);
     }
-    const QStringList actions = chartActions(chart);
-    for (int j = 0; j < actions.size(); ++j)
-        state.actions.push_back({actions[j], readBool(runtime, prefix + hidden("a", j, "q"))});
-    for (int k = 0; k < int(chart.transitions.size()); ++k)
-        state.transitions.push_back({chart.transitions[size_t(k)].localId, readBool(runtime, prefix + hidden("t", k, "c"))});
+    for (int j = 0; j < layout.actions.size(); ++j)
+        state.actions.push_back({layout.actions[j], readBool(runtime, prefix + hidden("a", j, "q"))});
+    for (int k = 0; k < int(layout.transitions.size()); ++k)
+        state.transitions.push_back({layout.transitions[size_t(k)], readBool(runtime, prefix + hidden("t", k, "c"))});
     return state;
 }
 
@@ -76,8 +96,11 @@ std::vector<ChartState> programChartStates(const Runtime &runtime, const model::
         }
         if (instances.isEmpty())
             instances << pou.name; // run alone (no configuration): the POU name finds its one instance
+        const std::optional<ChartLayout> layout = chartLayout(pou); // once for all its instances
+        if (!layout)
+            continue;
         for (const QString &instance : std::as_const(instances)) {
-            if (auto state = chartState(runtime, pou, instance))
+            if (auto state = chartState(runtime, *layout, instance))
                 states.push_back(std::move(*state));
         }
     }

@@ -3,6 +3,7 @@
 #include "model/project.h"
 
 #include <QString>
+#include <QStringList>
 
 #include <cstdint>
 #include <optional>
@@ -42,9 +43,29 @@ struct ChartState {
     std::vector<TransitionState> transitions;
 };
 
+// What chartState reads for one SFC POU: its elements and the names of their variables inside
+// an instance. Building it walks the whole chart, so a caller that reads the same chart every
+// snapshot builds it once (per POU revision) and passes it on.
+struct ChartLayout {
+    struct Step {
+        QString name;
+        quint64 localId = 0;
+        QString active; // the step's x, relative to the instance
+        QString time;   // the step's t
+    };
+    QString pou;
+    std::vector<Step> steps;
+    QStringList actions;                // chartActions(): hidden variable a<j>_q
+    std::vector<quint64> transitions;   // localIds: hidden variable t<k>_c
+};
+
+// nullopt when `pou` has no SFC body.
+std::optional<ChartLayout> chartLayout(const model::Pou &pou);
+
 // The state of the chart of SFC POU `pou` in instance `instancePath`; nullopt when the runtime
 // has no such instance or the POU is not SFC.
 std::optional<ChartState> chartState(const Runtime &runtime, const model::Pou &pou, const QString &instancePath);
+std::optional<ChartState> chartState(const Runtime &runtime, const ChartLayout &layout, const QString &instancePath);
 
 // Every SFC program instance the runtime runs (FB instances are reached by path with chartState).
 std::vector<ChartState> programChartStates(const Runtime &runtime, const model::Project &project);

@@ -175,6 +175,9 @@ private:
         step.localId = m_stepId[size_t(s)];
         step.name = source.name;
         step.initialStep = source.initial;
+        step.connectionPointOut = model::ConnectionPointOut {};
+        if (!source.actions.empty())
+            step.connectionPointOutAction = model::ConnectionPointOut {}; // to its action block
         const std::vector<int> &in = m_in[size_t(s)];
         if (m_convergence[size_t(s)]) {
             model::SelectionConvergence join;
@@ -189,10 +192,6 @@ private:
             step.connectionPointIn = in.empty() ? model::ConnectionPointIn {} : wiredTo(outputOf(in.front()));
             elements.push_back(std::move(step));
         }
-        auto &added = std::get<model::Step>(*std::find_if(elements.begin(), elements.end(), [&](const model::Element &e) {
-            return model::header(e).localId == m_stepId[size_t(s)];
-        }));
-        added.connectionPointOut = model::ConnectionPointOut {};
         if (m_divergence[size_t(s)]) {
             model::SelectionDivergence split;
             split.localId = m_divergence[size_t(s)];
@@ -207,10 +206,6 @@ private:
     void addActionBlock(int s, std::vector<model::Element> &elements)
     {
         const ast::SfcStep &source = m_chart.steps[size_t(s)];
-        for (model::Element &e : elements) {
-            if (auto *step = std::get_if<model::Step>(&e); step && step->localId == m_stepId[size_t(s)])
-                step->connectionPointOutAction = model::ConnectionPointOut {};
-        }
         model::ActionBlock block;
         block.localId = next();
         block.connectionPointIn = wiredTo(m_stepId[size_t(s)]);

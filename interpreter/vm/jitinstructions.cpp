@@ -2,6 +2,7 @@
 
 #include "interpreter/vm/nativeblocks.h"
 
+#include <cstddef>
 #include <limits>
 
 namespace iec::interp::jit {
@@ -83,12 +84,12 @@ void RegionTranslator::rung(std::uint32_t out, std::uint32_t b, std::uint32_t c,
 void RegionTranslator::nativeBlock(const Instr &in)
 {
     const Mem instance = memOf(in.a);
-    const auto field = [&](std::int32_t offset) { return Mem{instance.base, kNoIndex, 1, instance.disp + offset}; };
+    const auto field = [&](std::size_t offset) { return Mem{instance.base, kNoIndex, 1, instance.disp + std::int32_t(offset)}; };
     if (in.op == op::NativeFbArgs) {
         loadByte(rax, in.b);
-        m.store(1, field(0), rax); // IN
+        m.store(1, field(offsetof(nativedetail::TimerInstance, in)), rax);
         loadRaw(rax, in.c, 8);
-        m.store(8, field(8), rax); // PT
+        m.store(8, field(offsetof(nativedetail::TimerInstance, pt)), rax);
     }
     m.lea(rdi, instance);
     m.load(8, rax, kClockSlot, false);
@@ -96,7 +97,7 @@ void RegionTranslator::nativeBlock(const Instr &in)
     m.movImm(rax, std::int64_t(nativeBlockFunction(in.aux)));
     m.callReg(rax);
     if (in.op == op::NativeFbArgs && in.e != 0) {
-        m.load(1, rax, field(16), false); // Q
+        m.load(1, rax, field(offsetof(nativedetail::TimerInstance, q)), false);
         storeByte(in.e, rax);
     }
 }

@@ -1,5 +1,6 @@
 #include "interpreter/vm/jitregions.h"
 
+#include "interpreter/vm/nativeblocks.h"
 #include "interpreter/vm/x64emitter.h"
 
 #include <algorithm>
@@ -234,8 +235,7 @@ bool describe(const Module &module, const Instr &in, Footprint &out)
     case op::NativeFb:
     case op::NativeFbArgs: {
         // The block reads and writes its whole instance (nativeblocks.h TimerInstance).
-        constexpr std::uint64_t kTimerInstanceBytes = 48;
-        out.arrays.push_back({in.a, kTimerInstanceBytes});
+        out.arrays.push_back({in.a, sizeof(nativedetail::TimerInstance)});
         if (in.op == op::NativeFbArgs) {
             add(out, in.b, 1, Use::Byte);
             add(out, in.c, 8, Use::Int);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "interpreter/vm/bytecode.h"
+#include "interpreter/vm/imagebytes.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -14,20 +15,6 @@ namespace iec::interp {
 // every trace both ways). Inline: the VM's handlers are the hot path of programs with many timers.
 
 namespace nativedetail {
-
-template<typename T>
-T load(const std::uint8_t *p)
-{
-    T v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-}
-
-template<typename T>
-void store(std::uint8_t *p, T v)
-{
-    std::memcpy(p, &v, sizeof v);
-}
 
 // The layout the compiler checks before it uses op::NativeFb: IN, PT, Q, ET, then the state
 // (START and RUNNING for TON/TOF, START and TRIGGERED for TP), as declared in stdlib.cpp.
@@ -50,10 +37,10 @@ inline void runNativeBlock(NativeBlock block, std::uint8_t *instance, std::int64
     // caller stored IN and PT would stall on store forwarding.
     nativedetail::TimerInstance t;
     t.in = instance[offsetof(nativedetail::TimerInstance, in)];
-    t.pt = nativedetail::load<std::int64_t>(instance + offsetof(nativedetail::TimerInstance, pt));
+    t.pt = image::load<std::int64_t>(instance + offsetof(nativedetail::TimerInstance, pt));
     t.q = instance[offsetof(nativedetail::TimerInstance, q)];
-    t.et = nativedetail::load<std::int64_t>(instance + offsetof(nativedetail::TimerInstance, et));
-    t.start = nativedetail::load<std::int64_t>(instance + offsetof(nativedetail::TimerInstance, start));
+    t.et = image::load<std::int64_t>(instance + offsetof(nativedetail::TimerInstance, et));
+    t.start = image::load<std::int64_t>(instance + offsetof(nativedetail::TimerInstance, start));
     t.flag = instance[offsetof(nativedetail::TimerInstance, flag)];
     switch (block) {
     case NativeBlock::Ton:
@@ -112,8 +99,8 @@ inline void runNativeBlock(NativeBlock block, std::uint8_t *instance, std::int64
         break;
     }
     instance[offsetof(nativedetail::TimerInstance, q)] = t.q;
-    nativedetail::store<std::int64_t>(instance + offsetof(nativedetail::TimerInstance, et), t.et);
-    nativedetail::store<std::int64_t>(instance + offsetof(nativedetail::TimerInstance, start), t.start);
+    image::store<std::int64_t>(instance + offsetof(nativedetail::TimerInstance, et), t.et);
+    image::store<std::int64_t>(instance + offsetof(nativedetail::TimerInstance, start), t.start);
     instance[offsetof(nativedetail::TimerInstance, flag)] = t.flag;
 }
 

@@ -1,5 +1,6 @@
 #include "interpreter/vm/vm.h"
 
+#include "interpreter/vm/imagebytes.h"
 #include "interpreter/vm/jit.h"
 #include "interpreter/vm/nativeblocks.h"
 
@@ -55,19 +56,8 @@ namespace {
 
 std::optional<std::int64_t> parseLiteralValue(const QString &text, TextFormat format);
 
-template<typename T>
-T load(const std::uint8_t *p)
-{
-    T v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-}
-
-template<typename T>
-void store(std::uint8_t *p, T v)
-{
-    std::memcpy(p, &v, sizeof v);
-}
+using image::load;
+using image::store;
 
 // Integer arithmetic wraps around like the IEC type: computed in 64-bit unsigned and cut to T.
 template<typename T>
@@ -774,11 +764,11 @@ FaultKind Vm::run(std::uint32_t entry)
             NEXT();
         L_NativeFbArgs: {
             std::uint8_t *instance = P(ip->a);
-            instance[0] = *P(ip->b);
-            std::memcpy(instance + 8, P(ip->c), 8);
+            instance[offsetof(nativedetail::TimerInstance, in)] = *P(ip->b);
+            std::memcpy(instance + offsetof(nativedetail::TimerInstance, pt), P(ip->c), 8);
             runNativeBlock(static_cast<NativeBlock>(ip->aux), instance, clockNs);
             if (ip->e != 0)
-                *P(ip->e) = instance[16]; // Q, see nativeblocks.h
+                *P(ip->e) = instance[offsetof(nativedetail::TimerInstance, q)];
             NEXT();
         }
         L_BoolAndNotOrAnd:

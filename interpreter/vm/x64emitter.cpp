@@ -160,12 +160,6 @@ void Emitter::extend(int bytes, bool sign, Reg r)
     }
 }
 
-void Emitter::storeImm8(const Mem &m, std::uint8_t value)
-{
-    rmMem(0, false, {0xC6}, 0, m);
-    byte(value);
-}
-
 void Emitter::alu(Alu op, bool wide, Reg dst, Reg src)
 {
     rmReg(0, wide, {std::uint8_t(op)}, dst, src);

@@ -47,7 +47,6 @@ public:
     void movImm(Reg dst, std::int64_t value);
     void movsxdRR(Reg dst, Reg src);           // dst (64) = sign-extended src (32)
     void extend(int bytes, bool sign, Reg r);  // r = r's low bytes extended to 64 bits
-    void storeImm8(const Mem &m, std::uint8_t value);
 
     // ---- integer arithmetic, dst op= src (wide: 64-bit, else 32-bit) --------------------------
     enum class Alu : std::uint8_t { Add = 0x03, Or = 0x0B, And = 0x23, Sub = 0x2B, Xor = 0x33, Cmp = 0x3B };

@@ -82,5 +82,4 @@ void ChangeDataTypeCommand::undo()
     m_model.changeDataType(m_after.name, m_before);
 }
 
-
 } // namespace iec::model

@@ -137,5 +137,4 @@ void SetInterfaceCommand::undo()
     m_model.setInterface(m_pou, m_before);
 }
 
-
 } // namespace iec::model

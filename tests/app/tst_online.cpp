@@ -100,6 +100,7 @@ private Q_SLOTS:
     void textEditorShowsValuesAndRefusesEditing();
     void logoutRestoresEditors();
     void addToWatchFromTheEditor();
+    void documentOpenedWhileOnlineAsksForItsValues();
     void watchCompletionOffersSymbols();
     void threadedRunStaysResponsiveAndStops();
     void windowOnlineRenders();
@@ -470,6 +471,34 @@ void TestOnline::runtimeFaultLandsInTheMessagesPane()
     online.resetCold();
     QVERIFY(!online.latestSnapshot()->fault.has_value());
     QCOMPARE(messages.count(Message::Severity::Error), 0);
+}
+
+void TestOnline::documentOpenedWhileOnlineAsksForItsValues()
+{
+    auto window = std::make_unique<MainWindow>();
+    OnlineController &online = window->online();
+    online.setThreaded(false);
+    window->projectModel().reset(projectFrom(kProgram));
+    online.singleCycle();
+    QVERIFY(online.isOnline());
+    QVERIFY(online.latestSnapshot()->values.isEmpty()); // no view asks for anything yet
+
+    // Opened: the editor's names join the request at once (a snapshot of cycle 1 follows).
+    const model::Pou *main = window->projectModel().project().findPou(QStringLiteral("Main"));
+    QVERIFY(window->documents().openBody({main->id, model::BodyRef::Part::Pou, {}}));
+    QCOMPARE(online.latestSnapshot()->cycle, 1);
+    QCOMPARE(online.latestSnapshot()->value(QStringLiteral("Main.Count")), QStringLiteral("1"));
+    online.singleCycle();
+    QCOMPARE(online.latestSnapshot()->value(QStringLiteral("Main.Count")), QStringLiteral("2"));
+    editors::CodeEditor *editor = textWidgetOf(*window, QStringLiteral("Main"))->editor();
+    QVERIFY(editor->isOnline());
+
+    // Closed: the next snapshots carry its names no more.
+    window->documents().closeAll();
+    QVERIFY(!online.latestSnapshot()->values.contains(QStringLiteral("Main.Count")));
+    online.singleCycle();
+    QCOMPARE(online.latestSnapshot()->cycle, 3);
+    QVERIFY(online.latestSnapshot()->values.isEmpty());
 }
 
 void TestOnline::textEditorShowsValuesAndRefusesEditing()

@@ -64,6 +64,11 @@ void TestOnlineValues::chipText()
     const QString shown = iec::editors::chipText({QStringLiteral("S"), longValue, true});
     QCOMPARE(shown.size(), 4 + 24);
     QVERIFY(shown.endsWith(QChar(0x2026)));
+    // The label and the first 23 characters of the value stay; the rest becomes the ellipsis.
+    QCOMPARE(shown, QStringLiteral("S = ") + QString(23, QLatin1Char('x')) + QChar(0x2026));
+    // A value that fits is shown whole.
+    const QString fits(24, QLatin1Char('y'));
+    QCOMPARE(iec::editors::chipText({QStringLiteral("S"), fits, false}), QStringLiteral("S = ") + fits);
 }
 
 QTEST_GUILESS_MAIN(TestOnlineValues)

@@ -23,6 +23,7 @@
 #include "interpreter/runtime/snapshot.h"
 #include "model/body.h"
 #include "model/projectmodel.h"
+#include "tests/editors/sfcmixingtank.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -79,19 +80,6 @@ model::Project projectWithEmptyChart()
     percent.baseType.kind = model::ElementaryType {QStringLiteral("INT")};
     project.types.dataTypes.push_back(percent);
     return project;
-}
-
-// The transition right below a step (its input wire comes from the step).
-quint64 transitionAfter(const SfcEditor &editor, quint64 stepId)
-{
-    for (const Element &e : editor.document().elements) {
-        if (const auto *t = std::get_if<model::Transition>(&e); t && t->connectionPointIn) {
-            for (const auto &c : t->connectionPointIn->connections)
-                if (c.refLocalId == stepId)
-                    return t->localId;
-        }
-    }
-    return 0;
 }
 
 // The names of the steps the editor draws active (blue), in chart order.
@@ -176,44 +164,9 @@ SfcEditor *TestSfcOnline::chartEditor(MainWindow &window)
 
 void TestSfcOnline::buildMixingTank(SfcEditor &e)
 {
-    const auto run = [&e](const char *what, bool done) {
-        QVERIFY2(done, qPrintable(QStringLiteral("%1: %2").arg(QLatin1String(what), e.lastMessage())));
-    };
-    run("new chart", e.createChart());
-    const quint64 init = e.stepId(QStringLiteral("Init"));
-    QVERIFY(init);
-    quint64 last = transitionAfter(e, init);
-    run("start condition", e.setTransitionCondition(last, QStringLiteral("SB1")));
-    struct Stage {
-        const char *name;
-        const char *action;
-        const char *condition;
-    };
-    const Stage stages[] = {{"Fill_A", "Y1", "L2"}, {"Fill_B", "Y2", "L1"}, {"Mix", "M", "Mix.T >= T#3s"},
-        {"Drain", "Y3", "NOT L3 AND NOT SB2"}};
-    for (const Stage &stage : stages) {
-        e.select({last});
-        run("insert step-transition", e.insertStepTransitionAfter());
-        const quint64 step = e.selection().front();
-        editors::sfc::StepProperties properties = *editors::sfc::stepProperties(e.document(), step);
-        properties.name = QLatin1String(stage.name);
-        run("rename step", e.setStepProperties(step, properties));
-        run("add action", e.addActionAssociation(step, editors::sfc::actionAssociation(QStringLiteral("N"), QLatin1String(stage.action))));
-        last = transitionAfter(e, step);
-        run("condition", e.setTransitionCondition(last, QLatin1String(stage.condition)));
-    }
-    quint64 jump = 0;
-    for (const Element &element : e.document().elements)
-        if (std::holds_alternative<model::JumpStep>(element))
-            jump = model::header(element).localId;
-    e.select({jump});
-    run("retarget jump", e.insertJump(QStringLiteral("Fill_A")));
-    e.select({last, jump});
-    run("alternative branch", e.insertAlternativeBranch(true));
-    const quint64 stopTransition = e.selection().front();
-    run("stop condition", e.setTransitionCondition(stopTransition, QStringLiteral("NOT L3 AND SB2")));
-    e.select({stopTransition});
-    run("jump to Init", e.insertJump(QStringLiteral("Init")));
+    tests::buildMixingTank(e, "Mix.T >= T#3s", [&e](const char *what, const std::function<bool()> &command) {
+        QVERIFY2(command(), qPrintable(QStringLiteral("%1: %2").arg(QLatin1String(what), e.lastMessage())));
+    });
 }
 
 void TestSfcOnline::mixingTankRunsOnlineInTheWindow()

@@ -497,6 +497,7 @@ void TestCli::renderDrawsCharts()
     const Result result = cli({QStringLiteral("render"), sfcCorpusFile(), QStringLiteral("--pou"),
         QStringLiteral("CounterSFC"), out});
     QCOMPARE(result.err, QString());
+    QCOMPARE(result.out, QString());
     QCOMPARE(result.exitCode, 0);
     QFile file(out);
     QVERIFY(file.open(QIODevice::ReadOnly));
@@ -527,6 +528,10 @@ void TestCli::renderRefuses_data()
                                   << QStringLiteral("iecstudio-cli: render: x.bmp: the picture must end in .svg, .png or .pdf.");
     QTest::newRow("no --pou") << QStringList {QStringLiteral("render"), file, QStringLiteral("x.svg")} << 2
                               << QStringLiteral("Usage: iecstudio-cli render FILE --pou NAME OUT.svg|OUT.png|OUT.pdf");
+    QTest::newRow("--pou without a name") << QStringList {QStringLiteral("render"), file, QStringLiteral("x.svg"), QStringLiteral("--pou")} << 2
+                                          << QStringLiteral("iecstudio-cli: render: --pou needs the name of a POU.");
+    QTest::newRow("unknown option") << QStringList {QStringLiteral("render"), file, QStringLiteral("--zoom"), QStringLiteral("x.svg")} << 2
+                                    << QStringLiteral("iecstudio-cli: render: unknown option '--zoom'.");
     QTest::newRow("unwritable") << QStringList {QStringLiteral("render"), file, QStringLiteral("--pou"),
         QStringLiteral("CounterSFC"), QStringLiteral("/nonexistent-dir/x.svg")} << 3
                                 << QStringLiteral("iecstudio-cli: render: Cannot write /nonexistent-dir/x.svg.");
@@ -542,6 +547,7 @@ void TestCli::renderRefuses()
     const Result result = cli(arguments);
     QCOMPARE(result.exitCode, exitCode);
     QCOMPARE(result.err.section(QLatin1Char('\n'), 0, 0), message);
+    QCOMPARE(result.out, QString());
 }
 
 QTEST_GUILESS_MAIN(TestCli)

@@ -153,6 +153,23 @@ private Q_SLOTS:
         QCOMPARE(view.gridSize(), 10);
     }
 
+    void fitToWindowOfAHiddenViewUsesItsSize()
+    {
+        BoxPolicy policy;
+        DiagramScene scene(m_model, m_ref, policy);
+        scene.rebuild();
+        DiagramView view;
+        view.setScene(&scene);
+        view.resize(400, 300);
+        QVERIFY(!view.isVisible());
+        view.fitToWindow();
+        // The two boxes with their margin are 160 x 40: the width decides, not the size the
+        // viewport of a view never shown has.
+        const QSize inside = view.contentsRect().size();
+        QVERIFY(inside.width() > 390);
+        QCOMPARE(view.zoom(), inside.width() / 160.0);
+    }
+
     void exportsPictures()
     {
         BoxPolicy policy;

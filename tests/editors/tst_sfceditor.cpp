@@ -11,6 +11,7 @@
 #include "model/plcopen/writer.h"
 #include "model/projectmodel.h"
 #include "model/sfcoptions.h"
+#include "tests/editors/sfcmixingtank.h"
 
 #include <QAction>
 #include <QDir>
@@ -23,6 +24,7 @@ using namespace iec;
 using namespace iec::editors::sfc;
 using model::BodyRef;
 using model::Element;
+using iec::tests::transitionAfter;
 
 namespace {
 
@@ -48,19 +50,6 @@ QString shotDir()
     const QString dir = qEnvironmentVariable("IEC_SHOT_DIR", QDir::tempPath() + QStringLiteral("/iec-sfc-shots"));
     QDir().mkpath(dir);
     return dir;
-}
-
-// The transition right below a step (its output wire's target).
-quint64 transitionAfter(const SfcEditor &editor, quint64 stepId)
-{
-    for (const Element &e : editor.document().elements) {
-        if (const auto *t = std::get_if<model::Transition>(&e); t && t->connectionPointIn) {
-            for (const auto &c : t->connectionPointIn->connections)
-                if (c.refLocalId == stepId)
-                    return t->localId;
-        }
-    }
-    return 0;
 }
 
 QString conditionOf(const SfcEditor &editor, quint64 transitionId)
@@ -103,50 +92,11 @@ private:
         }
     };
 
-    // Builds the mixing tank: Init -SB1-> Fill_A (Y1) -L2-> Fill_B (Y2) -L1-> Mix (M) -Mix.T>=T#5s->
-    // Drain (Y3) -> [NOT L3 AND NOT SB2 -> Fill_A | NOT L3 AND SB2 -> Init].
+    // Builds the mixing tank (sfcmixingtank.h) with Mix.T >= T#5s, each command one undo step.
     static void buildMixingTank(Fixture &f)
     {
-        SfcEditor &e = *f.editor;
-        f.run("new chart", [&] { return e.createChart(); });
-        const quint64 init = e.stepId(QStringLiteral("Init"));
-        QVERIFY(init);
-        quint64 last = transitionAfter(e, init);
-        f.run("start condition", [&] { return e.setTransitionCondition(last, QStringLiteral("SB1")); });
-        struct Stage {
-            const char *name;
-            const char *action;
-            const char *condition;
-        };
-        const Stage stages[] = {{"Fill_A", "Y1", "L2"}, {"Fill_B", "Y2", "L1"}, {"Mix", "M", "Mix.T >= T#5s"},
-            {"Drain", "Y3", "NOT L3 AND NOT SB2"}};
-        for (const Stage &stage : stages) {
-            e.select({last});
-            f.run("insert step-transition", [&] { return e.insertStepTransitionAfter(); });
-            const quint64 step = e.selection().front();
-            StepProperties properties = *stepProperties(e.document(), step);
-            properties.name = QLatin1String(stage.name);
-            f.run("rename step", [&] { return e.setStepProperties(step, properties); });
-            f.run("add action", [&] {
-                return e.addActionAssociation(step, actionAssociation(QStringLiteral("N"), QLatin1String(stage.action)));
-            });
-            last = transitionAfter(e, step);
-            f.run("condition", [&] { return e.setTransitionCondition(last, QLatin1String(stage.condition)); });
-        }
-        // The chain ends in the jump of the new chart: back to Fill_A for the next batch ...
-        quint64 jump = 0;
-        for (const Element &element : e.document().elements)
-            if (std::holds_alternative<model::JumpStep>(element))
-                jump = model::header(element).localId;
-        e.select({jump});
-        f.run("retarget jump", [&] { return e.insertJump(QStringLiteral("Fill_A")); });
-        // ... or, when SB2 asked to stop, to Init at the end of the batch.
-        e.select({last, jump});
-        f.run("alternative branch", [&] { return e.insertAlternativeBranch(true); });
-        const quint64 stopTransition = e.selection().front();
-        f.run("stop condition", [&] { return e.setTransitionCondition(stopTransition, QStringLiteral("NOT L3 AND SB2")); });
-        e.select({stopTransition});
-        f.run("jump to Init", [&] { return e.insertJump(QStringLiteral("Init")); });
+        tests::buildMixingTank(*f.editor, "Mix.T >= T#5s",
+            [&f](const char *what, const std::function<bool()> &command) { f.run(what, command); });
     }
 
 private Q_SLOTS:

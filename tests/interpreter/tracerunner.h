@@ -9,6 +9,7 @@
 #include "interpreter/runtime/runtime.h"
 
 #include <QStringList>
+#include <QTest>
 
 namespace iec::interp::testing {
 
@@ -19,15 +20,22 @@ inline QString qualified(const Runtime &runtime, const QString &name)
     return runtime.find(local) ? local : name;
 }
 
-// The errors among `diagnostics`, as "Pou:line:column: error: ..." joined by " | ".
-inline QString errorsOf(const Diagnostics &diagnostics)
+// The diagnostics (only the errors when `errorsOnly`), as "Pou:line:column: severity: ..."
+// joined by " | ".
+inline QString diagnosticsText(const Diagnostics &diagnostics, bool errorsOnly)
 {
     QStringList lines;
     for (const Diagnostic &d : diagnostics.all()) {
-        if (d.severity == Diagnostic::Severity::Error)
+        if (!errorsOnly || d.severity == Diagnostic::Severity::Error)
             lines << d.toString();
     }
     return lines.join(QStringLiteral(" | "));
+}
+
+// The errors among `diagnostics`, as "Pou:line:column: error: ..." joined by " | ".
+inline QString errorsOf(const Diagnostics &diagnostics)
+{
+    return diagnosticsText(diagnostics, true);
 }
 
 // Runs the steps on `runtime` (see the top of this file). Returns an empty string when every
@@ -87,5 +95,36 @@ inline QString runTrace(const QString &source, const QStringList &steps, const C
     Runtime runtime(module, options.cycleNs);
     return runSteps(runtime, steps);
 }
+
+// Table-driven traces (opt in with `using namespace iec::interp::testing::table;`): a _data
+// function calls columns() and adds rows with row() or expr(); the test function calls check().
+namespace table {
+
+inline void columns()
+{
+    QTest::addColumn<QString>("source");
+    QTest::addColumn<QStringList>("steps");
+}
+
+inline void row(const char *name, const QByteArray &source, const QStringList &steps)
+{
+    QTest::newRow(name) << QString::fromUtf8(source) << steps;
+}
+
+// A one-cycle row: VAR block declarations, statements, expectations after the cycle.
+inline void expr(const char *name, const char *declarations, const char *body, const char *expectations)
+{
+    row(name, QByteArray("VAR ") + declarations + " END_VAR\n" + body, {QStringLiteral("=> ") + QString::fromUtf8(expectations)});
+}
+
+// Runs the row's trace; the test fails with what went wrong.
+inline void check()
+{
+    QFETCH(QString, source);
+    QFETCH(QStringList, steps);
+    QCOMPARE(runTrace(source, steps), QString());
+}
+
+} // namespace table
 
 } // namespace iec::interp::testing

@@ -317,7 +317,7 @@ void TestProjectSource::namedGlobalListsQualifyTheirVariables()
     const QString main = pou(QStringLiteral("Main"), QStringLiteral("program"),
         QStringLiteral("<localVars>") + var(QStringLiteral("Valve"), QStringLiteral("<INT/>"))
             + QStringLiteral("</localVars>"),
-        QStringLiteral("IO.Valve := IO.Valve OR Level > 5;\nValve := Valve + 1;\nHMI.Count := HMI.Count + 1;"));
+        QStringLiteral("IO.Valve := IO.Valve OR Level > 5;\nValve := Valve + 1;\nHMI.Count := hmi.COUNT + 1;"));
     const QString configuration = QStringLiteral(R"(<configuration name="C"><resource name="R">
         <task name="T" interval="T#10ms" priority="0"><pouInstance name="Main" typeName="Main"/></task>
         <globalVars name="IO">%1%2</globalVars><globalVars name="HMI">%3</globalVars>

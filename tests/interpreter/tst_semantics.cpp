@@ -34,6 +34,9 @@ void TestSemantics::diagnostics_data()
     row("typed literals never wrap", "PROGRAM Main\nVAR i : INT; b : BYTE; END_VAR\ni := INT#40000;\nb := BYTE#-1;\nb := BYTE#255; i := INT#-32768;\nEND_PROGRAM",
         "Main:3:6: error: The value INT#40000 does not fit into INT (-32768 to 32767).\n"
         "Main:4:6: error: The value BYTE#-1 does not fit into BYTE (0 to 255).");
+    row("typed 64-bit literals never wrap", "PROGRAM Main\nVAR u : ULINT; l : LINT; END_VAR\nu := ULINT#-1;\nl := LINT#9223372036854775808;\nEND_PROGRAM",
+        "Main:3:6: error: The value ULINT#-1 does not fit into ULINT.\n"
+        "Main:4:6: error: The value LINT#9223372036854775808 does not fit into LINT.");
     row("initial value out of range", "PROGRAM Main\nVAR b : BYTE := 256; END_VAR\nEND_PROGRAM",
         "Main:2:17: error: The value 256 does not fit into BYTE (0 to 255).");
     row("condition must be bool", "PROGRAM Main\nVAR i : INT; END_VAR\nIF i THEN i := 0; END_IF;\nEND_PROGRAM",

@@ -26,11 +26,8 @@ private Q_SLOTS:
 
 void TestStatementsAudit::statements_data()
 {
-    QTest::addColumn<QString>("source");
-    QTest::addColumn<QStringList>("steps");
-    const auto row = [](const char *name, const char *source, const QStringList &steps) {
-        QTest::newRow(name) << QString::fromUtf8(source) << steps;
-    };
+    table::columns();
+    using table::row;
     row("IF, ELSIF, ELSE",
         "VAR n : INT; r : INT; END_VAR\nn := n + 1;\nIF n = 1 THEN r := 1; ELSIF n = 2 THEN r := 2; ELSIF n = 3 THEN r := 3; ELSE r := 4; END_IF;",
         {"=> r=1", "=> r=2", "=> r=3", "=> r=4"});
@@ -97,18 +94,13 @@ void TestStatementsAudit::statements_data()
 
 void TestStatementsAudit::statements()
 {
-    QFETCH(QString, source);
-    QFETCH(QStringList, steps);
-    QCOMPARE(runTrace(source, steps), QString());
+    table::check();
 }
 
 void TestStatementsAudit::instructionList_data()
 {
-    QTest::addColumn<QString>("source");
-    QTest::addColumn<QStringList>("steps");
-    const auto row = [](const char *name, const char *source, const QStringList &steps) {
-        QTest::newRow(name) << QString::fromUtf8(source) << steps;
-    };
+    table::columns();
+    using table::row;
     // Seed 002: LD 5, MUL (6, ADD 7, ), ST ERG gives 65.
     row("deferred operation with brackets", "VAR ERG : INT; END_VAR\nLD 5\nMUL (6\nADD 7\n)\nST ERG", {"=> ERG=65"});
     row("nested brackets", "VAR d : INT; END_VAR\nLD 2\nADD (3\nMUL (4\nSUB 1\n)\n)\nST d", {"=> d=11"});
@@ -161,9 +153,7 @@ void TestStatementsAudit::instructionList_data()
 
 void TestStatementsAudit::instructionList()
 {
-    QFETCH(QString, source);
-    QFETCH(QStringList, steps);
-    QCOMPARE(runTrace(source, steps), QString());
+    table::check();
 }
 
 void TestStatementsAudit::faults_data()
@@ -289,10 +279,7 @@ void TestStatementsAudit::diagnostics()
     QFETCH(QString, messages);
     Diagnostics diagnostics;
     const auto module = compileText(source, diagnostics);
-    QStringList lines;
-    for (const Diagnostic &d : diagnostics.all())
-        lines << d.toString();
-    QCOMPARE(lines.join(QStringLiteral(" | ")), messages);
+    QCOMPARE(diagnosticsText(diagnostics, false), messages);
     QVERIFY(!module);
 }
 
@@ -323,10 +310,7 @@ void TestStatementsAudit::warnings()
     QFETCH(QStringList, steps);
     Diagnostics diagnostics;
     QVERIFY(compileText(source, diagnostics));
-    QStringList lines;
-    for (const Diagnostic &d : diagnostics.all())
-        lines << d.toString();
-    QCOMPARE(lines.join(QStringLiteral(" | ")), messages);
+    QCOMPARE(diagnosticsText(diagnostics, false), messages);
     QCOMPARE(runTrace(source, steps), QString());
 }
 

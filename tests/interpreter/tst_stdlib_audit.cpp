@@ -8,6 +8,7 @@
 
 using namespace iec::interp;
 using namespace iec::interp::testing;
+using namespace iec::interp::testing::table;
 
 class TestStdlibAudit : public QObject
 {
@@ -28,29 +29,6 @@ private Q_SLOTS:
     void writesOfEnumsAndChars_data();
     void writesOfEnumsAndChars();
     void inputVariablesAreWrittenInTheImage();
-
-private:
-    static void columns()
-    {
-        QTest::addColumn<QString>("source");
-        QTest::addColumn<QStringList>("steps");
-    }
-    static void row(const char *name, const char *source, const QStringList &steps)
-    {
-        QTest::newRow(name) << QString::fromUtf8(source) << steps;
-    }
-    // One cycle: VAR block declarations, statements, expectations after the cycle.
-    static void expr(const char *name, const char *declarations, const char *body, const char *expectations)
-    {
-        const QByteArray source = QByteArray("VAR ") + declarations + " END_VAR\n" + body;
-        row(name, source.constData(), {QStringLiteral("=> ") + QString::fromUtf8(expectations)});
-    }
-    static void check()
-    {
-        QFETCH(QString, source);
-        QFETCH(QStringList, steps);
-        QCOMPARE(runTrace(source, steps), QString());
-    }
 };
 
 void TestStdlibAudit::literals_data()

@@ -6,6 +6,7 @@
 
 using namespace iec::interp;
 using namespace iec::interp::testing;
+using namespace iec::interp::testing::table;
 
 class TestVm : public QObject
 {
@@ -31,29 +32,6 @@ private Q_SLOTS:
     void instructionList_data();
     void instructionList() { check(); }
     void sameTraceInStAndIl();
-
-private:
-    static void columns()
-    {
-        QTest::addColumn<QString>("source");
-        QTest::addColumn<QStringList>("steps");
-    }
-    static void row(const char *name, const char *source, const QStringList &steps)
-    {
-        QTest::newRow(name) << QString::fromUtf8(source) << steps;
-    }
-    // A one-cycle check of expressions: VAR block declarations, statements, expectations.
-    static void expr(const char *name, const char *declarations, const char *body, const char *expectations)
-    {
-        const QByteArray source = QByteArray("VAR ") + declarations + " END_VAR\n" + body;
-        row(name, source.constData(), {QStringLiteral("=> ") + QString::fromUtf8(expectations)});
-    }
-    static void check()
-    {
-        QFETCH(QString, source);
-        QFETCH(QStringList, steps);
-        QCOMPARE(runTrace(source, steps), QString());
-    }
 };
 
 void TestVm::arithmetic_data()

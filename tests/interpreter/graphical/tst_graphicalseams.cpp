@@ -18,6 +18,7 @@ class TestGraphicalSeams : public QObject
 private Q_SLOTS:
     void conditionWiredToContactsAndBlocks();
     void conditionThatNeedsStatements();
+    void oneNetworkForManyConditions();
     void codesysCfcRunsInItsOrder();
     void codesysCfcBodyCompilesInTheProject();
 };
@@ -94,6 +95,34 @@ void TestGraphicalSeams::conditionThatNeedsStatements()
     QCOMPARE(ast::dump(*value), QStringLiteral("__rtrig1.Q"));
     QCOMPARE(ast::dump(setup), QStringLiteral("(call __rtrig1(CLK := start))"));
     QCOMPARE(pou.sections.size(), size_t(1));
+}
+
+// A chart with many wired transitions builds its network once: every condition lowers as with
+// lowerInput, and a broken network is reported once, not once per condition.
+void TestGraphicalSeams::oneNetworkForManyConditions()
+{
+    Diagram d;
+    d.rail(1).contact(2, "a", {{1}}).contact(3, "b", {{2}}, 0, 0, true).contact(4, "c", {{1}}, 100, 40);
+    const model::Body ladder = chartWithCondition(d, {{3}, {4}});
+    ast::Pou pou;
+    interp::Diagnostics diagnostics;
+    interp::graphical::LoweringContext context {pou, QStringLiteral("Chart"), diagnostics};
+    const interp::graphical::InputLowering inputs(ladder, context.owner, diagnostics);
+    for (int i = 0; i < 2; ++i) {
+        const auto value = inputs.lower(conditionOf(ladder), context);
+        QVERIFY(value);
+        QCOMPARE(ast::dump(*value), QStringLiteral("(OR (AND a (NOT b)) c)"));
+    }
+    QCOMPARE(errorsOf(diagnostics), QString());
+
+    Diagram broken;
+    broken.continuation(1, "nowhere");
+    const model::Body body = chartWithCondition(broken, {{1}});
+    const interp::graphical::InputLowering brokenInputs(body, context.owner, diagnostics);
+    QVERIFY(!brokenInputs.lower(conditionOf(body), context));
+    QVERIFY(!brokenInputs.lower(conditionOf(body), context));
+    QCOMPARE(errorsOf(diagnostics), QStringLiteral("Chart@1: There is no connector named 'nowhere' for this continuation."));
+    QVERIFY(pou.sections.empty());
 }
 
 // CODESYS writes a CFC as an empty ST body with the diagram in addData; its executionOrderId

@@ -451,6 +451,33 @@ void TestSfcEngine::chartState()
     const auto programs = sfc::programChartStates(runtime, project);
     QCOMPARE(programs.size(), size_t(1));
     QCOMPARE(programs.front().steps[1].active, true);
+
+    // The same state through a layout built once; conditions are read where the chart left them.
+    QCOMPARE(state->actions[1].active, true);
+    QCOMPARE(state->transitions[0].condition, false); // Init is not active: its transition is not evaluated
+    QCOMPARE(state->transitions[1].condition, false); // NOT go
+    const auto layout = sfc::chartLayout(project.types.pous.front());
+    QVERIFY(layout);
+    QCOMPARE(layout->transitions.size(), size_t(2));
+    QCOMPARE(state->transitions[0].localId, layout->transitions[0]);
+    QCOMPARE(state->transitions[1].localId, layout->transitions[1]);
+    QVERIFY(!sfc::chartState(runtime, *layout, QStringLiteral("Nobody")));
+    QVERIFY(runtime.write(QStringLiteral("Main.go"), QStringLiteral("FALSE")) == std::nullopt);
+    QVERIFY(runtime.runCycles(1));
+    const auto fired = sfc::chartState(runtime, *layout, QStringLiteral("Main"));
+    QVERIFY(fired);
+    QCOMPARE(fired->pou, QStringLiteral("Main"));
+    QCOMPARE(fired->steps[1].active, true); // the step changes in the next cycle
+    QCOMPARE(fired->transitions[0].condition, false);
+    QCOMPARE(fired->transitions[1].condition, true);
+    QVERIFY(runtime.runCycles(1));
+    const auto back = sfc::chartState(runtime, *layout, QStringLiteral("Main"));
+    QVERIFY(back);
+    QCOMPARE(back->steps[0].active, true);
+    QCOMPARE(back->steps[1].active, false);
+    QCOMPARE(back->steps[1].elapsedNs, std::int64_t(0));
+    QCOMPARE(back->actions[0].active, false);
+    QCOMPARE(back->transitions[1].condition, false);
 }
 
 void TestSfcEngine::ilCondition()
