@@ -1,0 +1,273 @@
+#include "editors/ld/lditems.h"
+
+#include <QCoreApplication>
+#include <QFontMetricsF>
+#include <QPainter>
+
+namespace iec::editors::ld {
+
+using namespace model;
+
+namespace {
+
+const QColor kInk(0x20, 0x20, 0x20);
+const QColor kComment(0x20, 0x80, 0x20);
+const QColor kBand(0xf4, 0xf6, 0xfa);
+
+QString variableOf(const Element &e)
+{
+    if (const auto *contact = std::get_if<Contact>(&e))
+        return contact->variable;
+    if (const auto *coil = std::get_if<Coil>(&e))
+        return coil->variable;
+    return {};
+}
+
+// The letter inside a contact or coil: / for negated, P or N for edges, S or R for storage.
+QString modifierOf(const Element &e)
+{
+    const auto letters = [](bool negated, EdgeModifier edge, StorageModifier storage) {
+        if (storage == StorageModifier::Set)
+            return QStringLiteral("S");
+        if (storage == StorageModifier::Reset)
+            return QStringLiteral("R");
+        if (edge == EdgeModifier::Rising)
+            return QStringLiteral("P");
+        if (edge == EdgeModifier::Falling)
+            return QStringLiteral("N");
+        return negated ? QStringLiteral("/") : QString();
+    };
+    if (const auto *contact = std::get_if<Contact>(&e))
+        return letters(contact->negated, contact->edge, contact->storage);
+    if (const auto *coil = std::get_if<Coil>(&e))
+        return letters(coil->negated, coil->edge, coil->storage);
+    return {};
+}
+
+QPen symbolPen(bool powered)
+{
+    return powered ? QPen(kPowerBlue, 2.5) : QPen(kInk, 1.4);
+}
+
+// The name above a contact or coil (with its online value after it): centred on the symbol, or
+// ending at its right edge when `endAtRight` (a coil's long name; the layout keeps room on the
+// left). Tight, so that a click beside the name does not hit the element.
+QRectF nameRect(const QString &text, const QSizeF &size, bool endAtRight)
+{
+    const double width = QFontMetricsF(blockFont()).horizontalAdvance(text) + 2;
+    if (endAtRight && width > size.width() + 12)
+        return QRectF(size.width() + 6 - width, -17, width, 14);
+    return QRectF((size.width() - width) / 2, -17, width, 14);
+}
+
+QString nameWithValue(const Element &e, const QString &online)
+{
+    return variableOf(e) + (online.isEmpty() ? QString() : QStringLiteral(" = ") + online);
+}
+
+} // namespace
+
+// ---- contacts
+
+ContactItem::ContactItem(const Element &element, const QRectF &rect)
+    : ElementItem(element, rect)
+{
+}
+
+QRectF ContactItem::extent() const
+{
+    return frame().united(nameRect(nameWithValue(m_element, onlineText()), m_size, false));
+}
+
+void ContactItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QWidget *)
+{
+    painter->setRenderHint(QPainter::Antialiasing);
+    const double w = m_size.width();
+    const double h = m_size.height();
+    const double mid = h / 2;
+    painter->setPen(symbolPen(isActive()));
+    painter->drawLine(QPointF(0, mid), QPointF(w * 0.3, mid));
+    painter->drawLine(QPointF(w * 0.7, mid), QPointF(w, mid));
+    painter->drawLine(QPointF(w * 0.3, 0), QPointF(w * 0.3, h));
+    painter->drawLine(QPointF(w * 0.7, 0), QPointF(w * 0.7, h));
+    const QString modifier = modifierOf(m_element);
+    if (modifier == QLatin1String("/"))
+        painter->drawLine(QPointF(w * 0.38, h - 2), QPointF(w * 0.62, 2));
+    else if (!modifier.isEmpty()) {
+        QFont font = blockFont();
+        font.setBold(true);
+        painter->setFont(font);
+        painter->drawText(QRectF(w * 0.3, 0, w * 0.4, h), Qt::AlignCenter, modifier);
+    }
+    const QString name = nameWithValue(m_element, onlineText());
+    paintName(painter, name, nameRect(name, m_size, false), Qt::AlignHCenter);
+    paintDecorations(painter);
+}
+
+// ---- coils
+
+CoilItem::CoilItem(const Element &element, const QRectF &rect)
+    : ElementItem(element, rect)
+{
+}
+
+QRectF CoilItem::extent() const
+{
+    return frame().united(nameRect(nameWithValue(m_element, onlineText()), m_size, true));
+}
+
+void CoilItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QWidget *)
+{
+    painter->setRenderHint(QPainter::Antialiasing);
+    const double w = m_size.width();
+    const double h = m_size.height();
+    const double mid = h / 2;
+    painter->setPen(symbolPen(isActive()));
+    painter->drawLine(QPointF(0, mid), QPointF(w * 0.25, mid));
+    painter->drawLine(QPointF(w * 0.75, mid), QPointF(w, mid));
+    // The two arcs of ( ).
+    const QRectF left(w * 0.25, 1, w * 0.3, h - 2);
+    const QRectF right(w * 0.45, 1, w * 0.3, h - 2);
+    painter->drawArc(left, 100 * 16, 160 * 16);
+    painter->drawArc(right, -80 * 16, 160 * 16);
+    const QString modifier = modifierOf(m_element);
+    if (modifier == QLatin1String("/"))
+        painter->drawLine(QPointF(w * 0.4, h - 3), QPointF(w * 0.6, 3));
+    else if (!modifier.isEmpty()) {
+        QFont font = blockFont();
+        font.setBold(true);
+        painter->setFont(font);
+        painter->drawText(QRectF(w * 0.25, 0, w * 0.5, h), Qt::AlignCenter, modifier);
+    }
+    const QString name = nameWithValue(m_element, onlineText());
+    paintName(painter, name, nameRect(name, m_size, true), Qt::AlignHCenter);
+    paintDecorations(painter);
+}
+
+// ---- jumps and returns
+
+OutputMarkItem::OutputMarkItem(const Element &element, const QRectF &rect)
+    : ElementItem(element, rect)
+{
+}
+
+void OutputMarkItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QWidget *)
+{
+    painter->setRenderHint(QPainter::Antialiasing);
+    const double h = m_size.height();
+    painter->setPen(symbolPen(isActive()));
+    if (const auto *jump = std::get_if<Jump>(&m_element)) {
+        // An arrow, then the label it jumps to.
+        painter->drawLine(QPointF(0, h / 2), QPointF(14, h / 2));
+        painter->setBrush(isActive() ? kPowerBlue : kInk);
+        painter->drawPolygon(QPolygonF {QPointF(10, h / 2 - 5), QPointF(18, h / 2), QPointF(10, h / 2 + 5)});
+        paintName(painter, jump->label, QRectF(22, 0, m_size.width() - 22, h), Qt::AlignLeft);
+    } else {
+        painter->setBrush(Qt::white);
+        painter->drawRect(frame().adjusted(0, 2, 0, -2));
+        paintName(painter, std::holds_alternative<Return>(m_element) ? QStringLiteral("RETURN") : QString(), frame(), Qt::AlignHCenter);
+    }
+    paintDecorations(painter);
+}
+
+// ---- rails
+
+RailItem::RailItem(const Element &element, const QRectF &rect)
+    : ElementItem(element, rect)
+{
+    setFlag(ItemIsSelectable, false);
+}
+
+void RailItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QWidget *)
+{
+    painter->fillRect(frame(), isActive() ? kPowerBlue : kInk);
+}
+
+// ---- networks
+
+NetworkItem::NetworkItem(int number, const QRectF &band, const QString &label, const QRectF &labelRect,
+    const QString &comment, const QRectF &commentRect, bool freehand)
+    : m_number(number)
+    , m_band(band)
+    , m_label(label)
+    , m_labelRect(labelRect)
+    , m_comment(comment)
+    , m_commentRect(commentRect)
+    , m_freehand(freehand)
+{
+    setZValue(-2);
+}
+
+QRectF NetworkItem::numberRect() const
+{
+    return QRectF(m_band.left(), m_band.top(), 44, 20);
+}
+
+void NetworkItem::setCurrent(bool current)
+{
+    if (m_current == current)
+        return;
+    m_current = current;
+    update();
+}
+
+void NetworkItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QWidget *)
+{
+    if (m_current)
+        painter->fillRect(m_band, kBand);
+    painter->setPen(QPen(QColor(0xc8, 0xcc, 0xd4), 1));
+    painter->drawLine(m_band.bottomLeft(), m_band.bottomRight());
+    QFont font = blockFont();
+    painter->setFont(font);
+    painter->setPen(m_current ? kSelectionColor : QColor(0x70, 0x70, 0x70));
+    painter->drawText(numberRect().adjusted(4, 2, 0, 0), Qt::AlignLeft | Qt::AlignTop, QStringLiteral("%1").arg(m_number, 4, 10, QLatin1Char('0')));
+    if (m_current) {
+        painter->setPen(QPen(kSelectionColor, 1, Qt::DashLine));
+        painter->drawRect(numberRect().adjusted(1, 1, -1, -1));
+    }
+    if (!m_label.isEmpty()) {
+        font.setBold(true);
+        painter->setFont(font);
+        painter->setPen(kInk);
+        painter->drawText(m_labelRect, Qt::AlignLeft | Qt::AlignVCenter, m_label + QLatin1Char(':'));
+        font.setBold(false);
+    }
+    if (!m_comment.isEmpty()) {
+        font.setItalic(true);
+        painter->setFont(font);
+        painter->setPen(kComment);
+        painter->drawText(m_commentRect, Qt::AlignLeft | Qt::AlignTop, m_comment);
+    }
+    if (m_freehand) {
+        font.setItalic(true);
+        painter->setFont(font);
+        painter->setPen(QColor(0x90, 0x90, 0x90));
+        painter->drawText(QRectF(m_band.left() + 4, m_band.bottom() - 16, 40, 14), Qt::AlignLeft,
+            QCoreApplication::translate("iec::editors::ld::LdEditor", "free"));
+    }
+}
+
+// ---- wire cursor
+
+WireCursorItem::WireCursorItem(QPointF at)
+{
+    setPos(at);
+    setZValue(5);
+}
+
+QRectF WireCursorItem::boundingRect() const
+{
+    return QRectF(-6, -6, 12, 12);
+}
+
+void WireCursorItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QWidget *)
+{
+    painter->setPen(QPen(kSelectionColor, 1));
+    painter->setBrush(kSelectionColor);
+    painter->drawRect(QRectF(-3.5, -3.5, 7, 7));
+    painter->setBrush(Qt::NoBrush);
+    painter->setPen(QPen(kSelectionColor, 1, Qt::DashLine));
+    painter->drawRect(QRectF(-5.5, -5.5, 11, 11));
+}
+
+} // namespace iec::editors::ld

@@ -1,0 +1,152 @@
+#include "editors/ld/ldnetwork.h"
+
+#include <algorithm>
+
+namespace iec::editors::ld {
+
+using namespace model;
+
+const Element *LadderDocument::element(quint64 localId) const
+{
+    const auto it = m_index.find(localId);
+    return it == m_index.end() ? nullptr : &elements[it->second];
+}
+
+Element *LadderDocument::element(quint64 localId)
+{
+    const auto it = m_index.find(localId);
+    return it == m_index.end() ? nullptr : &elements[it->second];
+}
+
+int LadderDocument::indexOf(quint64 localId) const
+{
+    const auto it = m_index.find(localId);
+    return it == m_index.end() ? -1 : int(it->second);
+}
+
+quint64 LadderDocument::allocateId()
+{
+    for (const Element &e : elements)
+        idFloor = std::max(idFloor, header(e).localId);
+    return ++idFloor;
+}
+
+quint64 LadderDocument::add(Element element, int index)
+{
+    const quint64 id = allocateId();
+    header(element).localId = id;
+    if (index < 0 || index > int(elements.size()))
+        elements.push_back(std::move(element));
+    else
+        elements.insert(elements.begin() + index, std::move(element));
+    reindex();
+    return id;
+}
+
+void LadderDocument::remove(const std::vector<quint64> &localIds)
+{
+    for (const Element &e : elements)
+        idFloor = std::max(idFloor, header(e).localId);
+    std::erase_if(elements, [&](const Element &e) { return std::ranges::find(localIds, header(e).localId) != localIds.end(); });
+    // Wires from the removed elements go with them.
+    for (Element &e : elements) {
+        for (ConnectionPointIn *point : inputPoints(e))
+            std::erase_if(point->connections,
+                [&](const Connection &c) { return std::ranges::find(localIds, c.refLocalId) != localIds.end(); });
+    }
+    for (LdNetwork &network : networks)
+        std::erase_if(network.members, [&](quint64 id) { return std::ranges::find(localIds, id) != localIds.end(); });
+    for (quint64 id : localIds)
+        boxPins.erase(id);
+    reindex();
+}
+
+int LadderDocument::networkOf(quint64 localId) const
+{
+    for (std::size_t n = 0; n < networks.size(); ++n) {
+        if (std::ranges::find(networks[n].members, localId) != networks[n].members.end())
+            return int(n);
+    }
+    return -1;
+}
+
+RungPins LadderDocument::pinsOf(quint64 boxId) const
+{
+    const auto it = boxPins.find(boxId);
+    return it == boxPins.end() ? RungPins {} : it->second;
+}
+
+void LadderDocument::reindex()
+{
+    m_index.clear();
+    m_index.reserve(elements.size());
+    for (std::size_t i = 0; i < elements.size(); ++i)
+        m_index.emplace(header(elements[i]).localId, i);
+}
+
+RungRole rungRole(const Element &element)
+{
+    if (std::holds_alternative<Contact>(element))
+        return RungRole::Contact;
+    if (std::holds_alternative<Coil>(element))
+        return RungRole::Coil;
+    if (std::holds_alternative<Block>(element))
+        return RungRole::Box;
+    if (std::holds_alternative<Jump>(element))
+        return RungRole::Jump;
+    if (std::holds_alternative<Return>(element))
+        return RungRole::Return;
+    if (std::holds_alternative<OutVariable>(element))
+        return RungRole::Assignment;
+    return RungRole::Other;
+}
+
+bool isOutput(const Element &element)
+{
+    const RungRole role = rungRole(element);
+    return role == RungRole::Coil || role == RungRole::Jump || role == RungRole::Return || role == RungRole::Assignment;
+}
+
+namespace {
+
+model::AddData *addDataOf(Element &element)
+{
+    if (auto *left = std::get_if<LeftPowerRail>(&element))
+        return &left->addData;
+    if (auto *right = std::get_if<RightPowerRail>(&element))
+        return &right->addData;
+    return nullptr;
+}
+
+} // namespace
+
+bool isNetworkRail(const Element &element)
+{
+    const model::AddData *data = addDataOf(const_cast<Element &>(element));
+    return data && std::ranges::any_of(*data, [](const AddDataEntry &d) { return d.name == kNetworkRailMarker; });
+}
+
+void markNetworkRail(Element &element)
+{
+    if (model::AddData *data = addDataOf(element); data && !isNetworkRail(element))
+        data->push_back(AddDataEntry {kNetworkRailMarker, QStringLiteral("discard"), {}});
+}
+
+void collectElements(const RungNode &node, std::vector<quint64> &out)
+{
+    if (node.isElement()) {
+        out.push_back(node.localId);
+        return;
+    }
+    for (const RungNode &child : node.children)
+        collectElements(child, out);
+}
+
+std::vector<quint64> rungElements(const RungNode &node)
+{
+    std::vector<quint64> ids;
+    collectElements(node, ids);
+    return ids;
+}
+
+} // namespace iec::editors::ld
