@@ -1,12 +1,15 @@
 #include "app/buildcontroller.h"
 
 #include "app/documentarea.h"
+#include "editors/common/diagrameditor.h"
+#include "editors/common/diagramview.h"
 #include "editors/text/codeeditor.h"
 #include "interpreter/compiler/lexer.h"
 #include "interpreter/frontend/projectsource.h"
 #include "model/projectmodel.h"
 
 #include <QTextBlock>
+#include <QTextDocument>
 
 namespace iec::app {
 
@@ -45,6 +48,41 @@ int tokenLengthAt(const QString &lineText, int column)
     return 0;
 }
 
+// The messages about elements of the body titled `title`, for its graphical editor.
+QList<editors::ElementDiagnostic> elementDiagnostics(const QList<Message> &messages, const QString &title)
+{
+    QList<editors::ElementDiagnostic> diagnostics;
+    for (const Message &message : messages) {
+        if (!message.localId || message.pouName.compare(title, Qt::CaseInsensitive) != 0)
+            continue;
+        diagnostics.append({.localId = *message.localId,
+            .severity = message.severity == Message::Severity::Error ? editors::ElementDiagnostic::Severity::Error
+                                                                     : editors::ElementDiagnostic::Severity::Warning,
+            .message = message.text});
+    }
+    return diagnostics;
+}
+
+// The messages with a line in the body titled `title`, underlined in its text editor.
+QList<editors::TextDiagnostic> textDiagnostics(const QList<Message> &messages, const QString &title, const QTextDocument &document)
+{
+    const int lineCount = document.blockCount();
+    QList<editors::TextDiagnostic> underlines;
+    for (const Message &message : messages) {
+        // Declaration diagnostics count lines in the printed declarations, not in the body.
+        if (message.pouName.compare(title, Qt::CaseInsensitive) != 0 || message.line < 1 || message.line > lineCount)
+            continue;
+        const QString lineText = document.findBlockByNumber(message.line - 1).text();
+        underlines.append({.line = message.line,
+            .column = std::max(1, message.column),
+            .length = tokenLengthAt(lineText, message.column),
+            .severity = message.severity == Message::Severity::Error ? editors::TextDiagnostic::Severity::Error
+                                                                     : editors::TextDiagnostic::Severity::Warning,
+            .message = message.text});
+    }
+    return underlines;
+}
+
 } // namespace
 
 QList<Message> messagesOf(const interp::Diagnostics &diagnostics)
@@ -60,7 +98,10 @@ QList<Message> messagesOf(const interp::Diagnostics &diagnostics)
                          .text = text,
                          .pouName = diagnostic.pou,
                          .line = diagnostic.location.line,
-                         .column = diagnostic.location.column});
+                         .column = diagnostic.location.column,
+                         .localId = diagnostic.location.localId >= 0
+                             ? std::optional<quint64>(quint64(diagnostic.location.localId))
+                             : std::nullopt});
     }
     return messages;
 }
@@ -101,27 +142,13 @@ void BuildController::underlineInOpenEditors()
     const model::Project &project = m_projectModel.project();
     for (int index = 0; index < m_documents.count(); ++index) {
         const std::optional<BodyRef> ref = m_documents.bodyAt(index);
-        editors::CodeEditor *editor = ref ? m_documents.textEditorFor(*ref) : nullptr;
-        if (!editor)
+        if (!ref)
             continue;
         const QString title = DocumentArea::title(project, *ref);
-        const int lineCount = editor->document()->blockCount();
-        QList<editors::TextDiagnostic> underlines;
-        for (const Message &message : std::as_const(m_messages)) {
-            // Declaration diagnostics count lines in the printed declarations, not in the body.
-            if (message.pouName.compare(title, Qt::CaseInsensitive) != 0 || message.line < 1
-                || message.line > lineCount)
-                continue;
-            const QString lineText = editor->document()->findBlockByNumber(message.line - 1).text();
-            underlines.append({.line = message.line,
-                               .column = std::max(1, message.column),
-                               .length = tokenLengthAt(lineText, message.column),
-                               .severity = message.severity == Message::Severity::Error
-                                   ? editors::TextDiagnostic::Severity::Error
-                                   : editors::TextDiagnostic::Severity::Warning,
-                               .message = message.text});
-        }
-        editor->setDiagnostics(underlines);
+        if (editors::DiagramEditor *diagram = m_documents.diagramEditorFor(*ref))
+            diagram->setDiagnostics(elementDiagnostics(m_messages, title));
+        if (editors::CodeEditor *editor = m_documents.textEditorFor(*ref))
+            editor->setDiagnostics(textDiagnostics(m_messages, title, *editor->document()));
     }
 }
 
@@ -131,6 +158,11 @@ void BuildController::openLocation(const Message &message)
     if (!ref)
         return;
     m_documents.openBody(*ref);
+    if (editors::DiagramEditor *diagram = m_documents.diagramEditorFor(*ref); diagram && message.localId) {
+        diagram->select({*message.localId});
+        diagram->view()->setFocus();
+        return;
+    }
     editors::CodeEditor *editor = m_documents.textEditorFor(*ref);
     if (editor && message.line > 0 && message.line <= editor->document()->blockCount()) {
         editor->goToLine(message.line, std::max(1, message.column));

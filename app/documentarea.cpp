@@ -8,7 +8,9 @@
 #include "app/undostacks.h"
 #include "editors/datatypes/datatypeeditor.h"
 #include "editors/declarations/declarationeditor.h"
-#include "editors/sfc/sfceditor.h"
+#include "editors/common/diagrameditor.h"
+#include "editors/common/editorregistry.h"
+#include "editors/standardeditors.h"
 #include "editors/text/codeeditor.h"
 #include "editors/text/texteditorwidget.h"
 #include "model/projectmodel.h"
@@ -170,6 +172,7 @@ DocumentArea::DocumentArea(model::ProjectModel &projectModel, QWidget *parent)
     setDocumentMode(true);
     setTabsClosable(true);
     setMovable(true);
+    editors::registerStandardEditors();
     connect(this, &QTabWidget::tabCloseRequested, this, [this](int index) {
         flushEdits();
         closeDocument(index);
@@ -334,25 +337,19 @@ QWidget *DocumentArea::createEditor(const BodyRef &ref)
 QWidget *DocumentArea::createBodyEditor(const BodyRef &ref)
 {
     const model::Body *body = m_projectModel.body(ref);
-    if (body->language() == model::BodyLanguage::SFC) {
-        auto *chart = new editors::sfc::SfcEditor(m_projectModel, ref, &m_undoStacks->pouStack(ref.pou));
-        chart->setOnlineInstance(onlineInstanceOf(m_projectModel.project(), ref.pou));
-        // Double-click on an action, a named transition or an "E"/"X" corner opens that body.
-        connect(chart, &editors::sfc::SfcEditor::openPartRequested, this,
-            [this](model::PouId pou, BodyRef::Part part, const QString &name) { openBody(BodyRef {pou, part, name}); });
-        return chart;
-    }
-    if (body->language() != model::BodyLanguage::ST && body->language() != model::BodyLanguage::IL) {
+    const editors::EditorLanguage language = editors::editorLanguage(*body);
+    if (const editors::EditorFactory *factory = editors::EditorRegistry::instance().find(language))
+        return createDiagramEditor(*factory, ref);
+    if (language != editors::EditorLanguage::ST && language != editors::EditorLanguage::IL) {
         auto *placeholder = new QLabel(tr("This body is written in %1. Its editor is not available in this "
                                           "version; the body is kept unchanged when the project is saved.")
-                                           .arg(languageName(body->language())));
+                                           .arg(editors::editorLanguageName(language)));
         placeholder->setAlignment(Qt::AlignCenter);
         placeholder->setWordWrap(true);
         return placeholder;
     }
-    const auto language
-        = body->language() == model::BodyLanguage::IL ? editors::TextLanguage::IL : editors::TextLanguage::ST;
-    auto *textWidget = new editors::TextEditorWidget(language);
+    auto *textWidget = new editors::TextEditorWidget(
+        language == editors::EditorLanguage::IL ? editors::TextLanguage::IL : editors::TextLanguage::ST);
     textWidget->setOnlineInstanceProvider([this, ref] { return onlineInstanceOf(m_projectModel.project(), ref.pou); });
     connect(textWidget, &editors::TextEditorWidget::addToWatchRequested, this, &DocumentArea::addToWatchRequested);
     editors::CodeEditor *editor = textWidget->editor();
@@ -374,6 +371,49 @@ QWidget *DocumentArea::createBodyEditor(const BodyRef &ref)
     connect(declare, &QAction::triggered, this, [this, ref] { autoDeclareInteractive(ref); });
     editor->addAction(declare);
     return textWidget;
+}
+
+QWidget *DocumentArea::createDiagramEditor(const editors::EditorFactory &factory, const BodyRef &ref)
+{
+    editors::DiagramEditor *editor = factory.createEditor(m_projectModel, ref, &m_undoStacks->pouStack(ref.pou));
+    editor->setOnlineInstance(onlineInstanceOf(m_projectModel.project(), ref.pou));
+    editor->setGridSize(m_gridSize);
+    // Double-click on an action, a named transition or an "E"/"X" corner opens that body.
+    connect(editor, &editors::DiagramEditor::openPartRequested, this,
+        [this](model::PouId pou, BodyRef::Part part, const QString &name) { openBody(BodyRef {pou, part, name}); });
+    connect(editor, &editors::DiagramEditor::prepareValueRequested, this, &DocumentArea::prepareValueRequested);
+    connect(editor, &editors::DiagramEditor::declareVariableRequested, this,
+        [this, editor](const BodyRef &body, const QString &name) { declareInteractive(body, name, editor); });
+    // Completion reads the model when asked, so it always sees the current declarations.
+    auto *completion = new ModelCompletionProvider(m_projectModel, ref.pou);
+    editor->setCompletionProvider(completion);
+    connect(editor, &QObject::destroyed, this, [completion] { delete completion; });
+    return editor;
+}
+
+editors::DiagramEditor *DocumentArea::diagramEditorFor(const BodyRef &ref) const
+{
+    QWidget *document = documentFor(ref);
+    if (auto *editor = qobject_cast<editors::DiagramEditor *>(document))
+        return editor;
+    return document ? document->findChild<editors::DiagramEditor *>() : nullptr;
+}
+
+editors::DiagramEditor *DocumentArea::currentDiagramEditor() const
+{
+    const std::optional<BodyRef> ref = currentBody();
+    return ref ? diagramEditorFor(*ref) : nullptr;
+}
+
+void DocumentArea::setGridSize(int size)
+{
+    m_gridSize = size;
+    for (int index = 0; index < count(); ++index) {
+        if (const std::optional<BodyRef> ref = bodyAt(index)) {
+            if (editors::DiagramEditor *editor = diagramEditorFor(*ref))
+                editor->setGridSize(size);
+        }
+    }
 }
 
 bool DocumentArea::goToDefinition(const BodyRef &from, const QString &path)
@@ -458,11 +498,15 @@ void DocumentArea::autoDeclareInteractive(const BodyRef &ref)
     const QString name = path.section(QLatin1Char('.'), 0, 0).section(QLatin1Char('['), 0, 0).trimmed();
     if (name.isEmpty())
         return;
+    declareInteractive(ref, name, editor, editor->cursorRect().bottomLeft());
+}
+
+void DocumentArea::declareInteractive(const BodyRef &ref, const QString &name, QWidget *anchor, QPoint at)
+{
     flushEdits();
     const model::Project &project = m_projectModel.project();
     if (findVisibleVariable(project, ref.pou, name) || project.findPou(name)) {
-        QToolTip::showText(editor->mapToGlobal(editor->cursorRect().bottomLeft()),
-            tr("%1 is declared already.").arg(name), editor);
+        QToolTip::showText(anchor->mapToGlobal(at), tr("%1 is declared already.").arg(name), anchor);
         return;
     }
     const BodyRef pouBody {ref.pou, BodyRef::Part::Pou, {}};
@@ -477,7 +521,7 @@ void DocumentArea::autoDeclareInteractive(const BodyRef &ref)
         return;
     QString error;
     if (!declareVariable(ref, dialog.row(), &error))
-        QToolTip::showText(editor->mapToGlobal(editor->cursorRect().bottomLeft()), error, editor);
+        QToolTip::showText(anchor->mapToGlobal(at), error, anchor);
 }
 
 void DocumentArea::flushEdits()

@@ -11,6 +11,8 @@ struct Project;
 
 namespace iec::editors {
 class CodeEditor;
+class DiagramEditor;
+struct EditorFactory;
 class DataTypeEditor;
 class DeclarationEditor;
 class OnlineView;
@@ -38,6 +40,11 @@ public:
     QWidget *openBody(const model::BodyRef &ref);
     [[nodiscard]] QWidget *documentFor(const model::BodyRef &ref) const;
     [[nodiscard]] editors::CodeEditor *textEditorFor(const model::BodyRef &ref) const;
+    // The graphical editor (LD, FBD, CFC, SFC) of an open body; nullptr for text or closed tabs.
+    [[nodiscard]] editors::DiagramEditor *diagramEditorFor(const model::BodyRef &ref) const;
+    [[nodiscard]] editors::DiagramEditor *currentDiagramEditor() const;
+    // The settings' grid size for every graphical editor, open now or later.
+    void setGridSize(int size);
     // The declaration editor of an open POU body; nullptr for actions, transitions, closed tabs.
     [[nodiscard]] editors::DeclarationEditor *declarationEditorFor(const model::BodyRef &ref) const;
     [[nodiscard]] std::optional<model::BodyRef> currentBody() const;
@@ -58,6 +65,9 @@ public:
     bool declareVariable(const model::BodyRef &ref, const editors::DeclarationRow &row, QString *error = nullptr);
     // Shift+F2 in a body: the dialog for the name under the cursor when it is not declared yet.
     void autoDeclareInteractive(const model::BodyRef &ref);
+    // The Declare Variable dialog for `name` used in body `ref` (a graphical editor asks for it);
+    // a tooltip at `at` in `anchor` says when it is declared already or cannot be.
+    void declareInteractive(const model::BodyRef &ref, const QString &name, QWidget *anchor, QPoint at = {});
     [[nodiscard]] std::optional<model::BodyRef> bodyAt(int index) const;
     // Every open editor that shows the running program (online mode), with the body it edits.
     struct OnlineDocument {
@@ -91,6 +101,8 @@ Q_SIGNALS:
     void typingModifiedChanged();
     // An editor's "Add to Watch" on a variable, with its full name ("Main.Count").
     void addToWatchRequested(const QString &name);
+    // A graphical editor's online double-click: a value to prepare in the watch pane.
+    void prepareValueRequested(const QString &name, const QString &literal);
     // Undo or redo was tried in a locked (online) declaration table.
     void editRefused();
 
@@ -101,12 +113,14 @@ private:
     [[nodiscard]] model::BodyRef refOf(int index) const;
     QWidget *createEditor(const model::BodyRef &ref);
     QWidget *createBodyEditor(const model::BodyRef &ref);
+    QWidget *createDiagramEditor(const editors::EditorFactory &factory, const model::BodyRef &ref);
     void closeDocument(int index);
 
     model::ProjectModel &m_projectModel;
     UndoStacks *m_undoStacks;
     bool m_typingInClosedDocuments = false;
     bool m_editingLocked = false;
+    int m_gridSize = 10;
 };
 
 } // namespace iec::app

@@ -18,7 +18,7 @@
 #include "app/undoactions.h"
 #include "app/undostacks.h"
 #include "editors/declarations/declarationeditor.h"
-#include "editors/sfc/sfceditor.h"
+#include "editors/common/diagrameditor.h"
 #include "editors/text/codeeditor.h"
 #include "model/plcopen/reader.h"
 #include "model/plcopen/writer.h"
@@ -69,7 +69,7 @@ MainWindow::MainWindow(QWidget *parent)
     createToolBar();
     connect(m_documents, &QTabWidget::currentChanged, this, &MainWindow::updateActiveUndoStack);
     connect(qApp, &QApplication::focusChanged, this, &MainWindow::updateActiveUndoStack);
-    // While a chart editor is the current tab, its structured commands join the Insert menu
+    // While a diagram editor is the current tab, its insert commands join the Insert menu
     // below a separator (CODESYS puts them there); another tab takes them out again.
     QAction *chartSeparator = m_insertMenu->addSeparator();
     chartSeparator->setVisible(false);
@@ -77,13 +77,10 @@ MainWindow::MainWindow(QWidget *parent)
         const QList<QAction *> entries = m_insertMenu->actions();
         for (qsizetype i = entries.indexOf(chartSeparator) + 1; i < entries.size(); ++i)
             m_insertMenu->removeAction(entries[i]);
-        QWidget *current = m_documents->currentWidget();
-        auto *chart = qobject_cast<editors::sfc::SfcEditor *>(current);
-        if (!chart && current)
-            chart = current->findChild<editors::sfc::SfcEditor *>();
-        chartSeparator->setVisible(chart != nullptr);
-        if (chart)
-            m_insertMenu->addActions(chart->insertActions());
+        editors::DiagramEditor *diagram = m_documents->currentDiagramEditor();
+        chartSeparator->setVisible(diagram != nullptr);
+        if (diagram)
+            m_insertMenu->addActions(diagram->insertActions());
     });
     // Online nothing of the project may change: the editors only show, the tree's commands,
     // Import and Undo/Redo are off, and the status bar says how to edit again.
@@ -100,6 +97,7 @@ MainWindow::MainWindow(QWidget *parent)
     statusBar();
     applyUiLanguage(m_settings.uiLanguage);
     m_recovery->setIntervalMinutes(m_settings.autosaveMinutes);
+    m_documents->setGridSize(m_settings.gridSize);
     retranslateUi();
     resize(1200, 800);
     restoreWindowLayout();
@@ -655,6 +653,7 @@ void MainWindow::applySettings(const Settings &settings)
         applyUiLanguage(settings.uiLanguage);
     m_settings = settings;
     m_recovery->setIntervalMinutes(m_settings.autosaveMinutes);
+    m_documents->setGridSize(m_settings.gridSize);
     QSettings store;
     m_settings.save(store);
     Q_EMIT settingsChanged(m_settings);

@@ -1,6 +1,10 @@
 #include "model/projectmodel.h"
 
+#include <QSet>
+
 #include <algorithm>
+#include <unordered_map>
+#include <unordered_set>
 
 namespace iec::model {
 
@@ -391,6 +395,67 @@ bool ProjectModel::changeElement(const BodyRef &ref, const Element &element)
     *existing = element;
     touch();
     Q_EMIT elementsChanged(ref, {header(element).localId});
+    return true;
+}
+
+bool ProjectModel::replaceElements(const BodyRef &ref, std::vector<Element> target)
+{
+    Body *body = findMutableBody(ref);
+    if (!body || !body->isGraphical())
+        return false;
+    std::vector<Element> &elements = *body->elements();
+    std::unordered_map<quint64, const Element *> current;
+    current.reserve(elements.size());
+    for (const Element &element : elements)
+        current.emplace(header(element).localId, &element);
+    std::unordered_set<quint64> kept;
+    kept.reserve(target.size());
+    QList<quint64> inserted;
+    QList<quint64> changed;
+    for (const Element &element : target) {
+        const quint64 localId = header(element).localId;
+        if (!kept.insert(localId).second)
+            return false; // two elements with one localId
+        const auto it = current.find(localId);
+        if (it == current.end())
+            inserted.append(localId);
+        else if (!(*it->second == element))
+            changed.append(localId);
+    }
+    QList<quint64> removed;
+    for (const Element &element : elements) {
+        if (!kept.contains(header(element).localId))
+            removed.append(header(element).localId);
+    }
+    // Survivors that changed places count as changed (the order is the file's, and FBD's
+    // evaluation order where no executionOrderId says otherwise).
+    std::vector<quint64> survivorsBefore;
+    std::vector<quint64> survivorsAfter;
+    for (const Element &element : elements) {
+        if (kept.contains(header(element).localId))
+            survivorsBefore.push_back(header(element).localId);
+    }
+    for (const Element &element : target) {
+        if (current.contains(header(element).localId))
+            survivorsAfter.push_back(header(element).localId);
+    }
+    if (survivorsBefore != survivorsAfter) {
+        const QSet<quint64> alreadyChanged(changed.begin(), changed.end());
+        for (std::size_t i = 0; i < survivorsAfter.size(); ++i) {
+            if (survivorsAfter[i] != survivorsBefore[i] && !alreadyChanged.contains(survivorsAfter[i]))
+                changed.append(survivorsAfter[i]);
+        }
+    }
+    if (inserted.isEmpty() && removed.isEmpty() && changed.isEmpty())
+        return false;
+    elements = std::move(target);
+    touch();
+    if (!removed.isEmpty())
+        Q_EMIT elementsRemoved(ref, removed);
+    if (!inserted.isEmpty())
+        Q_EMIT elementsInserted(ref, inserted);
+    if (!changed.isEmpty())
+        Q_EMIT elementsChanged(ref, changed);
     return true;
 }
 

@@ -78,6 +78,13 @@ public:
     bool moveElement(const BodyRef &ref, quint64 localId, Position position);
     // Replaces the element with the same localId (its properties, pins and connections).
     bool changeElement(const BodyRef &ref, const Element &element);
+    // Brings a graphical body to exactly `target` (its elements in that order) in one step, in
+    // time linear in the number of elements: what a structured edit of a whole body (an SFC
+    // command, an LD network edit, a paste) produces. Emits at most one elementsRemoved, one
+    // elementsInserted and one elementsChanged (same localId, different value), each with every
+    // localId concerned, in that order. `target` is taken as it is (its wires too); its localIds
+    // must be distinct (false and no change otherwise).
+    bool replaceElements(const BodyRef &ref, std::vector<Element> target);
     // Adds a connection to input point `pin` of `target` (pins in inputPoints() order).
     bool connect(const BodyRef &ref, quint64 target, int pin, const Connection &connection);
     // Removes the connection from `source` (and its formal parameter) on that pin.

@@ -957,6 +957,25 @@ Automatisch gespeichert: %2</translation>
         </message>
     </context>
     <context>
+        <name>iec::editors</name>
+        <message>
+            <source>There is nothing to paste.</source>
+            <translation>Es gibt nichts einzufügen.</translation>
+        </message>
+        <message>
+            <source>The clipboard holds text, not %1 elements: nothing was pasted.</source>
+            <translation>Die Zwischenablage enthält Text, keine %1-Elemente: Es wurde nichts eingefügt.</translation>
+        </message>
+        <message>
+            <source>The clipboard holds no %1 elements that can be pasted. %2</source>
+            <translation>Die Zwischenablage enthält keine %1-Elemente, die eingefügt werden können. %2</translation>
+        </message>
+        <message>
+            <source>The clipboard holds %1 elements, which cannot be pasted into %2.</source>
+            <translation>Die Zwischenablage enthält %1-Elemente, die nicht in %2 eingefügt werden können.</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::editors::AliasPage</name>
         <message>
             <source>Base type:</source>
@@ -1259,6 +1278,45 @@ Automatisch gespeichert: %2</translation>
         </message>
     </context>
     <context>
+        <name>iec::editors::DiagramEditor</name>
+        <message>
+            <source>Zoom In</source>
+            <translation>Vergrößern</translation>
+        </message>
+        <message>
+            <source>Zoom Out</source>
+            <translation>Verkleinern</translation>
+        </message>
+        <message>
+            <source>Fit to Window</source>
+            <translation>An Fenster anpassen</translation>
+        </message>
+        <message>
+            <source>Export Picture…</source>
+            <translation>Bild exportieren…</translation>
+        </message>
+        <message>
+            <source>Print…</source>
+            <translation>Drucken…</translation>
+        </message>
+        <message>
+            <source>The diagram cannot be changed while online. Log out first (Online → Logout).</source>
+            <translation>Im Online-Betrieb kann das Diagramm nicht geändert werden. Zuerst ausloggen (Online → Ausloggen).</translation>
+        </message>
+        <message>
+            <source>This body cannot be edited here.</source>
+            <translation>Dieser Rumpf kann hier nicht bearbeitet werden.</translation>
+        </message>
+        <message>
+            <source>Export Picture</source>
+            <translation>Bild exportieren</translation>
+        </message>
+        <message>
+            <source>SVG picture (*.svg);;PNG picture (*.png);;PDF document (*.pdf)</source>
+            <translation>SVG-Bild (*.svg);;PNG-Bild (*.png);;PDF-Dokument (*.pdf)</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::editors::DiagramExport</name>
         <message>
             <source>Cannot write %1.</source>
@@ -1348,6 +1406,13 @@ Automatisch gespeichert: %2</translation>
                 <numerusform>%n ersetzt</numerusform>
                 <numerusform>%n ersetzt</numerusform>
             </translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::InPlaceEditor</name>
+        <message>
+            <source>Enter applies, Esc cancels, F2 opens the input assistant.</source>
+            <translation>Eingabe übernimmt, Esc bricht ab, F2 öffnet die Eingabehilfe.</translation>
         </message>
     </context>
     <context>
@@ -1672,6 +1737,348 @@ Automatisch gespeichert: %2</translation>
         </message>
     </context>
     <context>
+        <name>iec::editors::ld::LdEditor</name>
+        <message>
+            <source>free</source>
+            <translation>frei</translation>
+        </message>
+        <message>
+            <source>Prepared %1 := %2. Write it with Ctrl+F7 or force it with F7.</source>
+            <translation>%1 := %2 vorbereitet. Mit Strg+F7 schreiben oder mit F7 forcen.</translation>
+        </message>
+        <message>
+            <source>Insert network</source>
+            <translation>Netzwerk einfügen</translation>
+        </message>
+        <message>
+            <source>Insert contact</source>
+            <translation>Kontakt einfügen</translation>
+        </message>
+        <message>
+            <source>Insert parallel contact</source>
+            <translation>Parallelen Kontakt einfügen</translation>
+        </message>
+        <message>
+            <source>Insert coil</source>
+            <translation>Spule einfügen</translation>
+        </message>
+        <message>
+            <source>Insert box %1</source>
+            <translation>Baustein %1 einfügen</translation>
+        </message>
+        <message>
+            <source>Insert jump</source>
+            <translation>Sprung einfügen</translation>
+        </message>
+        <message>
+            <source>Insert return</source>
+            <translation>Rücksprung einfügen</translation>
+        </message>
+        <message>
+            <source>Insert input</source>
+            <translation>Eingang einfügen</translation>
+        </message>
+        <message>
+            <source>Insert assignment</source>
+            <translation>Zuweisung einfügen</translation>
+        </message>
+        <message>
+            <source>Insert operator</source>
+            <translation>Operator einfügen</translation>
+        </message>
+        <message>
+            <source>Change label</source>
+            <translation>Marke ändern</translation>
+        </message>
+        <message>
+            <source>Change comment</source>
+            <translation>Kommentar ändern</translation>
+        </message>
+        <message>
+            <source>Negate</source>
+            <translation>Negieren</translation>
+        </message>
+        <message>
+            <source>Set/Reset</source>
+            <translation>Setzen/Rücksetzen</translation>
+        </message>
+        <message>
+            <source>Edge</source>
+            <translation>Flanke</translation>
+        </message>
+        <message>
+            <source>Rename</source>
+            <translation>Umbenennen</translation>
+        </message>
+        <message>
+            <source>Delete</source>
+            <translation>Löschen</translation>
+        </message>
+        <message>
+            <source>Paste</source>
+            <translation>Einfügen</translation>
+        </message>
+        <message>
+            <source>Network Label</source>
+            <translation>Netzwerkmarke</translation>
+        </message>
+        <message>
+            <source>Label of network %1 (empty: none):</source>
+            <translation>Marke von Netzwerk %1 (leer: keine):</translation>
+        </message>
+        <message>
+            <source>Network Comment</source>
+            <translation>Netzwerkkommentar</translation>
+        </message>
+        <message>
+            <source>Comment of network %1:</source>
+            <translation>Kommentar von Netzwerk %1:</translation>
+        </message>
+        <message>
+            <source>Jump</source>
+            <translation>Sprung</translation>
+        </message>
+        <message>
+            <source>Jump to the network with the label:</source>
+            <translation>Sprung zum Netzwerk mit der Marke:</translation>
+        </message>
+        <message>
+            <source>&amp;Network Before</source>
+            <translation>Netzwerk &amp;davor</translation>
+        </message>
+        <message>
+            <source>Network Aft&amp;er</source>
+            <translation>Netzwerk dan&amp;ach</translation>
+        </message>
+        <message>
+            <source>C&amp;ontact</source>
+            <translation>K&amp;ontakt</translation>
+        </message>
+        <message>
+            <source>&amp;Parallel Contact (Below)</source>
+            <translation>&amp;Paralleler Kontakt (unten)</translation>
+        </message>
+        <message>
+            <source>Parallel Contact (Abo&amp;ve)</source>
+            <translation>Paralleler Kontakt (&amp;oben)</translation>
+        </message>
+        <message>
+            <source>&amp;Function Block…</source>
+            <translation>&amp;Funktionsbaustein…</translation>
+        </message>
+        <message>
+            <source>Coi&amp;l</source>
+            <translation>Spu&amp;le</translation>
+        </message>
+        <message>
+            <source>Box with E&amp;N…</source>
+            <translation>Baustein mit E&amp;N…</translation>
+        </message>
+        <message>
+            <source>Insert at Box: In&amp;put</source>
+            <translation>Am Baustein: &amp;Eingang</translation>
+        </message>
+        <message>
+            <source>Insert at Box: &amp;Assignment</source>
+            <translation>Am Baustein: &amp;Zuweisung</translation>
+        </message>
+        <message>
+            <source>Insert at Box: Operato&amp;r</source>
+            <translation>Am Baustein: Ope&amp;rator</translation>
+        </message>
+        <message>
+            <source>&amp;Jump…</source>
+            <translation>&amp;Sprung…</translation>
+        </message>
+        <message>
+            <source>&amp;Return</source>
+            <translation>&amp;Rücksprung</translation>
+        </message>
+        <message>
+            <source>La&amp;bel…</source>
+            <translation>&amp;Marke…</translation>
+        </message>
+        <message>
+            <source>Co&amp;mment…</source>
+            <translation>&amp;Kommentar…</translation>
+        </message>
+        <message>
+            <source>Ne&amp;gate</source>
+            <translation>&amp;Negieren</translation>
+        </message>
+        <message>
+            <source>&amp;Set/Reset</source>
+            <translation>&amp;Setzen/Rücksetzen</translation>
+        </message>
+        <message>
+            <source>E&amp;dge (P/N)</source>
+            <translation>&amp;Flanke (P/N)</translation>
+        </message>
+        <message>
+            <source>Edit &amp;Name</source>
+            <translation>&amp;Namen bearbeiten</translation>
+        </message>
+        <message>
+            <source>Cu&amp;t</source>
+            <translation>&amp;Ausschneiden</translation>
+        </message>
+        <message>
+            <source>&amp;Copy</source>
+            <translation>&amp;Kopieren</translation>
+        </message>
+        <message>
+            <source>&amp;Paste</source>
+            <translation>E&amp;infügen</translation>
+        </message>
+        <message>
+            <source>Paste &amp;Below</source>
+            <translation>Einfügen &amp;unterhalb</translation>
+        </message>
+        <message>
+            <source>Paste Abo&amp;ve</source>
+            <translation>Einfügen o&amp;berhalb</translation>
+        </message>
+        <message>
+            <source>&amp;Delete</source>
+            <translation>&amp;Löschen</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::ld::LdEdits</name>
+        <message>
+            <source>There is no network here. Insert a network first (Network After).</source>
+            <translation>Hier ist kein Netzwerk. Fügen Sie zuerst eines ein (Netzwerk danach).</translation>
+        </message>
+        <message>
+            <source>This network is drawn freely by another tool, not as a rung: change its elements one by one (their names, negation), or delete it and draw it again.</source>
+            <translation>Dieses Netzwerk wurde von einem anderen Werkzeug frei gezeichnet, nicht als Kontaktplan: ändern Sie seine Elemente einzeln (Namen, Negation) oder löschen Sie es und zeichnen es neu.</translation>
+        </message>
+        <message>
+            <source>Put the cursor on an element or on a wire of the rung first.</source>
+            <translation>Setzen Sie den Cursor zuerst auf ein Element oder eine Verbindung des Netzwerks.</translation>
+        </message>
+        <message>
+            <source>Network %1 has the label %2 already: labels name one network each.</source>
+            <translation>Netzwerk %1 hat die Marke %2 schon: eine Marke benennt genau ein Netzwerk.</translation>
+        </message>
+        <message>
+            <source>Select the contacts (shift-click for a range) that the parallel contact goes around.</source>
+            <translation>Wählen Sie die Kontakte (Umschalt-Klick für einen Bereich), die der parallele Kontakt umschließt.</translation>
+        </message>
+        <message>
+            <source>A parallel contact goes around contacts and boxes; for another output use Coil.</source>
+            <translation>Ein paralleler Kontakt umschließt Kontakte und Bausteine; für einen weiteren Ausgang nehmen Sie Spule.</translation>
+        </message>
+        <message>
+            <source>Choose the function or function block the box calls.</source>
+            <translation>Wählen Sie die Funktion oder den Funktionsbaustein, den der Baustein aufruft.</translation>
+        </message>
+        <message>
+            <source>This box has no input the rung could drive: use the box with EN.</source>
+            <translation>Dieser Baustein hat keinen Eingang, den das Netzwerk treiben kann: nehmen Sie den Baustein mit EN.</translation>
+        </message>
+        <message>
+            <source>Select a box (or a variable on its inputs) first.</source>
+            <translation>Wählen Sie zuerst einen Baustein (oder eine Variable an seinen Eingängen).</translation>
+        </message>
+        <message>
+            <source>%1 has a fixed number of inputs.</source>
+            <translation>%1 hat eine feste Anzahl von Eingängen.</translation>
+        </message>
+        <message>
+            <source>Select a box first.</source>
+            <translation>Wählen Sie zuerst einen Baustein.</translation>
+        </message>
+        <message>
+            <source>Every output of this box has an assignment already.</source>
+            <translation>Jeder Ausgang dieses Bausteins hat schon eine Zuweisung.</translation>
+        </message>
+        <message>
+            <source>Select a variable on a box's input first: the operator goes in front of it.</source>
+            <translation>Wählen Sie zuerst eine Variable an einem Bausteineingang: der Operator kommt davor.</translation>
+        </message>
+        <message>
+            <source>An operator needs an input and an output.</source>
+            <translation>Ein Operator braucht einen Eingang und einen Ausgang.</translation>
+        </message>
+        <message>
+            <source>Select a contact or a coil to negate.</source>
+            <translation>Wählen Sie einen Kontakt oder eine Spule zum Negieren.</translation>
+        </message>
+        <message>
+            <source>Select a coil: Set/Reset makes it a set (S) or reset (R) coil.</source>
+            <translation>Wählen Sie eine Spule: Setzen/Rücksetzen macht daraus eine Setz- (S) oder Rücksetzspule (R).</translation>
+        </message>
+        <message>
+            <source>Select a contact or a coil: an edge makes it react to a rising (P) or falling (N) edge.</source>
+            <translation>Wählen Sie einen Kontakt oder eine Spule: eine Flanke lässt sie auf eine steigende (P) oder fallende (N) Flanke reagieren.</translation>
+        </message>
+        <message>
+            <source>The element is gone.</source>
+            <translation>Das Element gibt es nicht mehr.</translation>
+        </message>
+        <message>
+            <source>Type a name (or press Esc to keep the old one).</source>
+            <translation>Geben Sie einen Namen ein (oder Esc, um den alten zu behalten).</translation>
+        </message>
+        <message>
+            <source>This element has no name to type.</source>
+            <translation>Dieses Element hat keinen Namen zum Eingeben.</translation>
+        </message>
+        <message>
+            <source>Select an element or a network to delete.</source>
+            <translation>Wählen Sie ein Element oder ein Netzwerk zum Löschen.</translation>
+        </message>
+        <message>
+            <source>The power rails belong to the network: delete the network to remove them.</source>
+            <translation>Die Stromschienen gehören zum Netzwerk: löschen Sie das Netzwerk, um sie zu entfernen.</translation>
+        </message>
+        <message>
+            <source>The clipboard holds elements that do not form a rung.</source>
+            <translation>Die Elemente in der Zwischenablage bilden kein Netzwerk.</translation>
+        </message>
+        <message>
+            <source>This network is drawn freely by another tool, not as a rung: paste into a rung network.</source>
+            <translation>Dieses Netzwerk wurde von einem anderen Werkzeug frei gezeichnet: fügen Sie in ein Kontaktplan-Netzwerk ein.</translation>
+        </message>
+        <message>
+            <source>Select the elements the pasted ones go parallel to.</source>
+            <translation>Wählen Sie die Elemente, zu denen das Eingefügte parallel kommt.</translation>
+        </message>
+        <message>
+            <source>There is nothing to copy here.</source>
+            <translation>Hier gibt es nichts zu kopieren.</translation>
+        </message>
+        <message>
+            <source>Select elements or a network to copy.</source>
+            <translation>Wählen Sie Elemente oder ein Netzwerk zum Kopieren.</translation>
+        </message>
+        <message>
+            <source>This network is drawn freely: copy the whole network (click its number).</source>
+            <translation>Dieses Netzwerk ist frei gezeichnet: kopieren Sie das ganze Netzwerk (Klick auf seine Nummer).</translation>
+        </message>
+        <message>
+            <source>Select rung elements (contacts, coils, boxes) or a network to copy.</source>
+            <translation>Wählen Sie Netzwerkelemente (Kontakte, Spulen, Bausteine) oder ein Netzwerk zum Kopieren.</translation>
+        </message>
+        <message>
+            <source>There is nothing to paste.</source>
+            <translation>Es gibt nichts einzufügen.</translation>
+        </message>
+        <message>
+            <source>The clipboard holds elements of another language (not a ladder diagram): nothing was pasted.</source>
+            <translation>Die Zwischenablage enthält Elemente einer anderen Sprache (keinen Kontaktplan): nichts eingefügt.</translation>
+        </message>
+        <message>
+            <source>%1 is a program: a box calls a function or a function block.</source>
+            <translation>%1 ist ein Programm: ein Baustein ruft eine Funktion oder einen Funktionsbaustein auf.</translation>
+        </message>
+        <message>
+            <source>There is no function or function block called %1 (in the standard library or the project).</source>
+            <translation>Es gibt keine Funktion und keinen Funktionsbaustein namens %1 (weder in der Standardbibliothek noch im Projekt).</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::editors::sfc::ActionAssociationsDialog</name>
         <message>
             <source>IEC Actions of the Step</source>
@@ -1801,42 +2208,6 @@ Automatisch gespeichert: %2</translation>
             <translation>Makro verlassen</translation>
         </message>
         <message>
-            <source>Zoom In</source>
-            <translation>Vergrößern</translation>
-        </message>
-        <message>
-            <source>Zoom Out</source>
-            <translation>Verkleinern</translation>
-        </message>
-        <message>
-            <source>Fit to Window</source>
-            <translation>An Fenster anpassen</translation>
-        </message>
-        <message>
-            <source>Export Picture…</source>
-            <translation>Bild exportieren…</translation>
-        </message>
-        <message>
-            <source>Export Chart</source>
-            <translation>Ablaufplan exportieren</translation>
-        </message>
-        <message>
-            <source>SVG picture (*.svg);;PNG picture (*.png);;PDF document (*.pdf)</source>
-            <translation>SVG-Bild (*.svg);;PNG-Bild (*.png);;PDF-Dokument (*.pdf)</translation>
-        </message>
-        <message>
-            <source>Print…</source>
-            <translation>Drucken…</translation>
-        </message>
-        <message>
-            <source>The chart cannot be changed while online. Log out first (Online → Logout).</source>
-            <translation>Der Ablaufplan kann im Online-Betrieb nicht geändert werden. Loggen Sie sich zuerst aus (Online → Ausloggen).</translation>
-        </message>
-        <message>
-            <source>This body is not a chart.</source>
-            <translation>Dieser Rumpf ist kein Ablaufplan.</translation>
-        </message>
-        <message>
             <source>New chart</source>
             <translation>Neuer Ablaufplan</translation>
         </message>
@@ -1865,28 +2236,8 @@ Automatisch gespeichert: %2</translation>
             <translation>Makroschritt einfügen</translation>
         </message>
         <message>
-            <source>There is nothing to paste.</source>
-            <translation>Es gibt nichts einzufügen.</translation>
-        </message>
-        <message>
             <source>Change step</source>
             <translation>Schritt ändern</translation>
-        </message>
-        <message>
-            <source>Add action</source>
-            <translation>Aktion hinzufügen</translation>
-        </message>
-        <message>
-            <source>Change action</source>
-            <translation>Aktion ändern</translation>
-        </message>
-        <message>
-            <source>Remove action</source>
-            <translation>Aktion entfernen</translation>
-        </message>
-        <message>
-            <source>Move action</source>
-            <translation>Aktion verschieben</translation>
         </message>
         <message>
             <source>Change condition</source>
@@ -1939,6 +2290,10 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>Arrange chart</source>
             <translation>Plan anordnen</translation>
+        </message>
+        <message>
+            <source>Initial Step</source>
+            <translation>Initialschritt</translation>
         </message>
     </context>
     <context>
@@ -2070,6 +2425,10 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>The copied part does not fit here: after a step paste a part that starts with a transition, after a transition one that starts with a step.</source>
             <translation>Der kopierte Teil passt hier nicht: Fügen Sie nach einem Schritt einen Teil ein, der mit einer Transition beginnt, nach einer Transition einen, der mit einem Schritt beginnt.</translation>
+        </message>
+        <message>
+            <source>The copied elements are not one chain of steps and transitions: nothing was pasted.</source>
+            <translation>Die kopierten Elemente sind keine Kette aus Schritten und Transitionen: Es wurde nichts eingefügt.</translation>
         </message>
     </context>
     <context>
@@ -3315,6 +3674,25 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>Edit declarations</source>
             <translation>Deklarationen bearbeiten</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::plcopen</name>
+        <message>
+            <source>It is not well-formed XML: %1.</source>
+            <translation>Es ist kein wohlgeformtes XML: %1.</translation>
+        </message>
+        <message>
+            <source>It is XML with a &lt;%1&gt; root, not elements copied in IEC Studio.</source>
+            <translation>Es ist XML mit dem Wurzelelement &lt;%1&gt;, keine in IEC Studio kopierten Elemente.</translation>
+        </message>
+        <message>
+            <source>It cannot be read: %1</source>
+            <translation>Es kann nicht gelesen werden: %1</translation>
+        </message>
+        <message>
+            <source>It holds something that is not an element of a body.</source>
+            <translation>Es enthält etwas, das kein Element eines Rumpfs ist.</translation>
         </message>
     </context>
     <context>

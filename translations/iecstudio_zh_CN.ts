@@ -956,6 +956,25 @@ Autosaved: %2</source>
         </message>
     </context>
     <context>
+        <name>iec::editors</name>
+        <message>
+            <source>There is nothing to paste.</source>
+            <translation>没有可粘贴的内容。</translation>
+        </message>
+        <message>
+            <source>The clipboard holds text, not %1 elements: nothing was pasted.</source>
+            <translation>剪贴板中是文本，不是 %1 元素：未粘贴任何内容。</translation>
+        </message>
+        <message>
+            <source>The clipboard holds no %1 elements that can be pasted. %2</source>
+            <translation>剪贴板中没有可粘贴的 %1 元素。%2</translation>
+        </message>
+        <message>
+            <source>The clipboard holds %1 elements, which cannot be pasted into %2.</source>
+            <translation>剪贴板中是 %1 元素，不能粘贴到 %2 中。</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::editors::AliasPage</name>
         <message>
             <source>Base type:</source>
@@ -1257,6 +1276,45 @@ Autosaved: %2</source>
         </message>
     </context>
     <context>
+        <name>iec::editors::DiagramEditor</name>
+        <message>
+            <source>Zoom In</source>
+            <translation>放大</translation>
+        </message>
+        <message>
+            <source>Zoom Out</source>
+            <translation>缩小</translation>
+        </message>
+        <message>
+            <source>Fit to Window</source>
+            <translation>适合窗口</translation>
+        </message>
+        <message>
+            <source>Export Picture…</source>
+            <translation>导出图片…</translation>
+        </message>
+        <message>
+            <source>Print…</source>
+            <translation>打印…</translation>
+        </message>
+        <message>
+            <source>The diagram cannot be changed while online. Log out first (Online → Logout).</source>
+            <translation>在线时不能修改图形。请先注销（在线 → 注销）。</translation>
+        </message>
+        <message>
+            <source>This body cannot be edited here.</source>
+            <translation>此程序体不能在这里编辑。</translation>
+        </message>
+        <message>
+            <source>Export Picture</source>
+            <translation>导出图片</translation>
+        </message>
+        <message>
+            <source>SVG picture (*.svg);;PNG picture (*.png);;PDF document (*.pdf)</source>
+            <translation>SVG 图片 (*.svg);;PNG 图片 (*.png);;PDF 文档 (*.pdf)</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::editors::DiagramExport</name>
         <message>
             <source>Cannot write %1.</source>
@@ -1345,6 +1403,13 @@ Autosaved: %2</source>
             <translation>
                 <numerusform>已替换 %n 处</numerusform>
             </translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::InPlaceEditor</name>
+        <message>
+            <source>Enter applies, Esc cancels, F2 opens the input assistant.</source>
+            <translation>回车确认，Esc 取消，F2 打开输入助手。</translation>
         </message>
     </context>
     <context>
@@ -1669,6 +1734,348 @@ Autosaved: %2</source>
         </message>
     </context>
     <context>
+        <name>iec::editors::ld::LdEditor</name>
+        <message>
+            <source>free</source>
+            <translation>自由</translation>
+        </message>
+        <message>
+            <source>Prepared %1 := %2. Write it with Ctrl+F7 or force it with F7.</source>
+            <translation>已准备 %1 := %2。按 Ctrl+F7 写入,按 F7 强制。</translation>
+        </message>
+        <message>
+            <source>Insert network</source>
+            <translation>插入节</translation>
+        </message>
+        <message>
+            <source>Insert contact</source>
+            <translation>插入触点</translation>
+        </message>
+        <message>
+            <source>Insert parallel contact</source>
+            <translation>插入并联触点</translation>
+        </message>
+        <message>
+            <source>Insert coil</source>
+            <translation>插入线圈</translation>
+        </message>
+        <message>
+            <source>Insert box %1</source>
+            <translation>插入功能块 %1</translation>
+        </message>
+        <message>
+            <source>Insert jump</source>
+            <translation>插入跳转</translation>
+        </message>
+        <message>
+            <source>Insert return</source>
+            <translation>插入返回</translation>
+        </message>
+        <message>
+            <source>Insert input</source>
+            <translation>插入输入</translation>
+        </message>
+        <message>
+            <source>Insert assignment</source>
+            <translation>插入赋值</translation>
+        </message>
+        <message>
+            <source>Insert operator</source>
+            <translation>插入运算符</translation>
+        </message>
+        <message>
+            <source>Change label</source>
+            <translation>修改标号</translation>
+        </message>
+        <message>
+            <source>Change comment</source>
+            <translation>修改注释</translation>
+        </message>
+        <message>
+            <source>Negate</source>
+            <translation>取反</translation>
+        </message>
+        <message>
+            <source>Set/Reset</source>
+            <translation>置位/复位</translation>
+        </message>
+        <message>
+            <source>Edge</source>
+            <translation>边沿</translation>
+        </message>
+        <message>
+            <source>Rename</source>
+            <translation>重命名</translation>
+        </message>
+        <message>
+            <source>Delete</source>
+            <translation>删除</translation>
+        </message>
+        <message>
+            <source>Paste</source>
+            <translation>粘贴</translation>
+        </message>
+        <message>
+            <source>Network Label</source>
+            <translation>节标号</translation>
+        </message>
+        <message>
+            <source>Label of network %1 (empty: none):</source>
+            <translation>第 %1 节的标号(空: 无):</translation>
+        </message>
+        <message>
+            <source>Network Comment</source>
+            <translation>节注释</translation>
+        </message>
+        <message>
+            <source>Comment of network %1:</source>
+            <translation>第 %1 节的注释:</translation>
+        </message>
+        <message>
+            <source>Jump</source>
+            <translation>跳转</translation>
+        </message>
+        <message>
+            <source>Jump to the network with the label:</source>
+            <translation>跳转到带此标号的节:</translation>
+        </message>
+        <message>
+            <source>&amp;Network Before</source>
+            <translation>前节(&amp;N)</translation>
+        </message>
+        <message>
+            <source>Network Aft&amp;er</source>
+            <translation>后节(&amp;E)</translation>
+        </message>
+        <message>
+            <source>C&amp;ontact</source>
+            <translation>串联(&amp;O)</translation>
+        </message>
+        <message>
+            <source>&amp;Parallel Contact (Below)</source>
+            <translation>并联触点(&amp;P)</translation>
+        </message>
+        <message>
+            <source>Parallel Contact (Abo&amp;ve)</source>
+            <translation>并联触点(上方)(&amp;V)</translation>
+        </message>
+        <message>
+            <source>&amp;Function Block…</source>
+            <translation>功能块(&amp;F)…</translation>
+        </message>
+        <message>
+            <source>Coi&amp;l</source>
+            <translation>线圈(&amp;L)</translation>
+        </message>
+        <message>
+            <source>Box with E&amp;N…</source>
+            <translation>使能运算符(&amp;E)…</translation>
+        </message>
+        <message>
+            <source>Insert at Box: In&amp;put</source>
+            <translation>插入选项(&amp;K): 输入</translation>
+        </message>
+        <message>
+            <source>Insert at Box: &amp;Assignment</source>
+            <translation>插入选项: 赋值(&amp;A)</translation>
+        </message>
+        <message>
+            <source>Insert at Box: Operato&amp;r</source>
+            <translation>插入选项: 运算符(&amp;Y)</translation>
+        </message>
+        <message>
+            <source>&amp;Jump…</source>
+            <translation>跳转(&amp;J)…</translation>
+        </message>
+        <message>
+            <source>&amp;Return</source>
+            <translation>返回(&amp;R)</translation>
+        </message>
+        <message>
+            <source>La&amp;bel…</source>
+            <translation>标号(&amp;B)…</translation>
+        </message>
+        <message>
+            <source>Co&amp;mment…</source>
+            <translation>注释(&amp;C)…</translation>
+        </message>
+        <message>
+            <source>Ne&amp;gate</source>
+            <translation>取反(&amp;G)</translation>
+        </message>
+        <message>
+            <source>&amp;Set/Reset</source>
+            <translation>置位/复位(&amp;S)</translation>
+        </message>
+        <message>
+            <source>E&amp;dge (P/N)</source>
+            <translation>边沿 (P/N)(&amp;D)</translation>
+        </message>
+        <message>
+            <source>Edit &amp;Name</source>
+            <translation>编辑名称(&amp;M)</translation>
+        </message>
+        <message>
+            <source>Cu&amp;t</source>
+            <translation>剪切(&amp;T)</translation>
+        </message>
+        <message>
+            <source>&amp;Copy</source>
+            <translation>复制(&amp;C)</translation>
+        </message>
+        <message>
+            <source>&amp;Paste</source>
+            <translation>粘贴(&amp;P)</translation>
+        </message>
+        <message>
+            <source>Paste &amp;Below</source>
+            <translation>粘贴到下方(&amp;B)</translation>
+        </message>
+        <message>
+            <source>Paste Abo&amp;ve</source>
+            <translation>粘贴到上方(&amp;V)</translation>
+        </message>
+        <message>
+            <source>&amp;Delete</source>
+            <translation>删除(&amp;D)</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::ld::LdEdits</name>
+        <message>
+            <source>There is no network here. Insert a network first (Network After).</source>
+            <translation>这里没有节。请先插入一个节(后节)。</translation>
+        </message>
+        <message>
+            <source>This network is drawn freely by another tool, not as a rung: change its elements one by one (their names, negation), or delete it and draw it again.</source>
+            <translation>此节由其他工具自由绘制,不是梯级: 可以逐个修改其元素(名称、取反),或删除后重新绘制。</translation>
+        </message>
+        <message>
+            <source>Put the cursor on an element or on a wire of the rung first.</source>
+            <translation>请先把光标放在梯级的元素或连线上。</translation>
+        </message>
+        <message>
+            <source>Network %1 has the label %2 already: labels name one network each.</source>
+            <translation>第 %1 节已有标号 %2: 每个标号只能用于一个节。</translation>
+        </message>
+        <message>
+            <source>Select the contacts (shift-click for a range) that the parallel contact goes around.</source>
+            <translation>请选择并联触点要并联的触点(按住 Shift 单击可选择一段)。</translation>
+        </message>
+        <message>
+            <source>A parallel contact goes around contacts and boxes; for another output use Coil.</source>
+            <translation>并联触点只能并联在触点和功能块周围;要增加输出请用“线圈”。</translation>
+        </message>
+        <message>
+            <source>Choose the function or function block the box calls.</source>
+            <translation>请选择功能块框调用的函数或功能块。</translation>
+        </message>
+        <message>
+            <source>This box has no input the rung could drive: use the box with EN.</source>
+            <translation>此功能块没有可由梯级驱动的输入: 请使用带使能端的功能块。</translation>
+        </message>
+        <message>
+            <source>Select a box (or a variable on its inputs) first.</source>
+            <translation>请先选择一个功能块(或其输入上的变量)。</translation>
+        </message>
+        <message>
+            <source>%1 has a fixed number of inputs.</source>
+            <translation>%1 的输入个数是固定的。</translation>
+        </message>
+        <message>
+            <source>Select a box first.</source>
+            <translation>请先选择一个功能块。</translation>
+        </message>
+        <message>
+            <source>Every output of this box has an assignment already.</source>
+            <translation>此功能块的每个输出都已有赋值。</translation>
+        </message>
+        <message>
+            <source>Select a variable on a box's input first: the operator goes in front of it.</source>
+            <translation>请先选择功能块输入上的变量: 运算符插在它前面。</translation>
+        </message>
+        <message>
+            <source>An operator needs an input and an output.</source>
+            <translation>运算符需要一个输入和一个输出。</translation>
+        </message>
+        <message>
+            <source>Select a contact or a coil to negate.</source>
+            <translation>请选择要取反的触点或线圈。</translation>
+        </message>
+        <message>
+            <source>Select a coil: Set/Reset makes it a set (S) or reset (R) coil.</source>
+            <translation>请选择一个线圈: 置位/复位把它变成置位(S)或复位(R)线圈。</translation>
+        </message>
+        <message>
+            <source>Select a contact or a coil: an edge makes it react to a rising (P) or falling (N) edge.</source>
+            <translation>请选择触点或线圈: 边沿使其响应上升沿(P)或下降沿(N)。</translation>
+        </message>
+        <message>
+            <source>The element is gone.</source>
+            <translation>该元素已不存在。</translation>
+        </message>
+        <message>
+            <source>Type a name (or press Esc to keep the old one).</source>
+            <translation>请输入名称(或按 Esc 保留原名)。</translation>
+        </message>
+        <message>
+            <source>This element has no name to type.</source>
+            <translation>此元素没有可输入的名称。</translation>
+        </message>
+        <message>
+            <source>Select an element or a network to delete.</source>
+            <translation>请选择要删除的元素或节。</translation>
+        </message>
+        <message>
+            <source>The power rails belong to the network: delete the network to remove them.</source>
+            <translation>能量线属于节: 删除节才能删除它们。</translation>
+        </message>
+        <message>
+            <source>The clipboard holds elements that do not form a rung.</source>
+            <translation>剪贴板中的元素不构成梯级。</translation>
+        </message>
+        <message>
+            <source>This network is drawn freely by another tool, not as a rung: paste into a rung network.</source>
+            <translation>此节由其他工具自由绘制,不是梯级: 请粘贴到梯级节中。</translation>
+        </message>
+        <message>
+            <source>Select the elements the pasted ones go parallel to.</source>
+            <translation>请选择要与粘贴内容并联的元素。</translation>
+        </message>
+        <message>
+            <source>There is nothing to copy here.</source>
+            <translation>这里没有可复制的内容。</translation>
+        </message>
+        <message>
+            <source>Select elements or a network to copy.</source>
+            <translation>请选择要复制的元素或节。</translation>
+        </message>
+        <message>
+            <source>This network is drawn freely: copy the whole network (click its number).</source>
+            <translation>此节是自由绘制的: 请复制整个节(单击节号)。</translation>
+        </message>
+        <message>
+            <source>Select rung elements (contacts, coils, boxes) or a network to copy.</source>
+            <translation>请选择要复制的梯级元素(触点、线圈、功能块)或节。</translation>
+        </message>
+        <message>
+            <source>There is nothing to paste.</source>
+            <translation>没有可粘贴的内容。</translation>
+        </message>
+        <message>
+            <source>The clipboard holds elements of another language (not a ladder diagram): nothing was pasted.</source>
+            <translation>剪贴板中是其他语言的元素(不是梯形图): 未粘贴任何内容。</translation>
+        </message>
+        <message>
+            <source>%1 is a program: a box calls a function or a function block.</source>
+            <translation>%1 是程序: 功能块框只能调用函数或功能块。</translation>
+        </message>
+        <message>
+            <source>There is no function or function block called %1 (in the standard library or the project).</source>
+            <translation>没有名为 %1 的函数或功能块(标准库和项目中都没有)。</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::editors::sfc::ActionAssociationsDialog</name>
         <message>
             <source>IEC Actions of the Step</source>
@@ -1798,42 +2205,6 @@ Autosaved: %2</source>
             <translation>退出宏</translation>
         </message>
         <message>
-            <source>Zoom In</source>
-            <translation>放大</translation>
-        </message>
-        <message>
-            <source>Zoom Out</source>
-            <translation>缩小</translation>
-        </message>
-        <message>
-            <source>Fit to Window</source>
-            <translation>适合窗口</translation>
-        </message>
-        <message>
-            <source>Export Picture…</source>
-            <translation>导出图片…</translation>
-        </message>
-        <message>
-            <source>Export Chart</source>
-            <translation>导出顺序功能图</translation>
-        </message>
-        <message>
-            <source>SVG picture (*.svg);;PNG picture (*.png);;PDF document (*.pdf)</source>
-            <translation>SVG 图片 (*.svg);;PNG 图片 (*.png);;PDF 文档 (*.pdf)</translation>
-        </message>
-        <message>
-            <source>Print…</source>
-            <translation>打印…</translation>
-        </message>
-        <message>
-            <source>The chart cannot be changed while online. Log out first (Online → Logout).</source>
-            <translation>在线时不能修改顺序功能图。请先注销(在线 → 注销)。</translation>
-        </message>
-        <message>
-            <source>This body is not a chart.</source>
-            <translation>该程序体不是顺序功能图。</translation>
-        </message>
-        <message>
             <source>New chart</source>
             <translation>新建顺序功能图</translation>
         </message>
@@ -1862,28 +2233,8 @@ Autosaved: %2</source>
             <translation>插入宏步</translation>
         </message>
         <message>
-            <source>There is nothing to paste.</source>
-            <translation>没有可粘贴的内容。</translation>
-        </message>
-        <message>
             <source>Change step</source>
             <translation>修改步</translation>
-        </message>
-        <message>
-            <source>Add action</source>
-            <translation>添加动作</translation>
-        </message>
-        <message>
-            <source>Change action</source>
-            <translation>修改动作</translation>
-        </message>
-        <message>
-            <source>Remove action</source>
-            <translation>移除动作</translation>
-        </message>
-        <message>
-            <source>Move action</source>
-            <translation>移动动作</translation>
         </message>
         <message>
             <source>Change condition</source>
@@ -1936,6 +2287,10 @@ Autosaved: %2</source>
         <message>
             <source>Arrange chart</source>
             <translation>整理图表</translation>
+        </message>
+        <message>
+            <source>Initial Step</source>
+            <translation>初始步</translation>
         </message>
     </context>
     <context>
@@ -2067,6 +2422,10 @@ Autosaved: %2</source>
         <message>
             <source>The copied part does not fit here: after a step paste a part that starts with a transition, after a transition one that starts with a step.</source>
             <translation>复制的部分不适合放在这里:在步之后粘贴以转换开头的部分,在转换之后粘贴以步开头的部分。</translation>
+        </message>
+        <message>
+            <source>The copied elements are not one chain of steps and transitions: nothing was pasted.</source>
+            <translation>复制的元素不是一条由步和转换组成的链：未粘贴任何内容。</translation>
         </message>
     </context>
     <context>
@@ -3311,6 +3670,25 @@ Autosaved: %2</source>
         <message>
             <source>Edit declarations</source>
             <translation>编辑声明</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::model::plcopen</name>
+        <message>
+            <source>It is not well-formed XML: %1.</source>
+            <translation>它不是格式正确的 XML：%1。</translation>
+        </message>
+        <message>
+            <source>It is XML with a &lt;%1&gt; root, not elements copied in IEC Studio.</source>
+            <translation>它是根元素为 &lt;%1&gt; 的 XML，不是在 IEC Studio 中复制的元素。</translation>
+        </message>
+        <message>
+            <source>It cannot be read: %1</source>
+            <translation>无法读取：%1</translation>
+        </message>
+        <message>
+            <source>It holds something that is not an element of a body.</source>
+            <translation>其中包含不属于程序体元素的内容。</translation>
         </message>
     </context>
     <context>

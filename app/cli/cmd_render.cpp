@@ -1,5 +1,5 @@
-// iecstudio-cli render FILE --pou NAME OUT.svg|OUT.png|OUT.pdf: a POU body drawn as the editor
-// draws it, without a display. Built into its own library (iec_cli_render) because it loads the
+// iecstudio-cli render FILE --pou NAME [--action A | --transition T] OUT.svg|OUT.png|OUT.pdf: a
+// graphical body drawn as its editor draws it, without a display. Built into its own library (iec_cli_render) because it loads the
 // editors; the rest of the CLI stays free of GUI code.
 
 #include "app/cli/commands.h"
@@ -9,7 +9,8 @@
 
 #include "editors/common/diagramexport.h"
 #include "editors/common/diagramscene.h"
-#include "editors/sfc/sfcscene.h"
+#include "editors/common/editorregistry.h"
+#include "editors/standardeditors.h"
 #include "model/body.h"
 #include "model/projectmodel.h"
 
@@ -25,8 +26,30 @@ namespace {
 struct RenderArguments {
     QString file;
     QString pou;
+    model::BodyRef::Part part = model::BodyRef::Part::Pou;
+    QString partName; // the action or transition
     QString out;
 };
+
+const char *const kUsage = "Usage: iecstudio-cli render FILE --pou NAME [--action NAME | --transition NAME] "
+                           "OUT.svg|OUT.png|OUT.pdf\n";
+
+// "--pou NAME" or "--pou=NAME"; false (and a message) when the name is missing.
+bool takeValue(const QStringList &arguments, qsizetype &i, const QString &option, QString &value, QTextStream &err,
+    const char *what)
+{
+    const QString &argument = arguments[i];
+    if (argument.startsWith(option + QLatin1Char('='))) {
+        value = argument.mid(option.size() + 1);
+        return true;
+    }
+    if (i + 1 >= arguments.size()) {
+        err << "iecstudio-cli: render: " << option << " needs the name of " << what << ".\n";
+        return false;
+    }
+    value = arguments[++i];
+    return true;
+}
 
 std::optional<RenderArguments> parse(const QStringList &arguments, QTextStream &err)
 {
@@ -34,14 +57,19 @@ std::optional<RenderArguments> parse(const QStringList &arguments, QTextStream &
     QStringList positional;
     for (qsizetype i = 0; i < arguments.size(); ++i) {
         const QString &argument = arguments[i];
-        if (argument == QLatin1String("--pou")) {
-            if (i + 1 >= arguments.size()) {
-                err << "iecstudio-cli: render: --pou needs the name of a POU.\n";
+        const QString option = argument.section(QLatin1Char('='), 0, 0);
+        if (option == QLatin1String("--pou")) {
+            if (!takeValue(arguments, i, option, result.pou, err, "a POU"))
+                return std::nullopt;
+        } else if (option == QLatin1String("--action") || option == QLatin1String("--transition")) {
+            const bool action = option == QLatin1String("--action");
+            if (!result.partName.isEmpty()) {
+                err << "iecstudio-cli: render: give one --action or --transition.\n";
                 return std::nullopt;
             }
-            result.pou = arguments[++i];
-        } else if (argument.startsWith(QLatin1String("--pou="))) {
-            result.pou = argument.mid(6);
+            if (!takeValue(arguments, i, option, result.partName, err, action ? "an action" : "a transition"))
+                return std::nullopt;
+            result.part = action ? model::BodyRef::Part::Action : model::BodyRef::Part::Transition;
         } else if (argument.startsWith(QLatin1String("-"))) {
             err << "iecstudio-cli: render: unknown option '" << argument << "'.\n";
             return std::nullopt;
@@ -50,7 +78,7 @@ std::optional<RenderArguments> parse(const QStringList &arguments, QTextStream &
         }
     }
     if (positional.size() != 2 || result.pou.isEmpty()) {
-        err << "Usage: iecstudio-cli render FILE --pou NAME OUT.svg|OUT.png|OUT.pdf\n";
+        err << kUsage;
         return std::nullopt;
     }
     result.file = positional[0];
@@ -82,18 +110,35 @@ int runRender(const QStringList &arguments, Io io)
         io.err << "iecstudio-cli: render: " << args->file << " has no POU named '" << args->pou << "'.\n";
         return ExitUsage;
     }
-    const model::Body *body = pou->body();
-    if (!body || body->language() != model::BodyLanguage::SFC) {
-        io.err << "iecstudio-cli: render: POU '" << pou->name << "' is written in "
-               << model::bodyLanguageName(body ? body->language() : model::BodyLanguage::ST)
-               << ", which cannot be drawn yet (SFC can).\n";
-        return ExitFailed;
-    }
-    const model::PouId id = pou->id; // `pou` points into the project moved below
+    const QString pouName = pou->name; // `pou` points into the project moved below
     model::ProjectModel projectModel;
     projectModel.reset(std::move(loaded.project));
-    editors::sfc::SfcPolicy policy;
-    editors::DiagramScene scene(projectModel, model::BodyRef {id}, policy);
+    // The model numbers the POUs as it takes them: look the POU up there.
+    const model::BodyRef ref {projectModel.project().findPou(pouName)->id, args->part, args->partName};
+    const model::Body *body = projectModel.body(ref);
+    if (!body) {
+        io.err << "iecstudio-cli: render: POU '" << pouName << "' has no "
+               << (args->part == model::BodyRef::Part::Action ? "action" : "transition") << " named '" << args->partName
+               << "'.\n";
+        return ExitUsage;
+    }
+    editors::registerStandardEditors();
+    const editors::EditorLanguage language = editors::editorLanguage(*body);
+    const editors::EditorFactory *factory = editors::EditorRegistry::instance().find(language);
+    if (!factory) {
+        const QString what = args->part == model::BodyRef::Part::Pou ? QStringLiteral("POU '%1'").arg(pouName)
+            : QStringLiteral("%1 '%2.%3'")
+                  .arg(args->part == model::BodyRef::Part::Action ? QStringLiteral("Action") : QStringLiteral("Transition"),
+                      pouName, args->partName);
+        QStringList drawable;
+        for (const editors::EditorLanguage known : editors::EditorRegistry::instance().languages())
+            drawable << editors::editorLanguageName(known);
+        io.err << "iecstudio-cli: render: " << what << " is written in " << editors::editorLanguageName(language)
+               << ", which cannot be drawn yet (" << drawable.join(QStringLiteral(", ")) << " can).\n";
+        return ExitFailed;
+    }
+    const std::unique_ptr<editors::DiagramPolicy> policy = factory->createPolicy();
+    editors::DiagramScene scene(projectModel, ref, *policy);
     scene.rebuild();
     const QString problem = editors::exportScene(scene, args->out);
     if (!problem.isEmpty()) {

@@ -13,8 +13,8 @@ constexpr std::array<Command, 5> kCommands{{
     {"run", "run FILE [--program P] [--cycles N] [--cycle-time 10ms] [--set NAME=VALUE[@CYCLE]]... "
             "[--watch NAME]... [--trace OUT.csv|OUT.vcd]",
      "Run scan cycles on a virtual clock and print the watched values.", runRun},
-    {"render", "render FILE --pou NAME OUT.svg|OUT.png|OUT.pdf", "Draw a POU body without a display (SFC).",
-     runRender},
+    {"render", "render FILE --pou NAME [--action NAME | --transition NAME] OUT.svg|OUT.png|OUT.pdf",
+     "Draw a graphical body (a POU's, or one of its actions or transitions) without a display.", runRender},
 }};
 
 } // namespace

@@ -69,6 +69,10 @@ OnlineController::OnlineController(model::ProjectModel &projectModel, DocumentAr
         m_watch.addVariable(name);
         showDockOf(m_watch);
     });
+    connect(&documents, &DocumentArea::prepareValueRequested, this, [this](const QString &name, const QString &literal) {
+        m_watch.prepareValue(name, literal);
+        showDockOf(m_watch);
+    });
     // A document opened while online shows the program at once and asks for its names.
     connect(&documents, &QTabWidget::currentChanged, this, [this] {
         if (!m_latest)
@@ -397,11 +401,9 @@ OnlineController::Wanted OnlineController::wanted(const QList<DocumentArea::Onli
     for (const DocumentArea::OnlineDocument &document : views) {
         for (const QString &name : document.view->onlineNames())
             addName(name);
-        // SFC editors get their chart through chartState (the SFC engine's view of the instance).
-        const model::Body *body = m_projectModel.body(document.body);
+        // Chart editors get their chart through chartState (the SFC engine's view of the instance).
         const QString instance = document.view->onlineInstance();
-        if (body && body->language() == model::BodyLanguage::SFC && !instance.isEmpty()
-            && document.body.part == model::BodyRef::Part::Pou)
+        if (document.view->wantsChartState() && !instance.isEmpty() && document.body.part == model::BodyRef::Part::Pou)
             wanted.charts.emplace_back(instance, document.body.pou);
     }
     return wanted;

@@ -343,6 +343,14 @@ bool WatchPane::addVariable(const QString &name)
     return m_model->addName(name, type);
 }
 
+void WatchPane::prepareValue(const QString &name, const QString &literal)
+{
+    addVariable(name);
+    const int row = m_model->rowOf(name);
+    if (row >= 0)
+        m_model->setPrepared(row, literal);
+}
+
 void WatchPane::addFromLine()
 {
     if (addVariable(m_nameEdit->text()))

@@ -91,6 +91,8 @@ public:
     void setSnapshot(const interp::RuntimeSnapshot *snapshot);
 
     void retranslate();
+    // Watches the name (if it is not yet) and puts the literal in its prepared column.
+    void prepareValue(const QString &name, const QString &literal);
 
 public Q_SLOTS:
     // Writes / forces every prepared value and clears them (CODESYS: Ctrl+F7 / F7).

@@ -45,13 +45,21 @@ QRectF ElementItem::boundingRect() const
     return extent().adjusted(-4, -4, 4, 4);
 }
 
-void ElementItem::setProblem(const QString &message)
+QList<Pin> ElementItem::pins() const
 {
-    if (m_problem == message)
-        return;
-    m_problem = message;
-    setToolTip(message);
-    update();
+    QList<Pin> pins;
+    const double middle = m_size.height() / 2;
+    if (!inputPoints(m_element).empty())
+        pins << Pin {Pin::Direction::In, mapToScene(QPointF(0, middle)), 0, {}, {}};
+    const bool hasOutput = std::visit([](const auto &e) {
+        if constexpr (requires { e.connectionPointOut; })
+            return true;
+        else
+            return false;
+    }, m_element);
+    if (hasOutput)
+        pins << Pin {Pin::Direction::Out, mapToScene(QPointF(m_size.width(), middle)), -1, {}, {}};
+    return pins;
 }
 
 void ElementItem::setForced(bool forced)
@@ -66,17 +74,13 @@ void ElementItem::paintDecorations(QPainter *painter) const
 {
     painter->save();
     painter->setBrush(Qt::NoBrush);
-    if (!m_problem.isEmpty()) {
-        painter->setPen(QPen(kPlaceholderRed, 1.5));
-        painter->drawRect(extent().adjusted(-2, -2, 2, 2));
-    }
     if (isSelected()) {
         painter->setPen(QPen(kSelectionColor, 1, Qt::DashLine));
         painter->drawRect(extent().adjusted(-3, -3, 3, 3));
     }
     if (m_forced) {
         // CODESYS marks forced values with a small "F" on an orange ground.
-        const QRectF mark(frame().right() - 2, frame().top() - 10, 10, 10);
+        const QRectF mark(localFrame().right() - 2, localFrame().top() - 10, 10, 10);
         painter->setPen(Qt::NoPen);
         painter->setBrush(kForcedMark);
         painter->drawRect(mark);
@@ -120,10 +124,32 @@ QPointF BoxItem::outputPin(int pin) const
     return {m_size.width(), kTitleRow + row * kPinPitch + kPinPitch / 2};
 }
 
+QList<Pin> BoxItem::pins() const
+{
+    // Inputs are numbered as model::inputPoints numbers them: the variables that have a
+    // connection point, inputs before in-outs.
+    QList<Pin> pins;
+    const auto &block = std::get<Block>(m_element);
+    int index = 0;
+    int pin = 0;
+    for (const auto *list : {&block.inputVariables, &block.inOutVariables}) {
+        for (const BlockVariable &variable : *list) {
+            if (variable.connectionPointIn)
+                pins << Pin {Pin::Direction::In, mapToScene(inputPin(pin)), index++, {}, variable.formalParameter};
+            ++pin;
+        }
+    }
+    for (std::size_t p = 0; p < block.outputVariables.size(); ++p) {
+        const QString &name = block.outputVariables[p].formalParameter;
+        pins << Pin {Pin::Direction::Out, mapToScene(outputPin(int(p))), -1, block.outputVariables.size() == 1 ? QString() : name, name};
+    }
+    return pins;
+}
+
 QRectF BoxItem::extent() const
 {
     // The instance name above, values beside the pins.
-    return frame().adjusted(m_pinValues.isEmpty() ? 0 : -70, -16, m_pinValues.isEmpty() ? 0 : 70, 0);
+    return localFrame().adjusted(m_pinValues.isEmpty() ? 0 : -70, -16, m_pinValues.isEmpty() ? 0 : 70, 0);
 }
 
 void BoxItem::setPinValues(const QHash<QString, QString> &values)
@@ -141,7 +167,7 @@ void BoxItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QWidget
     painter->setRenderHint(QPainter::Antialiasing);
     painter->setPen(QPen(kInk, 1.2));
     painter->setBrush(QColor(0xfb, 0xfb, 0xf4));
-    painter->drawRect(frame());
+    painter->drawRect(localFrame());
     QFont bold = blockFont();
     bold.setBold(true);
     painter->setFont(bold);
@@ -206,7 +232,7 @@ QString VariableItem::text() const
 
 QRectF VariableItem::extent() const
 {
-    return onlineText().isEmpty() ? frame() : frame().adjusted(0, -14, 60, 0);
+    return onlineText().isEmpty() ? localFrame() : localFrame().adjusted(0, -14, 60, 0);
 }
 
 void VariableItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QWidget *)
@@ -216,9 +242,9 @@ void VariableItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QW
     if (m_framed) {
         painter->setPen(QPen(kInk, 1));
         painter->setBrush(Qt::white);
-        painter->drawRect(frame());
+        painter->drawRect(localFrame());
     }
-    const QRectF inner = frame().adjusted(4, 0, -4, 0);
+    const QRectF inner = localFrame().adjusted(4, 0, -4, 0);
     paintName(painter, text(), inner, feedsRight ? Qt::AlignRight : Qt::AlignLeft);
     if (!onlineText().isEmpty()) {
         painter->setFont(blockFont());

@@ -31,25 +31,24 @@ public:
     ElementItem(const model::Element &element, const QRectF &rect);
 
     [[nodiscard]] const model::Element &element() const { return m_element; }
-    [[nodiscard]] QRectF frame() const { return QRectF(QPointF(0, 0), m_size); } // local
-    [[nodiscard]] QRectF sceneFrame() const { return QRectF(pos(), m_size); }
+    [[nodiscard]] QRectF localFrame() const { return QRectF(QPointF(0, 0), m_size); }
+    QRectF frame() const override { return QRectF(pos(), m_size); }
     QRectF boundingRect() const override;
+    // An input pin on the left middle, an output pin on the right middle (when the element has
+    // them); boxes have one per variable.
+    QList<Pin> pins() const override;
 
-    // A compiler message on this element: drawn as a red frame, shown as the tooltip.
-    void setProblem(const QString &message);
-    [[nodiscard]] const QString &problem() const { return m_problem; }
     // Online: the value is held by a force.
     void setForced(bool forced);
 
 protected:
     // Extra room the item draws outside its frame (names above, values beside).
-    virtual QRectF extent() const { return frame(); }
-    void paintDecorations(QPainter *painter) const; // selection, problem, forced marker
+    virtual QRectF extent() const { return localFrame(); }
+    void paintDecorations(QPainter *painter) const; // selection, forced marker
     void paintName(QPainter *painter, const QString &text, const QRectF &row, Qt::Alignment alignment) const;
 
     model::Element m_element;
     QSizeF m_size;
-    QString m_problem;
     bool m_forced = false;
 };
 
@@ -67,6 +66,7 @@ public:
     void setPinValues(const QHash<QString, QString> &values);
     [[nodiscard]] QPointF inputPin(int pin) const;  // local
     [[nodiscard]] QPointF outputPin(int pin) const; // local
+    QList<Pin> pins() const override;
 
 protected:
     QRectF extent() const override;

@@ -19,9 +19,11 @@ public:
     // The instance whose values this editor shows ("Main" for a program; an FB's editor picks
     // one of its instances). Empty: the editor shows nothing online.
     virtual QString onlineInstance() const = 0;
-    // Names (full paths such as "Main.Count") whose values the editor shows; charts are
-    // requested through onlineInstance when the editor shows an SFC body.
+    // Names (full paths such as "Main.Count") whose values the editor shows.
     virtual QStringList onlineNames() const = 0;
+    // Whether the editor shows the chart state (active steps, step times) of onlineInstance():
+    // the controller then asks the runtime for that instance's chart (SFC editors say yes).
+    virtual bool wantsChartState() const { return false; }
     // nullptr leaves online mode: the editor drops every overlay and becomes editable again.
     // While online the editor refuses edits with a clear message.
     virtual void setOnlineSnapshot(const interp::RuntimeSnapshot *snapshot) = 0;

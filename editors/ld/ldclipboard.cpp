@@ -23,7 +23,7 @@ QString tr(const char *text)
 
 // Marks the left rail of a copied range of elements: pasted, it goes into a rung; without it the
 // fragment is whole networks.
-const QString kRangeMarker = QStringLiteral("http://iecstudio.org/plcopenxml/ld-range");
+const QString kRangeMarker = QStringLiteral("https://iec-studio.org/ld-range");
 
 bool isLadderElement(const Element &e)
 {
@@ -143,12 +143,12 @@ LdEditResult pasteNetworks(LadderDocument &document, const LdCursor &cursor, Lad
 LdEditResult pasteRange(LadderDocument &document, const LdCursor &cursor, LadderDocument pasted, PasteMode mode)
 {
     if (pasted.networks.size() != 1 || pasted.networks.front().freehand)
-        return {tr("The clipboard holds elements that do not form a rung."), {}};
+        return {QCoreApplication::translate("iec::editors::ld::LdEdits", "The clipboard holds elements that do not form a rung."), {}};
     if (cursor.network < 0 || cursor.network >= int(document.networks.size()))
-        return {tr("There is no network here. Insert a network first (Network After)."), {}};
+        return {QCoreApplication::translate("iec::editors::ld::LdEdits", "There is no network here. Insert a network first (Network After)."), {}};
     LdNetwork &network = document.networks[std::size_t(cursor.network)];
     if (network.freehand)
-        return {tr("This network is drawn freely by another tool, not as a rung: paste into a rung network."), {}};
+        return {QCoreApplication::translate("iec::editors::ld::LdEdits", "This network is drawn freely by another tool, not as a rung: paste into a rung network."), {}};
     const LdNetwork &source = pasted.networks.front();
     // The fragment's own rails stay behind; everything else joins the network.
     std::erase_if(pasted.elements, [&](const Element &e) {
@@ -182,15 +182,15 @@ LdEditResult pasteRange(LadderDocument &document, const LdCursor &cursor, Ladder
         }
         RungNode *series = tree::nodeAt(network.rung, path);
         if (!series || series->kind != RungNode::Kind::Series)
-            return {tr("Put the cursor on an element or on a wire of the rung first."), {}};
+            return {QCoreApplication::translate("iec::editors::ld::LdEdits", "Put the cursor on an element or on a wire of the rung first."), {}};
         index = std::clamp(index, 0, int(series->children.size()));
         series->children.insert(series->children.begin() + index, std::move(nodes));
     } else {
         if (cursor.kind != LdCursor::Kind::Element)
-            return {tr("Select the elements the pasted ones go parallel to."), {}};
+            return {QCoreApplication::translate("iec::editors::ld::LdEdits", "Select the elements the pasted ones go parallel to."), {}};
         const std::vector<int> path = pathOf(network.rung, cursor.element());
         if (path.empty())
-            return {tr("Select the elements the pasted ones go parallel to."), {}};
+            return {QCoreApplication::translate("iec::editors::ld::LdEdits", "Select the elements the pasted ones go parallel to."), {}};
         RungNode *series = tree::nodeAt(network.rung, std::vector<int>(path.begin(), path.end() - 1));
         RungNode &around = series->children[std::size_t(path.back())];
         RungNode kept = RungNode::series({std::move(around)});
@@ -211,7 +211,7 @@ std::vector<Element> copyAtCursor(const LadderDocument &document, const LdCursor
         return std::vector<Element> {};
     };
     if (cursor.network < 0 || cursor.network >= int(document.networks.size()))
-        return fail("There is nothing to copy here.");
+        return fail(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "There is nothing to copy here."));
     const LdNetwork &network = document.networks[std::size_t(cursor.network)];
     std::vector<Element> fragment;
     if (cursor.kind == LdCursor::Kind::Network) {
@@ -221,16 +221,16 @@ std::vector<Element> copyAtCursor(const LadderDocument &document, const LdCursor
         return fragment;
     }
     if (cursor.kind != LdCursor::Kind::Element)
-        return fail("Select elements or a network to copy.");
+        return fail(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "Select elements or a network to copy."));
     if (network.freehand)
-        return fail("This network is drawn freely: copy the whole network (click its number).");
+        return fail(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "This network is drawn freely: copy the whole network (click its number)."));
     std::vector<quint64> ids = cursor.elements;
     std::vector<std::vector<int>> paths;
     for (quint64 id : ids)
         if (std::vector<int> path = pathOf(network.rung, id); !path.empty())
             paths.push_back(std::move(path));
     if (paths.empty())
-        return fail("Select rung elements (contacts, coils, boxes) or a network to copy.");
+        return fail(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "Select rung elements (contacts, coils, boxes) or a network to copy."));
     // The range: children [first, last] of the deepest series that holds every selected element.
     std::vector<int> prefix = paths.front();
     prefix.pop_back();
@@ -274,7 +274,7 @@ std::vector<Element> copyAtCursor(const LadderDocument &document, const LdCursor
         spare = std::max(spare, header(e).localId);
     LeftPowerRail left;
     left.localId = spare + 1;
-    left.addData.push_back(AddDataEntry {kRangeMarker, QStringLiteral("discard"), {}});
+    left.addData.push_back(AddDataEntry {kRangeMarker, QStringLiteral("discard"), QStringLiteral("<range/>")});
     ConnectionPointOut railOut;
     railOut.formalParameter = QString();
     left.connectionPointOuts.push_back(railOut);
@@ -318,9 +318,9 @@ std::vector<Element> copyAtCursor(const LadderDocument &document, const LdCursor
 LdEditResult pasteFragment(LadderDocument &document, const LdCursor &cursor, std::vector<Element> fragment, PasteMode mode)
 {
     if (fragment.empty())
-        return {tr("There is nothing to paste."), {}};
+        return {QCoreApplication::translate("iec::editors::ld::LdEdits", "There is nothing to paste."), {}};
     if (!std::ranges::all_of(fragment, isLadderElement))
-        return {tr("The clipboard holds elements of another language (not a ladder diagram): nothing was pasted."), {}};
+        return {QCoreApplication::translate("iec::editors::ld::LdEdits", "The clipboard holds elements of another language (not a ladder diagram): nothing was pasted."), {}};
     const bool range = isRangeFragment(fragment);
     LadderDocument pasted = readLadder(std::move(fragment));
     if (range)

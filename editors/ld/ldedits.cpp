@@ -28,9 +28,9 @@ LdEditResult refuse(const char *text)
 std::optional<QString> checkNetwork(const LadderDocument &document, int network, bool structural)
 {
     if (network < 0 || network >= int(document.networks.size()))
-        return tr("There is no network here. Insert a network first (Network After).");
+        return QCoreApplication::translate("iec::editors::ld::LdEdits", "There is no network here. Insert a network first (Network After).");
     if (structural && document.networks[std::size_t(network)].freehand)
-        return tr("This network is drawn freely by another tool, not as a rung: change its elements one by one "
+        return QCoreApplication::translate("iec::editors::ld::LdEdits", "This network is drawn freely by another tool, not as a rung: change its elements one by one "
                   "(their names, negation), or delete it and draw it again.");
     return std::nullopt;
 }
@@ -146,7 +146,7 @@ LdEditResult insertInSeries(LadderDocument &document, const LdCursor &cursor, El
         return {*problem, {}};
     const std::optional<SeriesSpot> spot = seriesSpot(document, cursor);
     if (!spot)
-        return refuse("Put the cursor on an element or on a wire of the rung first.");
+        return refuse(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "Put the cursor on an element or on a wire of the rung first."));
     const quint64 id = addMember(document, cursor.network, std::move(element));
     LdNetwork &network = document.networks[std::size_t(cursor.network)];
     RungNode *series = tree::nodeAt(network.rung, spot->path);
@@ -341,7 +341,7 @@ LdEditResult setNetworkLabel(LadderDocument &document, int index, const QString 
     for (std::size_t n = 0; n < document.networks.size(); ++n) {
         const quint64 other = document.networks[n].label;
         if (int(n) != index && other && std::get<Label>(*document.element(other)).label.compare(label, Qt::CaseInsensitive) == 0)
-            return {tr("Network %1 has the label %2 already: labels name one network each.").arg(n + 1).arg(label), {}};
+            return {QCoreApplication::translate("iec::editors::ld::LdEdits", "Network %1 has the label %2 already: labels name one network each.").arg(n + 1).arg(label), {}};
     }
     if (!network.label) {
         Label element;
@@ -388,15 +388,15 @@ LdEditResult insertParallelContact(LadderDocument &document, const LdCursor &cur
     if (const auto problem = checkNetwork(document, cursor.network, true))
         return {*problem, {}};
     if (cursor.kind != LdCursor::Kind::Element)
-        return refuse("Select the contacts (shift-click for a range) that the parallel contact goes around.");
+        return refuse(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "Select the contacts (shift-click for a range) that the parallel contact goes around."));
     LdNetwork &network = document.networks[std::size_t(cursor.network)];
     const std::optional<SeriesRange> range = rangeOf(network.rung, cursor.elements);
     if (!range)
-        return refuse("Select the contacts (shift-click for a range) that the parallel contact goes around.");
+        return refuse(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "Select the contacts (shift-click for a range) that the parallel contact goes around."));
     RungNode *series = tree::nodeAt(network.rung, range->path);
     for (int i = range->first; i <= range->last; ++i)
         if (tree::endsInOutput(document, series->children[std::size_t(i)]))
-            return refuse("A parallel contact goes around contacts and boxes; for another output use Coil.");
+            return refuse(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "A parallel contact goes around contacts and boxes; for another output use Coil."));
     const quint64 id = addMember(document, cursor.network, newContact());
     series = tree::nodeAt(network.rung, range->path);
     std::vector<RungNode> around(std::make_move_iterator(series->children.begin() + range->first),
@@ -432,7 +432,7 @@ LdEditResult insertReturn(LadderDocument &document, const LdCursor &cursor)
 LdEditResult insertBox(LadderDocument &document, const LdCursor &cursor, const BoxSpec &spec)
 {
     if (spec.typeName.trimmed().isEmpty())
-        return refuse("Choose the function or function block the box calls.");
+        return refuse(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "Choose the function or function block the box calls."));
     Block block;
     block.typeName = spec.typeName.trimmed();
     if (spec.functionBlock)
@@ -452,7 +452,7 @@ LdEditResult insertBox(LadderDocument &document, const LdCursor &cursor, const B
         block.outputVariables.push_back(pin(name));
     RungPins pins {spec.withEn ? 0 : spec.rungInput, spec.withEn ? 0 : (spec.rungOutput < 0 ? -1 : spec.rungOutput)};
     if (pins.input < 0 || pins.input >= int(block.inputVariables.size()))
-        return refuse("This box has no input the rung could drive: use the box with EN.");
+        return refuse(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "This box has no input the rung could drive: use the box with EN."));
     LdEditResult result = insertInSeries(document, cursor, std::move(block));
     if (!result.ok())
         return result;
@@ -475,9 +475,9 @@ LdEditResult insertBoxInput(LadderDocument &document, const LdCursor &cursor)
     const quint64 box = boxAtCursor(document, cursor);
     const Block *block = blockAt(document, box);
     if (!block)
-        return refuse("Select a box (or a variable on its inputs) first.");
+        return refuse(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "Select a box (or a variable on its inputs) first."));
     if (!isExtensible(block->typeName))
-        return {tr("%1 has a fixed number of inputs.").arg(block->typeName), {}};
+        return {QCoreApplication::translate("iec::editors::ld::LdEdits", "%1 has a fixed number of inputs.").arg(block->typeName), {}};
     // The next number after the highest numbered input (IN1, IN2 → IN3; MUX's IN0, IN1 → IN2).
     int highest = 0;
     int insertAt = int(block->inputVariables.size());
@@ -511,7 +511,7 @@ LdEditResult insertBoxAssignment(LadderDocument &document, const LdCursor &curso
     const quint64 box = boxAtCursor(document, cursor);
     const Block *block = blockAt(document, box);
     if (!block)
-        return refuse("Select a box first.");
+        return refuse(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "Select a box first."));
     const RungPins pins = document.pinsOf(box);
     const LdGraph graph(document.elements);
     std::set<int> taken;
@@ -530,7 +530,7 @@ LdEditResult insertBoxAssignment(LadderDocument &document, const LdCursor &curso
         placeInFile(document, cursor.network, id);
         return {{}, LdCursor::atElement(cursor.network, id)};
     }
-    return refuse("Every output of this box has an assignment already.");
+    return refuse(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "Every output of this box has an assignment already."));
 }
 
 LdEditResult insertOperatorAtInput(LadderDocument &document, const LdCursor &cursor, const BoxSpec &spec)
@@ -540,9 +540,9 @@ LdEditResult insertOperatorAtInput(LadderDocument &document, const LdCursor &cur
     const quint64 variable = cursor.kind == LdCursor::Kind::Element ? cursor.element() : 0;
     const quint64 box = boxServedBy(document, variable);
     if (!box || !document.element(variable) || !std::holds_alternative<InVariable>(*document.element(variable)))
-        return refuse("Select a variable on a box's input first: the operator goes in front of it.");
+        return refuse(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "Select a variable on a box's input first: the operator goes in front of it."));
     if (spec.inputs.isEmpty() || spec.outputs.isEmpty())
-        return refuse("An operator needs an input and an output.");
+        return refuse(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "An operator needs an input and an output."));
     Block op;
     op.typeName = spec.typeName;
     for (const QString &name : spec.inputs) {
@@ -584,7 +584,7 @@ LdEditResult toggleNegation(LadderDocument &document, const LdCursor &cursor)
         coil->negated = !coil->negated;
         coil->storage = StorageModifier::None; // a set or reset coil cannot be negated
     } else
-        return refuse("Select a contact or a coil to negate.");
+        return refuse(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "Select a contact or a coil to negate."));
     return {{}, cursor};
 }
 
@@ -593,7 +593,7 @@ LdEditResult cycleSetReset(LadderDocument &document, const LdCursor &cursor)
     Element *e = cursor.kind == LdCursor::Kind::Element ? document.element(cursor.element()) : nullptr;
     auto *coil = e ? std::get_if<Coil>(e) : nullptr;
     if (!coil)
-        return refuse("Select a coil: Set/Reset makes it a set (S) or reset (R) coil.");
+        return refuse(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "Select a coil: Set/Reset makes it a set (S) or reset (R) coil."));
     switch (coil->storage) {
     case StorageModifier::None: coil->storage = StorageModifier::Set; break;
     case StorageModifier::Set: coil->storage = StorageModifier::Reset; break;
@@ -612,7 +612,7 @@ LdEditResult cycleEdge(LadderDocument &document, const LdCursor &cursor)
     else if (auto *coil = e ? std::get_if<Coil>(e) : nullptr)
         edge = &coil->edge;
     if (!edge)
-        return refuse("Select a contact or a coil: an edge makes it react to a rising (P) or falling (N) edge.");
+        return refuse(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "Select a contact or a coil: an edge makes it react to a rising (P) or falling (N) edge."));
     *edge = *edge == EdgeModifier::None ? EdgeModifier::Rising
         : *edge == EdgeModifier::Rising ? EdgeModifier::Falling
                                         : EdgeModifier::None;
@@ -647,9 +647,9 @@ LdEditResult setElementText(LadderDocument &document, quint64 localId, const QSt
     Element *e = document.element(localId);
     const int network = document.networkOf(localId);
     if (!e)
-        return refuse("The element is gone.");
+        return refuse(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "The element is gone."));
     if (text.isEmpty())
-        return refuse("Type a name (or press Esc to keep the old one).");
+        return refuse(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "Type a name (or press Esc to keep the old one)."));
     if (auto *contact = std::get_if<Contact>(e))
         contact->variable = text;
     else if (auto *coil = std::get_if<Coil>(e))
@@ -668,7 +668,7 @@ LdEditResult setElementText(LadderDocument &document, quint64 localId, const QSt
     else if (auto *label = std::get_if<Label>(e))
         label->label = text;
     else
-        return refuse("This element has no name to type.");
+        return refuse(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "This element has no name to type."));
     return {{}, LdCursor::atElement(network, localId)};
 }
 
@@ -686,7 +686,7 @@ LdEditResult deleteAtCursor(LadderDocument &document, const LdCursor &cursor)
         return {{}, LdCursor::atNetwork(std::max(0, std::min(cursor.network, int(document.networks.size()) - 1)))};
     }
     if (cursor.kind == LdCursor::Kind::Wire)
-        return refuse("Select an element or a network to delete.");
+        return refuse(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "Select an element or a network to delete."));
     std::vector<quint64> gone;
     std::vector<std::pair<quint64, int>> replacements; // (box, pin) that lost an operator box
     std::optional<tree::Place> firstPlace;
@@ -694,7 +694,7 @@ LdEditResult deleteAtCursor(LadderDocument &document, const LdCursor &cursor)
         if (!document.element(id))
             continue;
         if (id == network.leftRail || id == network.rightRail)
-            return refuse("The power rails belong to the network: delete the network to remove them.");
+            return refuse(QT_TRANSLATE_NOOP("iec::editors::ld::LdEdits", "The power rails belong to the network: delete the network to remove them."));
         if (id == network.label)
             network.label = 0;
         if (id == network.comment)

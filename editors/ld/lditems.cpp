@@ -76,7 +76,7 @@ ContactItem::ContactItem(const Element &element, const QRectF &rect)
 
 QRectF ContactItem::extent() const
 {
-    return frame().united(nameRect(nameWithValue(m_element, onlineText()), m_size, false));
+    return localFrame().united(nameRect(nameWithValue(m_element, onlineText()), m_size, false));
 }
 
 void ContactItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QWidget *)
@@ -113,7 +113,7 @@ CoilItem::CoilItem(const Element &element, const QRectF &rect)
 
 QRectF CoilItem::extent() const
 {
-    return frame().united(nameRect(nameWithValue(m_element, onlineText()), m_size, true));
+    return localFrame().united(nameRect(nameWithValue(m_element, onlineText()), m_size, true));
 }
 
 void CoilItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QWidget *)
@@ -164,8 +164,8 @@ void OutputMarkItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, 
         paintName(painter, jump->label, QRectF(22, 0, m_size.width() - 22, h), Qt::AlignLeft);
     } else {
         painter->setBrush(Qt::white);
-        painter->drawRect(frame().adjusted(0, 2, 0, -2));
-        paintName(painter, std::holds_alternative<Return>(m_element) ? QStringLiteral("RETURN") : QString(), frame(), Qt::AlignHCenter);
+        painter->drawRect(localFrame().adjusted(0, 2, 0, -2));
+        paintName(painter, std::holds_alternative<Return>(m_element) ? QStringLiteral("RETURN") : QString(), localFrame(), Qt::AlignHCenter);
     }
     paintDecorations(painter);
 }
@@ -180,7 +180,7 @@ RailItem::RailItem(const Element &element, const QRectF &rect)
 
 void RailItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QWidget *)
 {
-    painter->fillRect(frame(), isActive() ? kPowerBlue : kInk);
+    painter->fillRect(localFrame(), isActive() ? kPowerBlue : kInk);
 }
 
 // ---- networks
@@ -196,6 +196,14 @@ NetworkItem::NetworkItem(int number, const QRectF &band, const QString &label, c
     , m_freehand(freehand)
 {
     setZValue(-2);
+}
+
+void NetworkItem::setNumber(int number)
+{
+    if (m_number == number)
+        return;
+    m_number = number;
+    update();
 }
 
 QRectF NetworkItem::numberRect() const

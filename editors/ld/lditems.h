@@ -58,6 +58,7 @@ public:
     void paint(QPainter *painter, const QStyleOptionGraphicsItem *option, QWidget *widget) override;
 
     [[nodiscard]] int number() const { return m_number; }
+    void setNumber(int number);
     void setCurrent(bool current);
     // Online: a breakpoint or the halt position may colour the number later; kept simple here.
     [[nodiscard]] QRectF numberRect() const;

@@ -129,7 +129,7 @@ bool isNetworkRail(const Element &element)
 void markNetworkRail(Element &element)
 {
     if (model::AddData *data = addDataOf(element); data && !isNetworkRail(element))
-        data->push_back(AddDataEntry {kNetworkRailMarker, QStringLiteral("discard"), {}});
+        data->push_back(AddDataEntry {kNetworkRailMarker, QStringLiteral("discard"), QStringLiteral("<networkRail/>")});
 }
 
 void collectElements(const RungNode &node, std::vector<quint64> &out)

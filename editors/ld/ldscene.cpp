@@ -1,6 +1,7 @@
 #include "editors/ld/ldscene.h"
 
 #include "editors/ld/lditems.h"
+#include "editors/ld/ldwrite.h"
 #include "model/body.h"
 #include "model/projectmodel.h"
 
@@ -70,6 +71,62 @@ DiagramItem *createLadderItem(const LadderDocument &document, quint64 localId, c
     return new OutputMarkItem(*e, rect);
 }
 
+namespace {
+
+void clearPlace(ConnectionPointIn &point)
+{
+    point.relPosition.reset();
+    for (Connection &c : point.connections)
+        c.waypoints.clear();
+}
+
+// The element without what the layout decides.
+Element withoutPlace(Element e)
+{
+    ElementHeader &h = header(e);
+    h.position = {};
+    h.width.reset();
+    h.height.reset();
+    for (ConnectionPointIn *point : inputPoints(e))
+        clearPlace(*point);
+    std::visit(
+        [](auto &x) {
+            using T = std::decay_t<decltype(x)>;
+            if constexpr (std::is_same_v<T, Block>) {
+                for (auto *list : {&x.inputVariables, &x.inOutVariables, &x.outputVariables})
+                    for (BlockVariable &v : *list) {
+                        if (v.connectionPointIn)
+                            clearPlace(*v.connectionPointIn);
+                        if (v.connectionPointOut)
+                            v.connectionPointOut->relPosition.reset();
+                    }
+            } else if constexpr (std::is_same_v<T, LeftPowerRail>) {
+                x.connectionPointOuts.clear(); // one per wire, where the wires leave
+            } else if constexpr (std::is_same_v<T, RightPowerRail>) {
+                for (ConnectionPointIn &point : x.connectionPointIns)
+                    clearPlace(point);
+            } else if constexpr (requires { x.connectionPointOut; }) {
+                if (x.connectionPointOut)
+                    x.connectionPointOut->relPosition.reset();
+            }
+        },
+        e);
+    return e;
+}
+
+// The network of the old document that a new network is (by its left rail, else its first element).
+quint64 identityOf(const LdNetwork &network)
+{
+    return network.leftRail ? network.leftRail : (network.members.empty() ? 0 : network.members.front());
+}
+
+} // namespace
+
+bool sameButPlace(const Element &a, const Element &b)
+{
+    return a.index() == b.index() && withoutPlace(a) == withoutPlace(b);
+}
+
 const std::vector<Element> *LdPolicy::elements(const ProjectModel &model, const BodyRef &ref) const
 {
     const Body *body = model.body(ref);
@@ -77,18 +134,99 @@ const std::vector<Element> *LdPolicy::elements(const ProjectModel &model, const 
     return body ? body->elements() : nullptr;
 }
 
-void LdPolicy::populate(QGraphicsScene &scene, const std::vector<Element> &elements)
+void LdPolicy::populate(DiagramScene &scene, const std::vector<Element> &elements)
 {
     m_document = readLadder(elements, m_layoutGenerated);
     m_layout = layoutLadder(m_document);
+    m_items.clear();
     for (std::size_t n = 0; n < m_document.networks.size(); ++n)
-        addNetwork(scene, n);
+        m_items.push_back(addNetwork(scene, n));
+    m_rebuilt = int(m_document.networks.size());
 }
 
-void LdPolicy::addNetwork(QGraphicsScene &scene, std::size_t index)
+bool LdPolicy::update(DiagramScene &scene, const std::vector<Element> &elements, const ElementChanges &changes)
+{
+    LadderDocument document = readLadder(elements, m_layoutGenerated);
+    std::unordered_map<quint64, std::size_t> oldByIdentity;
+    for (std::size_t n = 0; n < m_document.networks.size(); ++n)
+        oldByIdentity.emplace(identityOf(m_document.networks[n]), n);
+    // A network is the same as before when it has the same elements, none inserted or removed,
+    // and the changed ones differ only in their places (a rung drawn by the editor ignores
+    // those); a freehand network is drawn where its elements are, so any change counts.
+    const auto unchanged = [&](const LdNetwork &now, const LdNetwork &before) {
+        if (now.members != before.members || now.freehand != before.freehand || !(now.rung == before.rung)
+            || now.label != before.label || now.comment != before.comment)
+            return false;
+        for (quint64 id : now.members) {
+            if (changes.inserted.contains(id) || changes.removed.contains(id))
+                return false;
+            if (changes.changed.contains(id)
+                && (now.freehand || !sameButPlace(*document.element(id), *m_document.element(id))
+                    || document.pinsOf(id) != m_document.pinsOf(id)))
+                return false;
+        }
+        return true;
+    };
+    std::vector<NetworkGeometry> layout;
+    std::vector<NetworkItems> items(document.networks.size());
+    std::vector<bool> reused(m_document.networks.size(), false);
+    std::vector<std::size_t> fresh;
+    double top = 0;
+    std::swap(m_document, document); // layoutNetwork and addNetwork read m_document
+    for (std::size_t n = 0; n < m_document.networks.size(); ++n) {
+        const auto old = oldByIdentity.find(identityOf(m_document.networks[n]));
+        if (old != oldByIdentity.end() && !reused[old->second] && unchanged(m_document.networks[n], document.networks[old->second])) {
+            reused[old->second] = true;
+            const double dy = top - m_layout[old->second].top;
+            layout.push_back(shifted(m_layout[old->second], dy));
+            items[n] = std::move(m_items[old->second]);
+            moveItems(scene, items[n], dy);
+        } else {
+            layout.push_back(layoutNetwork(m_document, n, top));
+            fresh.push_back(n);
+        }
+        top += layout.back().height;
+    }
+    for (std::size_t o = 0; o < reused.size(); ++o)
+        if (!reused[o])
+            removeItems(scene, m_items[o]);
+    m_layout = std::move(layout);
+    for (std::size_t n : fresh)
+        items[n] = addNetwork(scene, n);
+    for (std::size_t n = 0; n < items.size(); ++n)
+        items[n].band->setNumber(int(n) + 1);
+    m_items = std::move(items);
+    m_rebuilt = int(fresh.size());
+    return true;
+}
+
+void LdPolicy::removeItems(DiagramScene &scene, NetworkItems &items)
+{
+    for (quint64 id : items.elements)
+        scene.removeElementItem(id);
+    for (QGraphicsItem *wire : items.wires)
+        delete wire;
+    delete items.band;
+    items = {};
+}
+
+void LdPolicy::moveItems(DiagramScene &scene, NetworkItems &items, double dy)
+{
+    if (dy == 0)
+        return;
+    for (quint64 id : items.elements)
+        if (DiagramItem *item = scene.itemFor(id))
+            item->moveBy(0, dy);
+    for (QGraphicsItem *wire : items.wires)
+        wire->moveBy(0, dy);
+    items.band->moveBy(0, dy);
+}
+
+LdPolicy::NetworkItems LdPolicy::addNetwork(DiagramScene &scene, std::size_t index)
 {
     const LdNetwork &network = m_document.networks[index];
     const NetworkGeometry &g = m_layout[index];
+    NetworkItems items;
     const auto textOf = [&](quint64 id) -> QString {
         const Element *e = id ? m_document.element(id) : nullptr;
         if (const auto *label = e ? std::get_if<Label>(e) : nullptr)
@@ -98,26 +236,34 @@ void LdPolicy::addNetwork(QGraphicsScene &scene, std::size_t index)
         return {};
     };
     const QRectF band(0, g.top, g.rightRailX + 40, g.height);
-    scene.addItem(new NetworkItem(int(index) + 1, band, textOf(network.label), g.labelRect, textOf(network.comment),
-        g.commentRect, network.freehand));
+    items.band = new NetworkItem(int(index) + 1, band, textOf(network.label), g.labelRect, textOf(network.comment),
+        g.commentRect, network.freehand);
+    scene.addItem(items.band);
+    const auto addElement = [&](quint64 id, const QRectF &rect, bool framed) {
+        if (DiagramItem *item = createLadderItem(m_document, id, rect, framed)) {
+            scene.addElementItem(item);
+            items.elements.push_back(id);
+        }
+    };
     for (const auto &[id, rect] : g.rects)
-        if (DiagramItem *item = createLadderItem(m_document, id, rect, network.freehand))
-            scene.addItem(item);
+        addElement(id, rect, network.freehand);
     if (network.freehand) {
-        addFreehandWires(scene, network, g);
-        return;
+        addFreehandWires(scene, network, g, items);
+        return items;
     }
     if (network.leftRail)
-        if (DiagramItem *item = createLadderItem(m_document, network.leftRail, QRectF(kRailX - kRailWidth, g.rungTop, kRailWidth, g.rungHeight), false))
-            scene.addItem(item);
+        addElement(network.leftRail, QRectF(kRailX - kRailWidth, g.rungTop, kRailWidth, g.rungHeight), false);
     if (network.rightRail)
-        if (DiagramItem *item = createLadderItem(m_document, network.rightRail, QRectF(g.rightRailX, g.rungTop, kRailWidth, g.rungHeight), false))
-            scene.addItem(item);
-    for (const WireRun &wire : g.wires)
-        scene.addItem(new WireItem(wire.source, wire.target, wire.points));
+        addElement(network.rightRail, QRectF(g.rightRailX, g.rungTop, kRailWidth, g.rungHeight), false);
+    for (const WireRun &wire : g.wires) {
+        auto *item = new WireItem(wire.source, wire.target, wire.points);
+        scene.addItem(item);
+        items.wires.push_back(item);
+    }
+    return items;
 }
 
-void LdPolicy::addFreehandWires(QGraphicsScene &scene, const LdNetwork &network, const NetworkGeometry &g)
+void LdPolicy::addFreehandWires(DiagramScene &scene, const LdNetwork &network, const NetworkGeometry &g, NetworkItems &items)
 {
     for (quint64 id : network.members) {
         const Element *target = m_document.element(id);
@@ -137,7 +283,9 @@ void LdPolicy::addFreehandWires(QGraphicsScene &scene, const LdNetwork &network,
                     points = orthogonal(QPointF(from->second.right(), from->second.center().y()),
                         QPointF(to->second.left(), to->second.center().y()));
                 }
-                scene.addItem(new WireItem(c.refLocalId, id, points));
+                auto *item = new WireItem(c.refLocalId, id, points);
+                scene.addItem(item);
+                items.wires.push_back(item);
             }
         }
     }

@@ -4,35 +4,57 @@
 #include "editors/ld/ldgeometry.h"
 #include "editors/ld/ldnetwork.h"
 
-#include <QHash>
-
 // The LD policy of the shared scene: the body read as networks, laid out automatically, one item
 // per element, the rung's wires, and each network's band with its number, label and comment.
 // Rung networks are always drawn in the editor's layout (the model gets it with the first edit);
 // a freehand network is drawn where its elements are.
+//
+// A change is followed network by network: networks whose elements changed only in their
+// positions (everything below an edit moves when a rung grows) keep their items and move them;
+// only the edited networks get new items. So a command in a body of 1,000 networks touches one
+// network's items, not the whole scene.
 namespace iec::editors::ld {
+
+class NetworkItem;
 
 class LdPolicy : public DiagramPolicy
 {
 public:
     const std::vector<model::Element> *elements(const model::ProjectModel &model, const model::BodyRef &ref) const override;
-    void populate(QGraphicsScene &scene, const std::vector<model::Element> &elements) override;
+    void populate(DiagramScene &scene, const std::vector<model::Element> &elements) override;
+    bool update(DiagramScene &scene, const std::vector<model::Element> &elements, const ElementChanges &changes) override;
 
-    // What the scene shows now (after the last populate).
+    // What the scene shows now.
     [[nodiscard]] const LadderDocument &document() const { return m_document; }
     [[nodiscard]] const std::vector<NetworkGeometry> &layout() const { return m_layout; }
     [[nodiscard]] bool layoutGenerated() const { return m_layoutGenerated; }
+    // How many networks the last update built again (for tests and the bench).
+    [[nodiscard]] int networksRebuiltLastTime() const { return m_rebuilt; }
 
 private:
-    void addNetwork(QGraphicsScene &scene, std::size_t index);
-    void addFreehandWires(QGraphicsScene &scene, const LdNetwork &network, const NetworkGeometry &g);
+    struct NetworkItems {
+        NetworkItem *band = nullptr;
+        std::vector<quint64> elements;     // indexed in the scene
+        std::vector<QGraphicsItem *> wires; // plain items
+    };
+
+    NetworkItems addNetwork(DiagramScene &scene, std::size_t index);
+    void addFreehandWires(DiagramScene &scene, const LdNetwork &network, const NetworkGeometry &g, NetworkItems &items);
+    static void removeItems(DiagramScene &scene, NetworkItems &items);
+    static void moveItems(DiagramScene &scene, NetworkItems &items, double dy);
 
     mutable bool m_layoutGenerated = false;
     LadderDocument m_document;
     std::vector<NetworkGeometry> m_layout;
+    std::vector<NetworkItems> m_items;
+    int m_rebuilt = 0;
 };
 
 // The item for one laid-out element (nullptr for elements drawn by the network band).
 DiagramItem *createLadderItem(const LadderDocument &document, quint64 localId, const QRectF &rect, bool framedVariables);
+
+// Whether two elements differ only where the layout puts them (positions, sizes, pin positions,
+// wire corners): then a rung network looks the same, only elsewhere.
+bool sameButPlace(const model::Element &a, const model::Element &b);
 
 } // namespace iec::editors::ld

@@ -283,6 +283,72 @@ private:
 
 } // namespace
 
+NetworkGeometry shifted(NetworkGeometry g, double dy)
+{
+    if (dy == 0)
+        return g;
+    g.top += dy;
+    g.rungTop += dy;
+    g.lineY += dy;
+    for (auto &[id, rect] : g.rects)
+        rect.translate(0, dy);
+    for (WireRun &wire : g.wires)
+        for (QPointF &p : wire.points)
+            p.ry() += dy;
+    for (WirePoint &point : g.wirePoints)
+        point.position.ry() += dy;
+    if (!g.labelRect.isNull())
+        g.labelRect.translate(0, dy);
+    if (!g.commentRect.isNull())
+        g.commentRect.translate(0, dy);
+    return g;
+}
+
+namespace {
+
+// The network of `before` that `network` is (by its left rail, else its first element).
+quint64 identityOf(const LdNetwork &network)
+{
+    return network.leftRail ? network.leftRail : (network.members.empty() ? 0 : network.members.front());
+}
+
+// Whether the network is as the edit found it (same elements, same values) and its elements sit
+// where its layout says (it was written before): then only its place may change.
+bool untouchedAndWritten(const LadderDocument &document, const LdNetwork &now, const LadderDocument &before,
+    const LdNetwork &then, const NetworkGeometry &layout)
+{
+    if (now.freehand || then.freehand || now.members != then.members || !(now.rung == then.rung) || now.label != then.label
+        || now.comment != then.comment || !now.leftRail || !now.rightRail)
+        return false;
+    for (quint64 id : now.members) {
+        const model::Element *e = document.element(id);
+        const model::Element *old = before.element(id);
+        if (!e || !old || !(*e == *old))
+            return false;
+    }
+    for (const auto &[id, rect] : layout.rects) {
+        const model::Position &p = header(*document.element(id)).position;
+        if (p.x != rect.left() || p.y != rect.top())
+            return false;
+    }
+    const model::Position &rail = header(*document.element(now.leftRail)).position;
+    return rail.y == layout.rungTop && isNetworkRail(*document.element(now.leftRail));
+}
+
+void moveNetwork(LadderDocument &document, const LdNetwork &network, double dy)
+{
+    for (quint64 id : network.members) {
+        model::Element &e = *document.element(id);
+        header(e).position.y += dy;
+        for (ConnectionPointIn *point : inputPoints(e))
+            for (Connection &c : point->connections)
+                for (Position &p : c.waypoints)
+                    p.y += dy;
+    }
+}
+
+} // namespace
+
 std::vector<NetworkGeometry> writeLadder(LadderDocument &document)
 {
     std::vector<NetworkGeometry> result;
@@ -291,6 +357,34 @@ std::vector<NetworkGeometry> writeLadder(LadderDocument &document)
     double top = 0;
     for (std::size_t n = 0; n < document.networks.size(); ++n) {
         result.push_back(NetworkWriter(document, n).write(top, railsTaken));
+        top += result.back().height;
+    }
+    return result;
+}
+
+std::vector<NetworkGeometry> writeLadder(LadderDocument &document, const LadderDocument &before,
+    const std::vector<NetworkGeometry> &beforeLayout)
+{
+    std::unordered_map<quint64, std::size_t> beforeByIdentity;
+    for (std::size_t n = 0; n < before.networks.size() && n < beforeLayout.size(); ++n)
+        beforeByIdentity.emplace(identityOf(before.networks[n]), n);
+    std::vector<NetworkGeometry> result;
+    result.reserve(document.networks.size());
+    std::set<quint64> railsTaken;
+    double top = 0;
+    for (std::size_t n = 0; n < document.networks.size(); ++n) {
+        const LdNetwork &network = document.networks[n];
+        const auto then = beforeByIdentity.find(identityOf(network));
+        if (then != beforeByIdentity.end() && !railsTaken.contains(network.leftRail) && !railsTaken.contains(network.rightRail)
+            && untouchedAndWritten(document, network, before, before.networks[then->second], beforeLayout[then->second])) {
+            const double dy = top - beforeLayout[then->second].top;
+            if (dy != 0)
+                moveNetwork(document, network, dy);
+            result.push_back(shifted(beforeLayout[then->second], dy));
+            railsTaken.insert(network.leftRail);
+            railsTaken.insert(network.rightRail);
+        } else
+            result.push_back(NetworkWriter(document, n).write(top, railsTaken));
         top += result.back().height;
     }
     return result;

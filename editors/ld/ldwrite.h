@@ -13,4 +13,13 @@ namespace iec::editors::ld {
 // Lays out and writes every network, stacked from the top. Returns the layouts.
 std::vector<NetworkGeometry> writeLadder(LadderDocument &document);
 
+// The same after an edit of `before` (whose layout is `beforeLayout`): a network the edit did not
+// touch, written already, keeps its layout and only moves (its elements' positions shift), so a
+// command in a long body lays out only what it changed.
+std::vector<NetworkGeometry> writeLadder(LadderDocument &document, const LadderDocument &before,
+    const std::vector<NetworkGeometry> &beforeLayout);
+
+// The layout of a network moved down by dy.
+NetworkGeometry shifted(NetworkGeometry g, double dy);
+
 } // namespace iec::editors::ld

@@ -633,6 +633,24 @@ std::optional<Fragment> copyFragment(ChartDocument &document, const std::vector<
     return fragment;
 }
 
+std::optional<Fragment> fragmentFromElements(std::vector<Element> elements, QString *error)
+{
+    // A copied range has no initial step: it is read as the chain that starts without an input
+    // (a step: the main chain; a transition: the one loose chain).
+    const Chart chart = parseChart(elements);
+    const std::size_t chains = (chart.main.empty() ? 0 : 1) + chart.loose.size();
+    if (chains != 1) {
+        if (error)
+            *error = QCoreApplication::translate("iec::editors::sfc::SfcEdits",
+                "The copied elements are not one chain of steps and transitions: nothing was pasted.");
+        return std::nullopt;
+    }
+    Fragment fragment;
+    fragment.nodes = chart.main.empty() ? chart.loose.front() : chart.main;
+    fragment.elements = std::move(elements);
+    return fragment;
+}
+
 namespace {
 
 void remapNodes(Sequence &nodes, const std::unordered_map<quint64, quint64> &ids)

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "editors/common/editoutcome.h"
 #include "editors/sfc/sfcstructure.h"
 
 #include "model/sfcoptions.h"
@@ -15,12 +16,7 @@
 // wires, lays out and pushes the result as one undo command.
 namespace iec::editors::sfc {
 
-struct EditResult {
-    QString error; // empty: done
-    std::vector<quint64> select;
-
-    [[nodiscard]] bool ok() const { return error.isEmpty(); }
-};
+using EditResult = EditOutcome; // the framework's: an error, or what to select
 
 // A new chart (CODESYS: a new SFC POU): the initial step "Init", a transition TRUE, a jump to Init.
 EditResult createDefaultChart(ChartDocument &document);
@@ -68,6 +64,10 @@ struct Fragment {
     [[nodiscard]] bool isEmpty() const { return nodes.empty(); }
 };
 std::optional<Fragment> copyFragment(ChartDocument &document, const std::vector<quint64> &selection, QString *error);
+// The fragment that copyFragment made, read back from its elements alone (as they come from the
+// clipboard, connections to the rest of the chart dropped): the chain they form. nullopt (and a
+// message) when they are not one chain of steps and transitions.
+std::optional<Fragment> fragmentFromElements(std::vector<model::Element> elements, QString *error);
 // Pastes after the selection (new localIds; step names made unique).
 EditResult pasteFragment(ChartDocument &document, const std::vector<quint64> &selection, const Fragment &fragment);
 

@@ -24,7 +24,7 @@ public:
 
     QRectF boundingRect() const override;
     [[nodiscard]] const model::Element &element() const { return m_element; }
-    [[nodiscard]] QRectF frame() const { return m_frame; } // the element's own rectangle
+    [[nodiscard]] QRectF frame() const override { return m_frame; } // the element's own rectangle
 
     // The width the text beside the element (a transition's condition, a jump's target) may
     // take before it would run into the next drawing on its right: it is cut with "…" there and

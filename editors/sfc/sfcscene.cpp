@@ -104,7 +104,7 @@ QList<QPointF> sideWire(const Element &source, const Element &target)
 
 } // namespace
 
-void SfcPolicy::populate(QGraphicsScene &scene, const std::vector<Element> &elements)
+void SfcPolicy::populate(DiagramScene &scene, const std::vector<Element> &elements)
 {
     std::unordered_map<quint64, const Element *> byId;
     std::unordered_set<QString> stepNames;
@@ -132,7 +132,7 @@ void SfcPolicy::populate(QGraphicsScene &scene, const std::vector<Element> &elem
             item = new ActionBlockItem(e);
         else
             item = new OtherItem(e);
-        scene.addItem(item);
+        scene.addElementItem(item);
         obstacles << item->frame();
         if (!labelRect(e).isEmpty())
             labelled.push_back(item);

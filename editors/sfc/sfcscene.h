@@ -11,7 +11,7 @@ class SfcPolicy : public DiagramPolicy
 {
 public:
     const std::vector<model::Element> *elements(const model::ProjectModel &model, const model::BodyRef &ref) const override;
-    void populate(QGraphicsScene &scene, const std::vector<model::Element> &elements) override;
+    void populate(DiagramScene &scene, const std::vector<model::Element> &elements) override;
 
     [[nodiscard]] const std::vector<quint64> &macroPath() const { return m_macroPath; }
     void setMacroPath(std::vector<quint64> path) { m_macroPath = std::move(path); }

@@ -236,12 +236,44 @@ template<> struct Schema<Return> {
 
 // ---- LD objects ---------------------------------------------------------------------------
 
+// Outputs whose formalParameter the XSD requires (left power rails, steps, divergences): a model
+// without a name writes formalParameter="" (as Beremiz does) and reads "" back as no name, so a
+// chart drawn in the editor saves valid and reloads equal, and a file with "" saves unchanged.
+template<class A, class P> void namedOutput(A &a, const char *name, P &point)
+{
+    if constexpr (A::reading) {
+        a.child(name, point);
+        if (point && point->formalParameter && point->formalParameter->isEmpty())
+            point->formalParameter.reset();
+    } else if (point) {
+        ConnectionPointOut named = *point;
+        named.formalParameter = named.formalParameter.value_or(QString());
+        a.child(name, std::optional<ConnectionPointOut>(std::move(named)));
+    }
+}
+
+template<class A, class V> void namedOutputs(A &a, const char *name, V &points)
+{
+    if constexpr (A::reading) {
+        a.children(name, points);
+        for (ConnectionPointOut &point : points) {
+            if (point.formalParameter && point.formalParameter->isEmpty())
+                point.formalParameter.reset();
+        }
+    } else {
+        std::vector<ConnectionPointOut> named = points;
+        for (ConnectionPointOut &point : named)
+            point.formalParameter = point.formalParameter.value_or(QString());
+        a.children(name, named);
+    }
+}
+
 template<> struct Schema<LeftPowerRail> {
     static constexpr const char *tag = "leftPowerRail";
     template<class A, class V> static void describe(A &a, V &rail)
     {
         describeElementStart(a, rail);
-        a.children("connectionPointOut", rail.connectionPointOuts);
+        namedOutputs(a, "connectionPointOut", rail.connectionPointOuts);
         describeElementEnd(a, rail);
     }
 };
@@ -288,8 +320,8 @@ template<> struct Schema<Step> {
         a.attr("initialStep", step.initialStep, false);
         a.attr("negated", step.negated, false);
         a.child("connectionPointIn", step.connectionPointIn);
-        a.child("connectionPointOut", step.connectionPointOut);
-        a.child("connectionPointOutAction", step.connectionPointOutAction);
+        namedOutput(a, "connectionPointOut", step.connectionPointOut);
+        namedOutput(a, "connectionPointOutAction", step.connectionPointOutAction);
         describeElementEnd(a, step);
     }
 };
@@ -353,7 +385,7 @@ template<class A, class V> void describeDivergence(A &a, V &divergence)
 {
     describeElementStart(a, divergence);
     a.child("connectionPointIn", divergence.connectionPointIn);
-    a.children("connectionPointOut", divergence.connectionPointOuts);
+    namedOutputs(a, "connectionPointOut", divergence.connectionPointOuts);
     describeElementEnd(a, divergence);
 }
 

@@ -34,6 +34,8 @@ private Q_SLOTS:
     void usageErrors();
     void renderDrawsCharts_data();
     void renderDrawsCharts();
+    void renderDrawsActionsAndTransitions();
+    void renderDrawsLadder();
     void renderRefuses_data();
     void renderRefuses();
 };
@@ -510,6 +512,56 @@ void TestCli::renderDrawsCharts()
     }
 }
 
+void TestCli::renderDrawsLadder()
+{
+    // Beremiz's CounterLD: networks of contacts, a box and coils, with their variables as text.
+    const QString file = QStringLiteral(IEC_SHARED_DIR "/plcopen/corpus/beremiz_first_steps.xml");
+    if (!QFile::exists(file))
+        QSKIP("the PLCopen corpus of shared/ is not there");
+    QTemporaryDir dir;
+    const QString out = dir.filePath(QStringLiteral("ladder.svg"));
+    const Result result = cli({QStringLiteral("render"), file, QStringLiteral("--pou"), QStringLiteral("CounterLD"), out});
+    QCOMPARE(result.err, QString());
+    QCOMPARE(result.exitCode, 0);
+    QFile svg(out);
+    QVERIFY(svg.open(QIODevice::ReadOnly));
+    const QByteArray bytes = svg.readAll();
+    QVERIFY(bytes.contains(">Reset<"));
+    QVERIFY(bytes.contains("ResetCounterValue"));
+}
+
+void TestCli::renderDrawsActionsAndTransitions()
+{
+    // TwinCAT's PPU keeps SFC charts in actions of its function blocks.
+    const QString file = QStringLiteral(IEC_SHARED_DIR "/plcopen/corpus/twincat356_ppu.xml");
+    if (!QFile::exists(file))
+        QSKIP("the PLCopen corpus of shared/ is not there");
+    QTemporaryDir dir;
+    const QString out = dir.filePath(QStringLiteral("action.svg"));
+    Result result = cli({QStringLiteral("render"), file, QStringLiteral("--pou"), QStringLiteral("Stamp"),
+        QStringLiteral("--action"), QStringLiteral("ACT_Stamp"), out});
+    QCOMPARE(result.err, QString());
+    QCOMPARE(result.exitCode, 0);
+    QFile svg(out);
+    QVERIFY(svg.open(QIODevice::ReadOnly));
+    const QByteArray bytes = svg.readAll();
+    QVERIFY(bytes.contains("Slider_Retract"));
+    QVERIFY(bytes.contains("Medium_Pressure"));
+    // The option's other spelling, and a part that is not there.
+    result = cli({QStringLiteral("render"), file, QStringLiteral("--pou=Stamp"), QStringLiteral("--action=ACT_Init"), out});
+    QCOMPARE(result.exitCode, 0);
+    result = cli({QStringLiteral("render"), file, QStringLiteral("--pou"), QStringLiteral("Stamp"), QStringLiteral("--transition"),
+        QStringLiteral("Nope"), out});
+    QCOMPARE(result.exitCode, 2);
+    QCOMPARE(result.err.trimmed(), QStringLiteral("iecstudio-cli: render: POU 'Stamp' has no transition named 'Nope'."));
+    // An action in ST cannot be drawn.
+    result = cli({QStringLiteral("render"), file, QStringLiteral("--pou"), QStringLiteral("Stamp"), QStringLiteral("--action"),
+        QStringLiteral("ACT_GreenLampOn"), out});
+    QCOMPARE(result.exitCode, 1);
+    QCOMPARE(result.err.trimmed(), QStringLiteral("iecstudio-cli: render: Action 'Stamp.ACT_GreenLampOn' is written in ST, "
+                                                  "which cannot be drawn yet (LD, SFC can)."));
+}
+
 void TestCli::renderRefuses_data()
 {
     QTest::addColumn<QStringList>("arguments");
@@ -519,7 +571,7 @@ void TestCli::renderRefuses_data()
     QTest::newRow("not drawable yet") << QStringList {QStringLiteral("render"), file, QStringLiteral("--pou"),
         QStringLiteral("CounterST"), QStringLiteral("x.svg")} << 1
                                       << QStringLiteral("iecstudio-cli: render: POU 'CounterST' is written in ST, which "
-                                                        "cannot be drawn yet (SFC can).");
+                                                        "cannot be drawn yet (LD, SFC can).");
     QTest::newRow("no such POU") << QStringList {QStringLiteral("render"), file, QStringLiteral("--pou"),
         QStringLiteral("Nope"), QStringLiteral("x.svg")} << 2
                                  << QStringLiteral("iecstudio-cli: render: %1 has no POU named 'Nope'.").arg(file);
@@ -527,9 +579,15 @@ void TestCli::renderRefuses_data()
         QStringLiteral("CounterSFC"), QStringLiteral("x.bmp")} << 2
                                   << QStringLiteral("iecstudio-cli: render: x.bmp: the picture must end in .svg, .png or .pdf.");
     QTest::newRow("no --pou") << QStringList {QStringLiteral("render"), file, QStringLiteral("x.svg")} << 2
-                              << QStringLiteral("Usage: iecstudio-cli render FILE --pou NAME OUT.svg|OUT.png|OUT.pdf");
+                              << QStringLiteral("Usage: iecstudio-cli render FILE --pou NAME [--action NAME | --transition NAME] OUT.svg|OUT.png|OUT.pdf");
     QTest::newRow("--pou without a name") << QStringList {QStringLiteral("render"), file, QStringLiteral("x.svg"), QStringLiteral("--pou")} << 2
                                           << QStringLiteral("iecstudio-cli: render: --pou needs the name of a POU.");
+    QTest::newRow("two parts") << QStringList {QStringLiteral("render"), file, QStringLiteral("--pou"), QStringLiteral("CounterSFC"),
+        QStringLiteral("--action"), QStringLiteral("A"), QStringLiteral("--transition"), QStringLiteral("T"), QStringLiteral("x.svg")} << 2
+                               << QStringLiteral("iecstudio-cli: render: give one --action or --transition.");
+    QTest::newRow("--action without a name") << QStringList {QStringLiteral("render"), file, QStringLiteral("x.svg"), QStringLiteral("--pou"),
+        QStringLiteral("CounterSFC"), QStringLiteral("--action")} << 2
+                                             << QStringLiteral("iecstudio-cli: render: --action needs the name of an action.");
     QTest::newRow("unknown option") << QStringList {QStringLiteral("render"), file, QStringLiteral("--zoom"), QStringLiteral("x.svg")} << 2
                                     << QStringLiteral("iecstudio-cli: render: unknown option '--zoom'.");
     QTest::newRow("unwritable") << QStringList {QStringLiteral("render"), file, QStringLiteral("--pou"),

@@ -32,11 +32,11 @@ using SfcCommandRunner = std::function<void(const char *what, const std::functio
 // Drain (Y3) -> [NOT L3 AND NOT SB2 -> Fill_A | NOT L3 AND SB2 -> Init].
 inline void buildMixingTank(editors::sfc::SfcEditor &e, const char *mixCondition, const SfcCommandRunner &run)
 {
-    run("new chart", [&] { return e.createChart(); });
+    run("new chart", [&] { return e.trigger(QStringLiteral("sfcNewChart")); });
     const quint64 init = e.stepId(QStringLiteral("Init"));
     QVERIFY(init);
     quint64 last = transitionAfter(e, init);
-    run("start condition", [&] { return e.setTransitionCondition(last, QStringLiteral("SB1")); });
+    run("start condition", [&] { return e.edit(QStringLiteral("Change condition"), [&](editors::sfc::ChartDocument &d, const auto &) { return editors::sfc::setInlineCondition(d, last, QStringLiteral("SB1")); }); });
     struct Stage {
         const char *name;
         const char *action;
@@ -46,16 +46,16 @@ inline void buildMixingTank(editors::sfc::SfcEditor &e, const char *mixCondition
         {"Fill_A", "Y1", "L2"}, {"Fill_B", "Y2", "L1"}, {"Mix", "M", mixCondition}, {"Drain", "Y3", "NOT L3 AND NOT SB2"}};
     for (const Stage &stage : stages) {
         e.select({last});
-        run("insert step-transition", [&] { return e.insertStepTransitionAfter(); });
+        run("insert step-transition", [&] { return e.trigger(QStringLiteral("sfcStepAfter")); });
         const quint64 step = e.selection().front();
         editors::sfc::StepProperties properties = *editors::sfc::stepProperties(e.document(), step);
         properties.name = QLatin1String(stage.name);
-        run("rename step", [&] { return e.setStepProperties(step, properties); });
+        run("rename step", [&] { return e.edit(QStringLiteral("Change step"), [&](editors::sfc::ChartDocument &d, const auto &) { return editors::sfc::setStepProperties(d, step, properties); }); });
         run("add action", [&] {
-            return e.addActionAssociation(step, editors::sfc::actionAssociation(QStringLiteral("N"), QLatin1String(stage.action)));
+            return e.edit(QStringLiteral("Add action"), [&](editors::sfc::ChartDocument &d, const auto &) { return editors::sfc::addAction(d, step, editors::sfc::actionAssociation(QStringLiteral("N"), QLatin1String(stage.action))); });
         });
         last = transitionAfter(e, step);
-        run("condition", [&] { return e.setTransitionCondition(last, QLatin1String(stage.condition)); });
+        run("condition", [&] { return e.edit(QStringLiteral("Change condition"), [&](editors::sfc::ChartDocument &d, const auto &) { return editors::sfc::setInlineCondition(d, last, QLatin1String(stage.condition)); }); });
     }
     // The chain ends in the jump of the new chart: back to Fill_A for the next batch ...
     quint64 jump = 0;
@@ -63,14 +63,14 @@ inline void buildMixingTank(editors::sfc::SfcEditor &e, const char *mixCondition
         if (std::holds_alternative<model::JumpStep>(element))
             jump = model::header(element).localId;
     e.select({jump});
-    run("retarget jump", [&] { return e.insertJump(QStringLiteral("Fill_A")); });
+    run("retarget jump", [&] { return e.edit(QStringLiteral("Insert jump"), [&](editors::sfc::ChartDocument &d, const auto &s) { return editors::sfc::insertJump(d, s, QStringLiteral("Fill_A")); }); });
     // ... or, when SB2 asked to stop, to Init at the end of the batch.
     e.select({last, jump});
-    run("alternative branch", [&] { return e.insertAlternativeBranch(true); });
+    run("alternative branch", [&] { return e.trigger(QStringLiteral("sfcAltRight")); });
     const quint64 stopTransition = e.selection().front();
-    run("stop condition", [&] { return e.setTransitionCondition(stopTransition, QStringLiteral("NOT L3 AND SB2")); });
+    run("stop condition", [&] { return e.edit(QStringLiteral("Change condition"), [&](editors::sfc::ChartDocument &d, const auto &) { return editors::sfc::setInlineCondition(d, stopTransition, QStringLiteral("NOT L3 AND SB2")); }); });
     e.select({stopTransition});
-    run("jump to Init", [&] { return e.insertJump(QStringLiteral("Init")); });
+    run("jump to Init", [&] { return e.edit(QStringLiteral("Insert jump"), [&](editors::sfc::ChartDocument &d, const auto &s) { return editors::sfc::insertJump(d, s, QStringLiteral("Init")); }); });
 }
 
 } // namespace iec::tests

@@ -12,6 +12,7 @@
 #include "model/projectmodel.h"
 #include "model/sfcoptions.h"
 #include "tests/editors/sfcmixingtank.h"
+#include "tests/model/roundtrip.h"
 
 #include <QAction>
 #include <QDir>
@@ -31,6 +32,8 @@ namespace {
 model::Project projectWithEmptyChart()
 {
     model::Project project;
+    project.fileHeader = {.companyName = QStringLiteral("IEC Studio tests"), .productName = QStringLiteral("IEC Studio"),
+        .productVersion = QStringLiteral("1"), .creationDateTime = QStringLiteral("2026-01-01T00:00:00")};
     project.contentHeader.name = QStringLiteral("MixingTank");
     model::Pou pou;
     pou.name = QStringLiteral("Tank");
@@ -67,12 +70,15 @@ class TestSfcEditor : public QObject
     Q_OBJECT
 
 private:
+    struct Fixture;
+    static model::Pou pouOf(const Fixture &f) { return *f.model.project().findPou(f.ref.pou); }
     struct Fixture {
         model::ProjectModel model;
         QUndoStack stack;
         BodyRef ref;
         std::unique_ptr<SfcEditor> editor;
-        std::vector<std::vector<Element>> states; // after each command, states[0] before any
+        std::vector<model::Pou> states; // after each command, states[0] before any
+        bool validate = false; // every command's result saved and checked against the XSD
 
         Fixture()
         {
@@ -80,7 +86,7 @@ private:
             ref = BodyRef {model.project().types.pous.front().id};
             editor = std::make_unique<SfcEditor>(model, ref, &stack);
             editor->resize(900, 900);
-            states.push_back(elementsOf(model, ref));
+            states.push_back(*model.project().findPou(ref.pou));
         }
         // Runs one editor command; it must succeed and add exactly one undo step.
         void run(const char *what, const std::function<bool()> &command)
@@ -88,7 +94,11 @@ private:
             const int before = stack.count();
             QVERIFY2(command(), qPrintable(QStringLiteral("%1: %2").arg(QLatin1String(what), editor->lastMessage())));
             QVERIFY2(stack.count() == before + 1, what);
-            states.push_back(elementsOf(model, ref));
+            states.push_back(*model.project().findPou(ref.pou));
+            if (validate) {
+                const QString errors = test::savedSchemaErrors(model.project());
+                QVERIFY2(errors.isEmpty(), qPrintable(QStringLiteral("after %1:\n%2").arg(QLatin1String(what), errors)));
+            }
         }
     };
 
@@ -157,65 +167,127 @@ private Q_SLOTS:
         QVERIFY(readChart(*reloaded->bodies.front().elements()).chart == f.editor->document().chart);
     }
 
-    void everyCommandUndoesAndRedoesExactly()
+    // Every command of the editor after the mixing tank: branches both ways, steps before and
+    // after, a macro step and a step inside it, jumps, actions, step options with entry/exit and
+    // a simplified step's active action, conditions inline, by name and in place, a priority,
+    // copy/paste, cut, delete, Arrange Chart.
+    static void applyEveryCommand(Fixture &f)
     {
-        Fixture f;
-        buildMixingTank(f);
-        // More commands: a parallel branch, a macro step, a transition-jump, copy/paste, delete,
-        // action edits, a priority, step options.
         SfcEditor &e = *f.editor;
         const quint64 mix = e.stepId(QStringLiteral("Mix"));
         e.select({mix});
-        f.run("parallel branch", [&] { return e.insertParallelBranch(true); });
+        f.run("parallel branch", [&] { return e.trigger(QStringLiteral("sfcParRight")); });
         const quint64 stirrer = e.selection().front();
         e.select({stirrer});
-        f.run("step after in the branch", [&] { return e.insertStepTransitionAfter(); });
+        f.run("step after in the branch", [&] { return e.trigger(QStringLiteral("sfcStepAfter")); });
         e.select({e.stepId(QStringLiteral("Fill_B"))});
-        f.run("step before", [&] { return e.insertStepTransitionBefore(); });
-        f.run("macro step", [&] { return e.insertMacroStep(); });
+        f.run("step before", [&] { return e.trigger(QStringLiteral("sfcStepBefore")); });
+        f.run("macro step", [&] { return e.trigger(QStringLiteral("sfcMacro")); });
         const quint64 fillA = e.stepId(QStringLiteral("Fill_A"));
-        f.run("second action", [&] { return e.addActionAssociation(fillA, actionAssociation(QStringLiteral("L"), QStringLiteral("Horn"), QStringLiteral("T#2s"))); });
-        f.run("change action", [&] { return e.changeActionAssociation(fillA, 1, actionAssociation(QStringLiteral("D"), QStringLiteral("Horn"), QStringLiteral("T#1s"), QStringLiteral("HornOn"))); });
-        f.run("move action", [&] { return e.moveActionAssociation(fillA, 1, 0); });
-        f.run("remove action", [&] { return e.removeActionAssociation(fillA, 0); });
+        f.run("second action", [&] { return e.edit(QStringLiteral("Add action"), [&](ChartDocument &d, const auto &) { return addAction(d, fillA, actionAssociation(QStringLiteral("L"), QStringLiteral("Horn"), QStringLiteral("T#2s"))); }); });
+        f.run("change action", [&] { return e.edit(QStringLiteral("Change action"), [&](ChartDocument &d, const auto &) { return changeAction(d, fillA, 1, actionAssociation(QStringLiteral("D"), QStringLiteral("Horn"), QStringLiteral("T#1s"), QStringLiteral("HornOn"))); }); });
+        f.run("move action", [&] { return e.edit(QStringLiteral("Move action"), [&](ChartDocument &d, const auto &) { return moveAction(d, fillA, 1, 0); }); });
+        f.run("remove action", [&] { return e.edit(QStringLiteral("Remove action"), [&](ChartDocument &d, const auto &) { return removeAction(d, fillA, 0); }); });
         StepProperties options = *stepProperties(e.document(), e.stepId(QStringLiteral("Init")));
         options.options.entryAction = QStringLiteral("ResetAll");
         options.options.maxTime = QStringLiteral("T#1m");
         options.comment = QStringLiteral("Waits for the start button");
-        f.run("step options", [&] { return e.setStepProperties(e.stepId(QStringLiteral("Init")), options); });
+        f.run("step options", [&] { return e.edit(QStringLiteral("Change step"), [&](ChartDocument &d, const auto &) { return setStepProperties(d, e.stepId(QStringLiteral("Init")), options); }); });
         const quint64 afterInit = transitionAfter(e, e.stepId(QStringLiteral("Init")));
-        f.run("priority", [&] { return e.setTransitionPriority(afterInit, 1); });
-        f.run("named transition", [&] { return e.setTransitionReference(afterInit, QStringLiteral("StartPressed")); });
+        f.run("priority", [&] { return e.edit(QStringLiteral("Change priority"), [&](ChartDocument &d, const auto &) { return setPriority(d, afterInit, 1); }); });
+        f.run("named transition", [&] { return e.edit(QStringLiteral("Change condition"), [&](ChartDocument &d, const auto &) { return setConditionReference(d, afterInit, QStringLiteral("StartPressed")); }); });
         const quint64 fillB = e.stepId(QStringLiteral("Fill_B"));
         e.select({fillB, transitionAfter(e, fillB)});
-        QVERIFY(e.copySelection());
+        QVERIFY(e.trigger(QStringLiteral("sfcCopy")));
         e.select({transitionAfter(e, fillB)});
-        f.run("paste", [&] { return e.paste(); });
+        f.run("paste", [&] { return e.trigger(QStringLiteral("sfcPaste")); });
         QVERIFY(e.stepId(QStringLiteral("Fill_B_1")));
-        f.run("delete", [&] { return e.deleteSelection(); });
+        f.run("delete", [&] { return e.trigger(QStringLiteral("sfcDelete")); });
         e.select({e.stepId(QStringLiteral("Drain"))});
         f.run("alternative left", [&] {
             const quint64 t = transitionAfter(e, e.stepId(QStringLiteral("Fill_B")));
             e.select({t});
-            return e.insertAlternativeBranch(false);
+            return e.trigger(QStringLiteral("sfcAltLeft"));
         });
         const quint64 fresh = e.selection().front();
         e.select({fresh});
-        f.run("step in the new branch", [&] { return e.insertStepTransitionAfter(); });
+        f.run("step in the new branch", [&] { return e.trigger(QStringLiteral("sfcStepAfter")); });
         const quint64 branchStep = e.selection().front();
         f.run("delete the new branch", [&] {
             e.select({fresh, branchStep, transitionAfter(e, branchStep)});
-            return e.deleteSelection();
+            return e.trigger(QStringLiteral("sfcDelete"));
         });
+        e.select({e.stepId(QStringLiteral("Mix"))});
+        f.run("parallel branch left", [&] { return e.trigger(QStringLiteral("sfcParLeft")); });
+        // A step without IEC actions becomes a simplified step with an active and an exit action.
+        quint64 plain = 0;
+        for (const Element &element : e.document().elements)
+            if (const auto *step = std::get_if<model::Step>(&element); step && !step->initialStep && !plain
+                && stepActions(e.document(), step->localId).empty())
+                plain = step->localId;
+        QVERIFY(plain);
+        StepProperties simplified = *stepProperties(e.document(), plain);
+        simplified.options.simplified = true;
+        simplified.options.activeAction = QStringLiteral("Plain_active");
+        simplified.options.exitAction = QStringLiteral("Plain_exit");
+        simplified.options.minTime = QStringLiteral("T#2s");
+        f.run("simplified step", [&] { return e.edit(QStringLiteral("Change step"), [&](ChartDocument &d, const auto &) { return setStepProperties(d, plain, simplified); }); });
+        f.run("entry action by its corner", [&] { return e.openStepAction(e.stepId(QStringLiteral("Drain")), QStringLiteral("entry")); });
+        const quint64 afterFillA = transitionAfter(e, e.stepId(QStringLiteral("Fill_A")));
+        f.run("condition in place", [&] {
+            e.select({afterFillA});
+            e.trigger(QStringLiteral("sfcCondition"));
+            auto *line = e.findChild<QLineEdit *>(QStringLiteral("inPlaceEditor"));
+            if (!line)
+                return false;
+            line->setText(QStringLiteral("L2 AND NOT L3"));
+            QTest::keyClick(line, Qt::Key_Return);
+            return true;
+        });
+        quint64 macro = 0;
+        for (const Element &element : e.document().elements)
+            if (std::holds_alternative<model::MacroStep>(element))
+                macro = model::header(element).localId;
+        QVERIFY(e.enterMacro(macro));
+        e.select({model::header(e.document().elements.front()).localId});
+        f.run("step inside the macro", [&] { return e.trigger(QStringLiteral("sfcStepAfter")); });
+        // The new last step of the macro's chain ends in a transition-jump back to its first.
+        for (const Element &element : e.document().elements)
+            if (std::holds_alternative<model::Step>(element) && model::header(element).localId != model::header(e.document().elements.front()).localId)
+                e.select({model::header(element).localId});
+        f.run("transition-jump", [&] {
+            const QString first = e.document().stepName(model::header(e.document().elements.front()).localId);
+            return e.edit(QStringLiteral("Insert transition-jump"), [&](ChartDocument &d, const auto &s) { return insertTransitionJump(d, s, first); });
+        });
+        QVERIFY(e.leaveMacro());
+        e.select({e.stepId(QStringLiteral("Fill_B")), transitionAfter(e, e.stepId(QStringLiteral("Fill_B")))});
+        f.run("cut", [&] { return e.trigger(QStringLiteral("sfcCut")); });
+        f.run("arrange", [&] { return e.arrangeChart(); });
+    }
+
+    void everyCommandUndoesAndRedoesExactly()
+    {
+        Fixture f;
+        buildMixingTank(f);
+        applyEveryCommand(f);
         // Undo everything, one gesture at a time, and compare with the state before it.
         for (int i = int(f.states.size()) - 1; i > 0; --i) {
             f.stack.undo();
-            QVERIFY2(elementsOf(f.model, f.ref) == f.states[std::size_t(i) - 1], qPrintable(QString::number(i)));
+            QVERIFY2(pouOf(f) == f.states[std::size_t(i) - 1], qPrintable(QString::number(i)));
         }
         for (std::size_t i = 1; i < f.states.size(); ++i) {
             f.stack.redo();
-            QVERIFY2(elementsOf(f.model, f.ref) == f.states[i], qPrintable(QString::number(i)));
+            QVERIFY2(pouOf(f) == f.states[i], qPrintable(QString::number(i)));
         }
+    }
+
+    void everyCommandSavesAValidFile()
+    {
+        Fixture f;
+        f.validate = true;
+        buildMixingTank(f);
+        applyEveryCommand(f);
+        QVERIFY(f.states.size() > 40);
     }
 
     void refusalsKeepTheChartValid()
@@ -225,12 +297,12 @@ private Q_SLOTS:
         SfcEditor &e = *f.editor;
         const auto before = elementsOf(f.model, f.ref);
         e.select({e.stepId(QStringLiteral("Mix"))});
-        QVERIFY(!e.insertAlternativeBranch(true)); // needs a transition
+        QVERIFY(!e.trigger(QStringLiteral("sfcAltRight"))); // needs a transition
         QVERIFY(e.lastMessage().contains(QStringLiteral("transition")));
         e.select({e.stepId(QStringLiteral("Init"))});
-        QVERIFY(!e.insertStepTransitionBefore());
-        QVERIFY(!e.deleteSelection());
-        QVERIFY(!e.insertJump(QStringLiteral("Nowhere")));
+        QVERIFY(!e.trigger(QStringLiteral("sfcStepBefore")));
+        QVERIFY(!e.trigger(QStringLiteral("sfcDelete")));
+        QVERIFY(!e.edit(QStringLiteral("Insert jump"), [&](ChartDocument &d, const auto &s) { return insertJump(d, s, QStringLiteral("Nowhere")); }));
         QVERIFY(elementsOf(f.model, f.ref) == before);
     }
 
@@ -262,7 +334,7 @@ private Q_SLOTS:
         const quint64 t = transitionAfter(e, e.stepId(QStringLiteral("Fill_A")));
         e.select({t});
         e.action(QStringLiteral("sfcCondition"))->trigger();
-        auto *line = e.findChild<QLineEdit *>(QStringLiteral("sfcConditionEditor"));
+        auto *line = e.findChild<QLineEdit *>(QStringLiteral("inPlaceEditor"));
         QVERIFY(line);
         QCOMPARE(line->text(), QStringLiteral("L2"));
         line->setText(QStringLiteral("L2 AND NOT Fault"));
@@ -276,12 +348,12 @@ private Q_SLOTS:
         buildMixingTank(f);
         SfcEditor &e = *f.editor;
         e.select({e.stepId(QStringLiteral("Init"))});
-        e.moveSelection(Qt::Key_Down);
+        QTest::keyClick(e.view(), Qt::Key_Down);
         QCOMPARE(e.selection(), QList<quint64> {transitionAfter(e, e.stepId(QStringLiteral("Init")))});
-        e.moveSelection(Qt::Key_Down);
+        QTest::keyClick(e.view(), Qt::Key_Down);
         QCOMPARE(e.selection(), QList<quint64> {e.stepId(QStringLiteral("Fill_A"))});
-        e.moveSelection(Qt::Key_Up);
-        e.moveSelection(Qt::Key_Up);
+        QTest::keyClick(e.view(), Qt::Key_Up);
+        QTest::keyClick(e.view(), Qt::Key_Up);
         QCOMPARE(e.selection(), QList<quint64> {e.stepId(QStringLiteral("Init"))});
     }
 
@@ -289,14 +361,14 @@ private Q_SLOTS:
     {
         Fixture f;
         SfcEditor &e = *f.editor;
-        f.run("new chart", [&] { return e.createChart(); });
-        f.run("macro", [&] { return e.insertMacroStep(); });
+        f.run("new chart", [&] { return e.trigger(QStringLiteral("sfcNewChart")); });
+        f.run("macro", [&] { return e.trigger(QStringLiteral("sfcMacro")); });
         const quint64 macro = e.selection().front();
         QVERIFY(e.enterMacro(macro));
         QCOMPARE(e.document().elements.size(), std::size_t(1));
         const quint64 inner = model::header(e.document().elements.front()).localId;
         e.select({inner});
-        f.run("step inside the macro", [&] { return e.insertStepTransitionAfter(); });
+        f.run("step inside the macro", [&] { return e.trigger(QStringLiteral("sfcStepAfter")); });
         QCOMPARE(e.document().elements.size(), std::size_t(3));
         QVERIFY(e.leaveMacro());
         QCOMPARE(e.selection(), QList<quint64> {macro});
@@ -344,14 +416,14 @@ private Q_SLOTS:
         // Editing is refused with a message while online.
         const int steps = f.stack.count();
         e.select({e.stepId(QStringLiteral("Mix"))});
-        QVERIFY(!e.deleteSelection());
+        QVERIFY(!e.trigger(QStringLiteral("sfcDelete")));
         QVERIFY(e.lastMessage().contains(QStringLiteral("online")));
         QCOMPARE(f.stack.count(), steps);
         // Offline again: overlays gone, editable again.
         e.setOnlineSnapshot(nullptr);
         QVERIFY(!e.scene()->itemFor(e.stepId(QStringLiteral("Mix")))->isActive());
         QVERIFY(e.scene()->itemFor(e.stepId(QStringLiteral("Mix")))->onlineText().isEmpty());
-        QVERIFY(e.deleteSelection());
+        QVERIFY(e.trigger(QStringLiteral("sfcDelete")));
         QCOMPARE(f.stack.count(), steps + 1);
     }
 
@@ -372,7 +444,7 @@ private Q_SLOTS:
         QVERIFY(editor.scene()->itemFor(step4));
         QVERIFY(editor.scene()->itemFor(0)); // Init, localId 0
         editor.select({step4});
-        QVERIFY2(editor.insertParallelBranch(true), qPrintable(editor.lastMessage()));
+        QVERIFY2(editor.trigger(QStringLiteral("sfcParRight")), qPrintable(editor.lastMessage()));
         QCOMPARE(editor.document().chart.main.size(), std::size_t(5)); // Init, block, Step4 in a block, block, jump
         QVERIFY(editor.document().chart.loose.empty());
         stack.undo();
@@ -388,10 +460,10 @@ private Q_SLOTS:
         StepProperties drain = *stepProperties(e.document(), e.stepId(QStringLiteral("Drain")));
         drain.options.entryAction = QStringLiteral("OpenValve");
         drain.options.exitAction = QStringLiteral("CloseValve");
-        QVERIFY(e.setStepProperties(e.stepId(QStringLiteral("Drain")), drain));
+        QVERIFY(e.edit(QStringLiteral("Change step"), [&](ChartDocument &d, const auto &) { return setStepProperties(d, e.stepId(QStringLiteral("Drain")), drain); }));
         e.select({e.stepId(QStringLiteral("Mix"))});
-        QVERIFY(e.insertParallelBranch(true));
-        QVERIFY(e.addActionAssociation(e.selection().front(), actionAssociation(QStringLiteral("L"), QStringLiteral("Heater"), QStringLiteral("T#3s"))));
+        QVERIFY(e.trigger(QStringLiteral("sfcParRight")));
+        QVERIFY(e.edit(QStringLiteral("Add action"), [&](ChartDocument &d, const auto &) { return addAction(d, e.selection().front(), actionAssociation(QStringLiteral("L"), QStringLiteral("Heater"), QStringLiteral("T#3s"))); }));
         e.resize(760, 900);
         e.fitToWindow();
         e.select({});

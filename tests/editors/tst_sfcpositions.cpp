@@ -14,7 +14,7 @@
 #include "model/plcopen/reader.h"
 #include "model/plcopen/writer.h"
 #include "model/projectmodel.h"
-#include "model/undo/sfccommands.h"
+#include "model/undo/bodyelementscommand.h"
 
 #include <QDir>
 #include <QTest>
@@ -247,34 +247,34 @@ std::optional<bool> apply(SfcEditor &e, const QString &command, quint64 step, qu
 {
     if (command == QLatin1String("after") || command == QLatin1String("before")) {
         e.select({step});
-        return command == QLatin1String("after") ? e.insertStepTransitionAfter() : e.insertStepTransitionBefore();
+        return command == QLatin1String("after") ? e.trigger(QStringLiteral("sfcStepAfter")) : e.trigger(QStringLiteral("sfcStepBefore"));
     }
     if (command == QLatin1String("after-transition")) {
         e.select({transition});
-        return e.insertStepTransitionAfter();
+        return e.trigger(QStringLiteral("sfcStepAfter"));
     }
     if (command.startsWith(QLatin1String("alternative"))) {
         e.select({transition});
-        return e.insertAlternativeBranch(command.endsWith(QLatin1String("right")));
+        return e.trigger(command.endsWith(QLatin1String("right")) ? QStringLiteral("sfcAltRight") : QStringLiteral("sfcAltLeft"));
     }
     if (command.startsWith(QLatin1String("parallel"))) {
         e.select({step});
-        return e.insertParallelBranch(command.endsWith(QLatin1String("right")));
+        return e.trigger(command.endsWith(QLatin1String("right")) ? QStringLiteral("sfcParRight") : QStringLiteral("sfcParLeft"));
     }
     if (command == QLatin1String("macro")) {
         e.select({transition});
-        return e.insertMacroStep();
+        return e.trigger(QStringLiteral("sfcMacro"));
     }
     if (command == QLatin1String("paste")) {
         e.select({step, transition});
-        if (!e.copySelection())
+        if (!e.trigger(QStringLiteral("sfcCopy")))
             return false;
         e.select({transition});
-        return e.paste();
+        return e.trigger(QStringLiteral("sfcPaste"));
     }
     if (command == QLatin1String("delete")) {
         e.select({step, transition});
-        return e.deleteSelection();
+        return e.trigger(QStringLiteral("sfcDelete"));
     }
     if (command == QLatin1String("delete-branch")) {
         // The whole branch the step is in: its range from the divergence's first element on.
@@ -287,17 +287,17 @@ std::optional<bool> apply(SfcEditor &e, const QString &command, quint64 step, qu
             for (quint64 id : elementsOf(doc, node))
                 all << id;
         e.select(all);
-        return e.deleteSelection();
+        return e.trigger(QStringLiteral("sfcDelete"));
     }
     if (command == QLatin1String("action"))
-        return e.addActionAssociation(step, actionAssociation(QStringLiteral("N"), QStringLiteral("HornWithALongName")));
+        return e.edit(QStringLiteral("Add action"), [&](ChartDocument &d, const auto &) { return addAction(d, step, actionAssociation(QStringLiteral("N"), QStringLiteral("HornWithALongName"))); });
     if (command == QLatin1String("rename")) {
         StepProperties properties = *stepProperties(e.document(), step);
         properties.name += QStringLiteral("_AndALongerName");
-        return e.setStepProperties(step, properties);
+        return e.edit(QStringLiteral("Change step"), [&](ChartDocument &d, const auto &) { return setStepProperties(d, step, properties); });
     }
     if (command == QLatin1String("condition"))
-        return e.setTransitionCondition(transition, QStringLiteral("LevelHigh AND NOT StopRequested AND Timer.Q"));
+        return e.edit(QStringLiteral("Change condition"), [&](ChartDocument &d, const auto &) { return setInlineCondition(d, transition, QStringLiteral("LevelHigh AND NOT StopRequested AND Timer.Q")); });
     return false;
 }
 
@@ -475,7 +475,7 @@ private Q_SLOTS:
         QCOMPARE(count, quint64(7));
         shoot(e, QStringLiteral("counter_before"));
         e.select({count});
-        QVERIFY(e.insertStepTransitionAfter());
+        QVERIFY(e.trigger(QStringLiteral("sfcStepAfter")));
         shoot(e, QStringLiteral("counter_after_insert"));
         const std::vector<Element> after = o->elements();
         const auto now = byId(after);
@@ -511,7 +511,7 @@ private Q_SLOTS:
         // ResetCounter branch right as far as needed.
         const quint64 count = e.stepId(QStringLiteral("Count"));
         e.select({count});
-        QVERIFY(e.insertParallelBranch(true));
+        QVERIFY(e.trigger(QStringLiteral("sfcParRight")));
         shoot(e, QStringLiteral("counter_parallel"));
         const std::vector<Element> after = o->elements();
         const auto now = byId(after);
@@ -544,7 +544,7 @@ private Q_SLOTS:
         QCOMPARE(red, quint64(10));
         shoot(e, QStringLiteral("traffic_before"));
         e.select({6, red});
-        QVERIFY2(e.deleteSelection(), qPrintable(e.lastMessage()));
+        QVERIFY2(e.trigger(QStringLiteral("sfcDelete")), qPrintable(e.lastMessage()));
         shoot(e, QStringLiteral("traffic_after_delete"));
         const std::vector<Element> after = o->elements();
         const auto now = byId(after);
@@ -587,18 +587,18 @@ private Q_SLOTS:
         QUndoStack stack;
         const BodyRef ref {projectModel.project().types.pous.front().id};
         SfcEditor e(projectModel, ref, &stack);
-        QVERIFY(e.createChart());
+        QVERIFY(e.trigger(QStringLiteral("sfcNewChart")));
         e.select({e.stepId(QStringLiteral("Init"))});
-        QVERIFY(e.insertStepTransitionAfter());
-        QVERIFY(e.insertStepTransitionAfter());
+        QVERIFY(e.trigger(QStringLiteral("sfcStepAfter")));
+        QVERIFY(e.trigger(QStringLiteral("sfcStepAfter")));
         std::vector<Element> arranged = *projectModel.body(ref)->elements();
         const quint64 step1 = e.stepId(QStringLiteral("Step1"));
         for (Element &element : arranged)
             if (model::header(element).localId == step1)
                 model::header(element).position.x += 200;
-        stack.push(new model::SetChartElementsCommand(projectModel, ref, arranged, QStringLiteral("drag")));
+        stack.push(new model::SetBodyElementsCommand(projectModel, ref, arranged, QStringLiteral("drag")));
         e.select({e.stepId(QStringLiteral("Step2"))});
-        QVERIFY(e.insertStepTransitionAfter());
+        QVERIFY(e.trigger(QStringLiteral("sfcStepAfter")));
         const std::vector<Element> edited = *projectModel.body(ref)->elements();
         const auto now = byId(edited);
         QCOMPARE(model::header(*now.at(step1)).position, model::header(*byId(arranged).at(step1)).position);
@@ -623,7 +623,7 @@ private Q_SLOTS:
         QVERIFY(o->model.body(o->ref)->layoutGenerated);
         SfcEditor &e = *o->editor;
         e.select({e.stepId(QStringLiteral("Step4"))});
-        QVERIFY(e.insertStepTransitionAfter());
+        QVERIFY(e.trigger(QStringLiteral("sfcStepAfter")));
         ChartDocument expected = readChart(o->elements());
         layoutChart(expected);
         QVERIFY(o->elements() == expected.elements);
@@ -664,7 +664,7 @@ private Q_SLOTS:
         QVERIFY(o);
         SfcEditor &e = *o->editor;
         // Editing the left branch's condition pushes the right branch out of its way.
-        QVERIFY(e.setTransitionCondition(16, QStringLiteral("NOT L3 AND StopRequested AND NOT Fault AND Ready")));
+        QVERIFY(e.edit(QStringLiteral("Change condition"), [&](ChartDocument &d, const auto &) { return setInlineCondition(d, 16, QStringLiteral("NOT L3 AND StopRequested AND NOT Fault AND Ready")); }));
         auto *left = static_cast<SfcItem *>(e.scene()->itemFor(16));
         QCOMPARE(left->shownLabel(), QStringLiteral("NOT L3 AND StopRequested AND NOT Fault AND Ready"));
         QVERIFY(!labelRect(left->element()).intersects(static_cast<SfcItem *>(e.scene()->itemFor(17))->frame()));
@@ -713,9 +713,9 @@ private Q_SLOTS:
         projectModel.reset(project);
         QUndoStack stack;
         SfcEditor e(projectModel, BodyRef {projectModel.project().types.pous.front().id}, &stack);
-        QVERIFY(e.createChart());
+        QVERIFY(e.trigger(QStringLiteral("sfcNewChart")));
         for (int i = 0; i < 5; ++i) // a column about 450 pixels tall
-            QVERIFY(e.insertStepTransitionAfter());
+            QVERIFY(e.trigger(QStringLiteral("sfcStepAfter")));
         // Before the editor is shown (a tab opened in the background, a picture taken offscreen)
         // it fits the size it has, not the view's default size.
         e.resize(1200, 1600);

@@ -1,5 +1,7 @@
 #include "roundtrip.h"
 
+#include "model/plcopen/writer.h"
+
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTextStream>
@@ -25,6 +27,11 @@ QString schemaErrors(const QByteArray &xml)
     if (xmllint.exitStatus() == QProcess::NormalExit && xmllint.exitCode() == 0)
         return {};
     return QString::fromUtf8(xmllint.readAllStandardError()).left(3000);
+}
+
+QString savedSchemaErrors(const Project &project)
+{
+    return schemaErrors(plcopen::writeProject(project));
 }
 
 namespace {

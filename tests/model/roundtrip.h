@@ -10,6 +10,8 @@ namespace iec::test {
 
 // Runs xmllint against the PLCopen XSD; returns its messages, empty when the bytes validate.
 QString schemaErrors(const QByteArray &xml);
+// The project as File → Save writes it, checked the same way.
+QString savedSchemaErrors(const model::Project &project);
 
 // A short description of the first difference between two projects ("" when equal), so a failed
 // comparison says where to look.

@@ -1,4 +1,5 @@
 #include "model/projectmodel.h"
+#include "model/undo/bodyelementscommand.h"
 #include "model/undo/poucommands.h"
 #include "modelfixture.h"
 
@@ -29,6 +30,9 @@ private Q_SLOTS:
     void moveToTheSamePlaceChangesNothing();
     void connectAndDisconnect();
     void bodyText();
+    void replaceElementsSignalsOnceAndKeepsOrder_data();
+    void replaceElementsSignalsOnceAndKeepsOrder();
+    void replaceElementsCommandUndoesExactly();
     void addPouCommandRedoUndoRedo();
     void renameCommandsMergeIntoOneStep();
 };
@@ -282,6 +286,127 @@ void TestProjectModel::bodyText()
     QCOMPARE(model.body(reset)->text(), QStringLiteral("Count := 1;"));
     QCOMPARE(changed.count(), 1);
     QCOMPARE(changed.at(0).at(0).value<BodyRef>(), reset);
+}
+
+namespace {
+
+// A body of comments "1".."5" (localId = text). A target is written as localIds in order; a
+// trailing ' changes that comment's text: "1 2 3' 6 5" keeps 1 and 2, changes 3, removes 4,
+// inserts 6 and keeps 5.
+Element numberedComment(quint64 localId, bool changed = false)
+{
+    Comment comment;
+    comment.localId = localId;
+    comment.content.text = QString::number(localId) + (changed ? QStringLiteral("'") : QString());
+    return comment;
+}
+
+std::vector<Element> commentsFrom(const QString &spec)
+{
+    std::vector<Element> elements;
+    for (const QString &word : spec.split(QLatin1Char(' '), Qt::SkipEmptyParts))
+        elements.push_back(numberedComment(word.chopped(word.endsWith(QLatin1Char('\'')) ? 1 : 0).toULongLong(),
+            word.endsWith(QLatin1Char('\''))));
+    return elements;
+}
+
+QString idsOf(const QSignalSpy &spy)
+{
+    if (spy.isEmpty())
+        return QStringLiteral("-");
+    QStringList ids;
+    for (quint64 id : spy.front().at(1).value<QList<quint64>>())
+        ids << QString::number(id);
+    return ids.join(QLatin1Char(' ')) + (spy.count() > 1 ? QStringLiteral(" (%1 signals)").arg(spy.count()) : QString());
+}
+
+BodyRef commentBody(ProjectModel &model)
+{
+    Pou pou {.name = QStringLiteral("Chart")};
+    pou.bodies.push_back(Body::withLanguage(BodyLanguage::FBD));
+    *pou.bodies.front().elements() = commentsFrom(QStringLiteral("1 2 3 4 5"));
+    Project project;
+    project.types.pous.push_back(pou);
+    model.reset(project);
+    return {model.project().types.pous.front().id, BodyRef::Part::Pou, {}};
+}
+
+} // namespace
+
+void TestProjectModel::replaceElementsSignalsOnceAndKeepsOrder_data()
+{
+    QTest::addColumn<QString>("target");
+    QTest::addColumn<QString>("removed");
+    QTest::addColumn<QString>("inserted");
+    QTest::addColumn<QString>("changed");
+    QTest::newRow("nothing") << "1 2 3 4 5" << "-" << "-" << "-";
+    QTest::newRow("one changed") << "1 2 3' 4 5" << "-" << "-" << "3";
+    QTest::newRow("mixed") << "1 2 3' 6 5" << "4" << "6" << "3";
+    QTest::newRow("all removed") << "" << "1 2 3 4 5" << "-" << "-";
+    QTest::newRow("inserted in the middle") << "1 7 2 3 8 4 5" << "-" << "7 8" << "-";
+    QTest::newRow("moved to the front") << "5 1 2 3 4" << "-" << "-" << "5 1 2 3 4";
+    QTest::newRow("two swapped") << "1 2 4 3 5" << "-" << "-" << "4 3";
+    QTest::newRow("swapped and changed") << "1 2 4' 3 5" << "-" << "-" << "4 3";
+    QTest::newRow("localId 0") << "0 1 2 3 4 5" << "-" << "0" << "-";
+}
+
+void TestProjectModel::replaceElementsSignalsOnceAndKeepsOrder()
+{
+    QFETCH(QString, target);
+    QFETCH(QString, removed);
+    QFETCH(QString, inserted);
+    QFETCH(QString, changed);
+    ProjectModel model;
+    const BodyRef ref = commentBody(model);
+    QSignalSpy removedSpy(&model, &ProjectModel::elementsRemoved);
+    QSignalSpy insertedSpy(&model, &ProjectModel::elementsInserted);
+    QSignalSpy changedSpy(&model, &ProjectModel::elementsChanged);
+    QSignalSpy connectionsSpy(&model, &ProjectModel::connectionsChanged);
+    const quint64 revision = model.revision();
+    QStringList order;
+    QObject::connect(&model, &ProjectModel::elementsRemoved, &model, [&] { order << QStringLiteral("removed"); });
+    QObject::connect(&model, &ProjectModel::elementsInserted, &model, [&] { order << QStringLiteral("inserted"); });
+    QObject::connect(&model, &ProjectModel::elementsChanged, &model, [&] { order << QStringLiteral("changed"); });
+
+    const bool expectChange = removed != QLatin1String("-") || inserted != QLatin1String("-") || changed != QLatin1String("-");
+    QCOMPARE(model.replaceElements(ref, commentsFrom(target)), expectChange);
+
+    QVERIFY(*model.body(ref)->elements() == commentsFrom(target));
+    QCOMPARE(idsOf(removedSpy), removed);
+    QCOMPARE(idsOf(insertedSpy), inserted);
+    QCOMPARE(idsOf(changedSpy), changed);
+    QCOMPARE(connectionsSpy.count(), 0);
+    QCOMPARE(model.revision(), revision + (expectChange ? 1 : 0));
+    QStringList expectedOrder;
+    if (removed != QLatin1String("-"))
+        expectedOrder << QStringLiteral("removed");
+    if (inserted != QLatin1String("-"))
+        expectedOrder << QStringLiteral("inserted");
+    if (changed != QLatin1String("-"))
+        expectedOrder << QStringLiteral("changed");
+    QCOMPARE(order, expectedOrder);
+    for (const QSignalSpy *spy : {&removedSpy, &insertedSpy, &changedSpy}) {
+        if (!spy->isEmpty())
+            QCOMPARE(spy->front().at(0).value<BodyRef>(), ref);
+    }
+}
+
+void TestProjectModel::replaceElementsCommandUndoesExactly()
+{
+    ProjectModel model;
+    const BodyRef ref = commentBody(model);
+    // Two elements with one localId are refused: the body stays as it was.
+    QVERIFY(!model.replaceElements(ref, commentsFrom(QStringLiteral("1 1"))));
+    QVERIFY(!model.replaceElements({}, commentsFrom(QStringLiteral("1"))));
+    const std::vector<Element> before = *model.body(ref)->elements();
+    QUndoStack stack;
+    stack.push(new SetBodyElementsCommand(model, ref, commentsFrom(QStringLiteral("6 2' 1 5")), QStringLiteral("edit")));
+    QVERIFY(*model.body(ref)->elements() == commentsFrom(QStringLiteral("6 2' 1 5")));
+    QCOMPARE(stack.undoText(), QStringLiteral("edit"));
+    stack.undo();
+    QVERIFY(*model.body(ref)->elements() == before);
+    stack.redo();
+    QVERIFY(*model.body(ref)->elements() == commentsFrom(QStringLiteral("6 2' 1 5")));
 }
 
 void TestProjectModel::addPouCommandRedoUndoRedo()

@@ -1,0 +1,22 @@
+#pragma once
+
+#include <QString>
+
+namespace iec::model {
+struct Body;
+}
+
+namespace iec::editors {
+
+// The language an editor is chosen by. It is finer than model::BodyLanguage: a CFC diagram is
+// stored as FBD (or, by CODESYS, in the addData of an empty ST body) and needs its own editor.
+enum class EditorLanguage { ST, IL, LD, FBD, CFC, SFC };
+
+// The one place that decides which editor a body gets.
+EditorLanguage editorLanguage(const model::Body &body);
+// "ST", "IL", "LD", "FBD", "CFC", "SFC" (the languages' names are the same in every UI language).
+QString editorLanguageName(EditorLanguage language);
+// The marker of a CODESYS CFC diagram: an addData entry whose name ends like this.
+inline constexpr const char *kCodesysCfcAddDataSuffix = "/plcopenxml/cfc";
+
+} // namespace iec::editors

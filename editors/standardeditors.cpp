@@ -1,0 +1,30 @@
+#include "editors/standardeditors.h"
+
+#include "editors/common/editorregistry.h"
+#include "editors/ld/ldeditor.h"
+#include "editors/ld/ldscene.h"
+#include "editors/sfc/sfceditor.h"
+#include "editors/sfc/sfcscene.h"
+
+namespace iec::editors {
+
+void registerStandardEditors()
+{
+    static bool registered = false;
+    if (registered)
+        return;
+    registered = true;
+    EditorRegistry &registry = EditorRegistry::instance();
+    registry.add({EditorLanguage::SFC,
+        [](model::ProjectModel &model, const model::BodyRef &ref, QUndoStack *stack) -> DiagramEditor * {
+            return new sfc::SfcEditor(model, ref, stack);
+        },
+        [] { return std::unique_ptr<DiagramPolicy>(std::make_unique<sfc::SfcPolicy>()); }});
+    registry.add({EditorLanguage::LD,
+        [](model::ProjectModel &model, const model::BodyRef &ref, QUndoStack *stack) -> DiagramEditor * {
+            return new ld::LdEditor(model, ref, stack);
+        },
+        [] { return std::unique_ptr<DiagramPolicy>(std::make_unique<ld::LdPolicy>()); }});
+}
+
+} // namespace iec::editors

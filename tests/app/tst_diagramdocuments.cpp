@@ -1,0 +1,204 @@
+// Graphical bodies open through the editor registry (DESIGN.md): the document area asks it by
+// editor language and wires what it gets (grid, online instance, completion, opening actions),
+// the Insert menu shows the current editor's insert commands, build messages on elements mark
+// them; a language without an editor keeps the placeholder. A test language (the boxes of
+// tests/editors/boxdiagram.h, registered for FBD) stands in for the editors still to come.
+#include "app/buildcontroller.h"
+#include "app/documentarea.h"
+#include "app/mainwindow.h"
+#include "app/messagespane.h"
+#include "editors/common/diagrameditor.h"
+#include "editors/common/diagramscene.h"
+#include "editors/common/diagramview.h"
+#include "editors/common/editorregistry.h"
+#include "editors/ld/ldeditor.h"
+#include "editors/sfc/sfceditor.h"
+#include "model/projectmodel.h"
+#include "tests/editors/boxdiagram.h"
+
+#include <QAction>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QTest>
+
+using namespace iec;
+using namespace iec::app;
+using model::BodyRef;
+
+namespace {
+
+class BoxEditor : public editors::DiagramEditor
+{
+    Q_OBJECT
+
+public:
+    BoxEditor(model::ProjectModel &model, const BodyRef &ref, QUndoStack *stack)
+        : DiagramEditor(model, ref, stack, std::make_unique<tests::BoxPolicy>())
+    {
+        const ActionSpec specs[] = {
+            {"boxAdd", QT_TR_NOOP("Add Box"), "", ActionGroup::Insert, true, true, [] {}},
+            {"boxOpen", QT_TR_NOOP("Open Action"), "", ActionGroup::Element, false, false,
+                [this] { Q_EMIT openPartRequested(bodyRef().pou, BodyRef::Part::Action, QStringLiteral("Fill")); }},
+        };
+        addActionTable(specs);
+    }
+};
+
+model::Pou pouIn(model::BodyLanguage language, const QString &name)
+{
+    model::Pou pou;
+    pou.name = name;
+    pou.kind = model::PouKind::Program;
+    pou.bodies.push_back(model::Body::withLanguage(language));
+    return pou;
+}
+
+model::Project project()
+{
+    model::Project project;
+    model::Pou boxes = pouIn(model::BodyLanguage::FBD, QStringLiteral("Boxes"));
+    model::Element a = tests::inVariableAt(0, 0, QStringLiteral("A"));
+    model::header(a).localId = 7;
+    boxes.bodies.front().elements()->push_back(a);
+    model::Element b = tests::outVariableAt(100, 0, QStringLiteral("B")); // B is not declared
+    model::header(b).localId = 8;
+    std::get<model::OutVariable>(b).connectionPointIn->connections.push_back({.refLocalId = 7});
+    boxes.bodies.front().elements()->push_back(b);
+    model::PouPart fill;
+    fill.name = QStringLiteral("Fill");
+    fill.body = model::Body::withLanguage(model::BodyLanguage::ST);
+    boxes.actions.push_back(fill);
+    project.types.pous.push_back(boxes);
+    project.types.pous.push_back(pouIn(model::BodyLanguage::LD, QStringLiteral("Ladder")));
+    // CODESYS keeps a CFC diagram in the addData of an empty ST body.
+    model::Pou cfc = pouIn(model::BodyLanguage::ST, QStringLiteral("Flow"));
+    cfc.bodies.front().addData.push_back(
+        {QStringLiteral("http://www.3s-software.com/plcopenxml/cfc"), QStringLiteral("handle"), QStringLiteral("<CFC/>")});
+    project.types.pous.push_back(cfc);
+    project.types.pous.push_back(pouIn(model::BodyLanguage::SFC, QStringLiteral("Chart")));
+    return project;
+}
+
+BodyRef bodyOf(MainWindow &window, const char *pou)
+{
+    return {window.projectModel().project().findPou(QLatin1String(pou))->id, BodyRef::Part::Pou, {}};
+}
+
+} // namespace
+
+class TestDiagramDocuments : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        editors::EditorRegistry::instance().add({editors::EditorLanguage::FBD,
+            [](model::ProjectModel &model, const BodyRef &ref, QUndoStack *stack) -> editors::DiagramEditor * {
+                return new BoxEditor(model, ref, stack);
+            },
+            [] { return std::unique_ptr<editors::DiagramPolicy>(std::make_unique<tests::BoxPolicy>()); }});
+    }
+
+    void bodiesOpenInTheEditorOfTheirLanguage()
+    {
+        MainWindow window;
+        window.projectModel().reset(project());
+        DocumentArea &documents = window.documents();
+        documents.setGridSize(20);
+        const BodyRef boxes = bodyOf(window, "Boxes");
+        QVERIFY(documents.openBody(boxes));
+        editors::DiagramEditor *editor = documents.diagramEditorFor(boxes);
+        QVERIFY(qobject_cast<BoxEditor *>(editor));
+        QCOMPARE(documents.currentDiagramEditor(), editor);
+        QCOMPARE(editor->view()->gridSize(), 20);
+        QCOMPARE(editor->scene()->gridSize(), 20);
+        QCOMPARE(editor->onlineInstance(), QStringLiteral("Boxes"));
+        QVERIFY(editor->completionProvider());
+        QVERIFY(editor->scene()->itemFor(7));
+        // The settings' grid reaches open editors too.
+        documents.setGridSize(5);
+        QCOMPARE(editor->view()->gridSize(), 5);
+        // An editor's request to open an action opens it.
+        QVERIFY(editor->trigger(QStringLiteral("boxOpen")));
+        QCOMPARE(documents.currentBody(), (BodyRef {boxes.pou, BodyRef::Part::Action, QStringLiteral("Fill")}));
+        // LD and SFC through the registry too.
+        QVERIFY(qobject_cast<editors::ld::LdEditor *>(
+            qobject_cast<QWidget *>(documents.openBody(bodyOf(window, "Ladder")))->findChild<editors::DiagramEditor *>()));
+        QVERIFY(qobject_cast<editors::sfc::SfcEditor *>(
+            qobject_cast<QWidget *>(documents.openBody(bodyOf(window, "Chart")))->findChild<editors::DiagramEditor *>()));
+    }
+
+    void languagesWithoutAnEditorKeepThePlaceholder_data()
+    {
+        QTest::addColumn<QString>("pou");
+        QTest::addColumn<QString>("language");
+        QTest::newRow("CFC of CODESYS") << "Flow" << "CFC";
+    }
+
+    void languagesWithoutAnEditorKeepThePlaceholder()
+    {
+        QFETCH(QString, pou);
+        QFETCH(QString, language);
+        if (editors::EditorRegistry::instance().find(editors::EditorLanguage::CFC))
+            QSKIP("this language has an editor now");
+        MainWindow window;
+        window.projectModel().reset(project());
+        const BodyRef ref = bodyOf(window, qPrintable(pou));
+        QWidget *document = window.documents().openBody(ref);
+        QVERIFY(document);
+        QVERIFY(!window.documents().diagramEditorFor(ref));
+        QVERIFY(!window.documents().textEditorFor(ref)); // a CFC diagram is not ST text to type into
+        auto *label = document->findChild<QLabel *>();
+        QVERIFY(label);
+        QVERIFY2(label->text().contains(QStringLiteral("written in %1.").arg(language)), qPrintable(label->text()));
+    }
+
+    void theInsertMenuFollowsTheCurrentDiagramEditor()
+    {
+        MainWindow window;
+        window.projectModel().reset(project());
+        window.show();
+        auto *insertMenu = window.menuBar()->findChild<QMenu *>(QStringLiteral("insertMenu"));
+        window.documents().openBody(bodyOf(window, "Boxes"));
+        QCoreApplication::processEvents();
+        QAction *add = window.documents().currentDiagramEditor()->action(QStringLiteral("boxAdd"));
+        QVERIFY(insertMenu->actions().contains(add));
+        window.documents().openBody(bodyOf(window, "Ladder"));
+        QCoreApplication::processEvents();
+        QVERIFY(!insertMenu->actions().contains(add));
+    }
+
+    void buildMessagesMarkTheirElements()
+    {
+        MainWindow window;
+        // Only the boxes: the empty chart's own error (no initial step) would stop the build first.
+        model::Project boxesOnly = project();
+        std::erase_if(boxesOnly.types.pous, [](const model::Pou &pou) { return pou.name != QLatin1String("Boxes"); });
+        window.projectModel().reset(boxesOnly);
+        const BodyRef boxes = bodyOf(window, "Boxes");
+        window.documents().openBody(boxes);
+        editors::DiagramEditor *editor = window.documents().diagramEditorFor(boxes);
+        QVERIFY(!window.buildController().build());
+        bool reported = false;
+        QStringList messages;
+        for (const Message &message : window.buildController().lastMessages()) {
+            reported |= message.pouName == QLatin1String("Boxes") && message.localId == quint64(8);
+            messages << message.pouName + QStringLiteral(": ") + message.text;
+        }
+        QVERIFY2(reported, qPrintable(messages.join(QLatin1Char('\n'))));
+        QVERIFY2(editor->scene()->itemFor(8)->diagnosticMessage().contains(QStringLiteral("'B'")),
+            qPrintable(editor->scene()->itemFor(8)->diagnosticMessage()));
+        QVERIFY(editor->scene()->itemFor(7)->diagnosticMessage().isEmpty());
+        // A double-click on the message selects the element.
+        editor->select({});
+        for (const Message &message : window.buildController().lastMessages())
+            if (message.localId == quint64(8))
+                window.buildController().openLocation(message);
+        QCOMPARE(editor->selection(), QList<quint64> {8});
+    }
+};
+
+QTEST_MAIN(TestDiagramDocuments)
+#include "tst_diagramdocuments.moc"
