@@ -19,6 +19,7 @@
 #include <QMenu>
 #include <QPrintDialog>
 #include <QPrinter>
+#include <QScrollBar>
 #include <QToolBar>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -450,6 +451,18 @@ void DiagramEditor::contextMenuEvent(QContextMenuEvent *event)
 {
     openContextMenu(event->reason() == QContextMenuEvent::Keyboard ? selectionMenuPosition() : event->globalPos());
     event->accept();
+}
+
+void DiagramEditor::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    // A view scrolls to the middle of its scene when it is first laid out; a body is read from
+    // the top left, where its first network or initial step is.
+    if (!m_shownOnce) {
+        m_shownOnce = true;
+        m_view->horizontalScrollBar()->setValue(m_view->horizontalScrollBar()->minimum());
+        m_view->verticalScrollBar()->setValue(m_view->verticalScrollBar()->minimum());
+    }
 }
 
 void DiagramEditor::changeEvent(QEvent *event)

@@ -194,6 +194,7 @@ protected:
     virtual void sceneRefreshed() { }
 
     void changeEvent(QEvent *event) override;
+    void showEvent(QShowEvent *event) override;
     bool eventFilter(QObject *watched, QEvent *event) override;
     void contextMenuEvent(QContextMenuEvent *event) override;
 
@@ -232,6 +233,7 @@ private:
     QList<ElementDiagnostic> m_diagnostics;
     QString m_onlineInstance;
     bool m_online = false;
+    bool m_shownOnce = false;
     std::optional<interp::RuntimeSnapshot> m_snapshot;
     bool m_lastCommandOk = true;
     QPointer<InPlaceEditor> m_inPlace;

@@ -55,6 +55,17 @@ void InPlaceEditor::updatePopup()
     m_model->setStringList(names);
     m_completer->setCompletionPrefix(context.prefix);
     m_completer->complete();
+    // A match is highlighted, so Enter takes it (as in CODESYS): the name typed in full if it is
+    // one, else the first. Escape closes the list and keeps the typed text.
+    QAbstractItemModel *matches = m_completer->completionModel();
+    int row = 0;
+    for (int r = 0; r < matches->rowCount(); ++r) {
+        if (matches->index(r, 0).data().toString().compare(context.prefix, Qt::CaseInsensitive) == 0) {
+            row = r;
+            break;
+        }
+    }
+    m_completer->popup()->setCurrentIndex(matches->index(row, 0));
 }
 
 void InPlaceEditor::insertCompletion(const QString &completion)

@@ -9,6 +9,9 @@
 // that is energised are drawn thick and blue.
 namespace iec::editors::ld {
 
+// The colour of rails, symbols and unpowered wires.
+inline const QColor kInk(0x20, 0x20, 0x20);
+
 class ContactItem : public ElementItem
 {
 public:

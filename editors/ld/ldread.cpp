@@ -6,6 +6,7 @@
 #include "editors/ld/ldtree.h"
 
 #include <algorithm>
+#include <iterator>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -116,8 +117,13 @@ std::vector<Unit> wiredUnits(const LdGraph &graph)
     for (Unit &unit : units) {
         std::ranges::sort(unit.members);
         unit.firstIndex = unit.members.front();
-        unit.top = graph.top(unit.members);
-        unit.bottom = graph.bottom(unit.members);
+        // A shared rail spans every network it feeds: the network's own elements give its band,
+        // or the comments between the networks would all fall into the first one.
+        std::vector<std::size_t> own;
+        std::ranges::copy_if(unit.members, std::back_inserter(own), [&](std::size_t i) { return !shared(i); });
+        const std::vector<std::size_t> &extent = own.empty() ? unit.members : own;
+        unit.top = graph.top(extent);
+        unit.bottom = graph.bottom(extent);
     }
     return units;
 }

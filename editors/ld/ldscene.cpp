@@ -5,6 +5,8 @@
 #include "model/body.h"
 #include "model/projectmodel.h"
 
+#include <QGraphicsRectItem>
+
 namespace iec::editors::ld {
 
 using namespace model;
@@ -253,8 +255,17 @@ LdPolicy::NetworkItems LdPolicy::addNetwork(DiagramScene &scene, std::size_t ind
     }
     if (network.leftRail)
         addElement(network.leftRail, QRectF(kRailX - kRailWidth, g.rungTop, kRailWidth, g.rungHeight), false);
-    if (network.rightRail)
-        addElement(network.rightRail, QRectF(g.rightRailX, g.rungTop, kRailWidth, g.rungHeight), false);
+    const QRectF rightRail(g.rightRailX, g.rungTop, kRailWidth, g.rungHeight);
+    if (network.rightRail) {
+        addElement(network.rightRail, rightRail, false);
+    } else {
+        // Another tool's file may end a network without a rail (Beremiz shares one right rail
+        // among the networks with coils): the rung still ends at a drawn rail, as in CODESYS.
+        // Drawn only, part of the band; the file is not touched until the network is edited.
+        auto *rail = new QGraphicsRectItem(rightRail, items.band);
+        rail->setPen(Qt::NoPen);
+        rail->setBrush(kInk);
+    }
     for (const WireRun &wire : g.wires) {
         auto *item = new WireItem(wire.source, wire.target, wire.points);
         scene.addItem(item);

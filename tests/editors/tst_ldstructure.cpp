@@ -407,6 +407,20 @@ private Q_SLOTS:
         }
         QVERIFY(bodies > 0);
     }
+
+    // Beremiz draws one left and one right rail for all networks, with each network's comment
+    // above it: the shared rails must not pull every comment into the first network.
+    void sharedRailsKeepEachNetworksComment()
+    {
+        const model::plcopen::ReadResult read = model::plcopen::readProjectFile(QStringLiteral(IEC_SOURCE_DIR "/resources/examples/star_delta.xml"));
+        QVERIFY(read.isProject);
+        const LadderDocument doc = readLadder(*read.project.findPou(QStringLiteral("Main"))->body()->elements());
+        QCOMPARE(doc.networks.size(), std::size_t(5));
+        QStringList comments;
+        for (const LdNetwork &network : doc.networks)
+            comments << (network.comment ? std::get<model::Comment>(*doc.element(network.comment)).content.text.left(10) : QStringLiteral("-"));
+        QCOMPARE(comments.join(QLatin1Char('|')), QStringLiteral("Line conta|Star time:|Star conta|Dead time:|Delta cont"));
+    }
 };
 
 QTEST_MAIN(TestLdStructure)
