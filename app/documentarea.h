@@ -1,5 +1,6 @@
 #pragma once
 
+#include "editors/globals/globallists.h"
 #include "model/ids.h"
 
 #include <QTabWidget>
@@ -11,6 +12,8 @@ struct Project;
 
 namespace iec::editors {
 class CodeEditor;
+class ConfigurationEditor;
+class GlobalListEditor;
 class DataTypeEditor;
 class DeclarationEditor;
 class OnlineView;
@@ -46,6 +49,15 @@ public:
     QWidget *openDataType(const QString &typeName);
     [[nodiscard]] editors::DataTypeEditor *dataTypeEditorFor(const QString &typeName) const;
     [[nodiscard]] editors::DataTypeEditor *currentDataTypeEditor() const;
+    // Opens the editor of a global variable list in a tab (or shows its tab); its edits go on the
+    // project's undo stack, a rename of a global renames its uses. The tab follows renames of
+    // the list and closes when it is deleted. (documentareainstances.cpp)
+    QWidget *openGlobalList(const editors::GlobalListRef &list);
+    [[nodiscard]] editors::GlobalListEditor *globalListEditorFor(const editors::GlobalListRef &list) const;
+    // Opens the task configuration of `configuration` (or shows its tab) at the resource and task
+    // given (the first when empty); its edits go on the project's undo stack.
+    QWidget *openConfiguration(const QString &configuration, const QString &resource = {}, const QString &task = {});
+    [[nodiscard]] editors::ConfigurationEditor *configurationEditorFor(const QString &configuration) const;
     // Go to definition of `path` (a dotted name) used in the body `from`: a variable of the POU
     // shows its declaration row, a member of a function block instance the row in that FB, a
     // POU opens, a data type opens its editor, an action or transition of the POU opens. False
@@ -85,6 +97,9 @@ public:
     void closeAll();
 
     static QString title(const model::Project &project, const model::BodyRef &ref);
+    // Set on a tab that is one editor as a whole (a global list, a configuration): online it is
+    // locked as a whole, as a data type tab is.
+    static constexpr const char *kWholeTabEditorProperty = "iecWholeTabEditor";
 
 Q_SIGNALS:
     // hasUnsavedTyping() may have changed.
@@ -93,6 +108,8 @@ Q_SIGNALS:
     void addToWatchRequested(const QString &name);
     // Undo or redo was tried in a locked (online) declaration table.
     void editRefused();
+    // A configuration editor's "Add List" for a resource (the window asks for the name).
+    void addGlobalListRequested(const iec::editors::GlobalListRef &owner);
 
 private:
     void closeDocumentsIf(const std::function<bool(const model::BodyRef &)> &shouldClose);
