@@ -39,7 +39,9 @@ GlobalListEditor::GlobalListEditor(
 
 QStringList GlobalListEditor::globalClasses()
 {
-    return {QStringLiteral("VAR_GLOBAL"), QStringLiteral("VAR_GLOBAL CONSTANT"), QStringLiteral("VAR_GLOBAL RETAIN")};
+    // PERSISTENT as CODESYS V2.3 offers it: kept over a download, RETAIN PERSISTENT also over a cold start.
+    return {QStringLiteral("VAR_GLOBAL"), QStringLiteral("VAR_GLOBAL CONSTANT"), QStringLiteral("VAR_GLOBAL RETAIN"),
+        QStringLiteral("VAR_GLOBAL PERSISTENT"), QStringLiteral("VAR_GLOBAL RETAIN PERSISTENT")};
 }
 
 void GlobalListEditor::followModel()

@@ -115,6 +115,7 @@ private Q_SLOTS:
     // the editor
     void showsAListsSectionsInTableAndText();
     void cellEditIsOneCommandOnTheProjectStack();
+    void constantAndRetainSectionsFromTheClassCell_data();
     void constantAndRetainSectionsFromTheClassCell();
     void textEditAppliesOneStep();
     void otherSectionsAreRefusedAtTheirPlace();
@@ -282,16 +283,38 @@ void TestGlobals::cellEditIsOneCommandOnTheProjectStack()
         QStringLiteral("Row 2: \"%ZX1\" is not an address such as %IX0.0, %QW3 or %MD10."));
 }
 
+void TestGlobals::constantAndRetainSectionsFromTheClassCell_data()
+{
+    QTest::addColumn<QString>("varClass");
+    QTest::addColumn<bool>("constant");
+    QTest::addColumn<bool>("retain");
+    QTest::addColumn<bool>("persistent");
+    QTest::addColumn<int>("sections"); // Valve (row 1) joins the CONSTANT section of Limit after it
+    QTest::newRow("retain") << QStringLiteral("VAR_GLOBAL RETAIN") << false << true << false << 3;
+    QTest::newRow("constant") << QStringLiteral("VAR_GLOBAL CONSTANT") << true << false << false << 2;
+    QTest::newRow("persistent") << QStringLiteral("VAR_GLOBAL PERSISTENT") << false << false << true << 3;
+    QTest::newRow("retain persistent") << QStringLiteral("VAR_GLOBAL RETAIN PERSISTENT") << false << true << true << 3;
+}
+
 void TestGlobals::constantAndRetainSectionsFromTheClassCell()
 {
+    QFETCH(QString, varClass);
+    QFETCH(bool, constant);
+    QFETCH(bool, retain);
+    QFETCH(bool, persistent);
+    QFETCH(int, sections);
+    QVERIFY(GlobalListEditor::globalClasses().contains(varClass));
     const Instances before = m_model->project().instances;
     DeclarationTableModel *table = m_editor->tableModel();
-    QVERIFY(table->setData(table->index(1, int(DeclarationColumn::Class)), QStringLiteral("VAR_GLOBAL RETAIN")));
+    QVERIFY(table->setData(table->index(1, int(DeclarationColumn::Class)), varClass));
     QCOMPARE(m_editor->problemText(), QString());
     const Interface list = listInModel();
-    QCOMPARE(list.varLists.size(), size_t(3));
-    QVERIFY(list.varLists[1].retain);
+    QCOMPARE(list.varLists.size(), size_t(sections));
+    QCOMPARE(list.varLists[1].constant, constant);
+    QCOMPARE(list.varLists[1].retain, retain);
+    QCOMPARE(list.varLists[1].persistent, persistent);
     QCOMPARE(list.varLists[1].variables.at(0).name, QStringLiteral("Valve"));
+    QCOMPARE(table->data(table->index(1, int(DeclarationColumn::Class))).toString(), varClass);
     for (const VarList &section : list.varLists)
         QCOMPARE(section.name, std::optional(QStringLiteral("IO")));
     QCOMPARE(m_stack->count(), 1);
