@@ -77,6 +77,11 @@ ConfigurationEditor::ConfigurationEditor(
     m_tasksLabel = heading(this);
     m_tasks = new RowTable(QStringList(kTaskColumnCount, QString()), this);
     m_tasks->setObjectName(QStringLiteral("taskTable"));
+    // An empty first choice clears the variable (the task runs cyclically again).
+    m_tasks->table()->setItemDelegateForColumn(int(TaskColumn::Single), new ChoiceDelegate([this] {
+        const model::Configuration *configuration = current();
+        return QStringList {QString()} + (configuration ? boolGlobals(*configuration) : QStringList {});
+    }, m_tasks->table()));
     m_instancesLabel = heading(this);
     m_instances = new RowTable(QStringList(kInstanceColumnCount, QString()), this);
     m_instances->setObjectName(QStringLiteral("instanceTable"));
@@ -144,6 +149,15 @@ void ConfigurationEditor::retranslate()
     m_tasksLabel->setText(tr("Tasks (the lower the priority number, the earlier the task runs)"));
     m_tasks->table()->setHorizontalHeaderLabels(
         {tr("Task"), tr("Interval (cyclic)"), tr("SINGLE (event variable)"), tr("Priority"), tr("Watchdog")});
+    const QStringList taskTips {tr("The task's name, unique in the configuration."),
+        tr("The task runs every interval (T#10ms). With neither an interval nor a SINGLE variable it runs in "
+           "every cycle (CODESYS: freewheeling)."),
+        tr("A global BOOL variable: the task runs once each time it becomes TRUE (CODESYS: triggered by event)."),
+        tr("0 is the highest priority; tasks due in the same cycle run in the order of their priorities."),
+        tr("The longest time one run of the task may take (T#50ms); empty for none. It is kept in the project "
+           "for the target; the simulator does not check it.")};
+    for (int column = 0; column < kTaskColumnCount; ++column)
+        m_tasks->table()->horizontalHeaderItem(column)->setToolTip(taskTips[column]);
     m_instances->table()->setHorizontalHeaderLabels({tr("Instance"), tr("Program")});
     m_globalsLabel->setText(tr("Global variable lists of the resource (double-click opens one)"));
     m_addGlobalList->setText(tr("Add List..."));

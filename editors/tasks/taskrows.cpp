@@ -29,23 +29,15 @@ const Item *sourceOf(const std::vector<Item> &items, int source)
     return source >= 0 && source < int(items.size()) ? &items[size_t(source)] : nullptr;
 }
 
-bool isBoolGlobal(const std::vector<model::VarList> &lists, const QString &name)
+void collectBoolGlobals(const std::vector<model::VarList> &lists, QStringList &names)
 {
     for (const model::VarList &list : lists) {
         for (const model::Variable &variable : list.variables) {
             const auto *elementary = std::get_if<model::ElementaryType>(&variable.type.kind);
-            if (sameName(variable.name, name) && elementary && sameName(elementary->name, QStringLiteral("BOOL")))
-                return true;
+            if (elementary && sameName(elementary->name, QStringLiteral("BOOL")))
+                names << variable.name;
         }
     }
-    return false;
-}
-
-bool isBoolGlobalOf(const model::Configuration &configuration, const QString &name)
-{
-    return isBoolGlobal(configuration.globalVars, name)
-        || std::ranges::any_of(configuration.resources,
-            [&](const model::Resource &resource) { return isBoolGlobal(resource.globalVars, name); });
 }
 
 // The message for a time that is no duration or is 0; empty when fine. `zero` says what 0 means.
@@ -100,8 +92,15 @@ void checkTask(const model::Task &task, const model::Configuration &configuratio
             !problem.isEmpty())
             add(TaskColumn::Interval, problem);
     }
-    if (task.single && !task.single->trimmed().isEmpty() && !isBoolGlobalOf(configuration, *task.single))
+    const bool hasSingle = task.single && !task.single->trimmed().isEmpty();
+    if (hasSingle && !boolGlobals(configuration).contains(task.single->trimmed(), Qt::CaseInsensitive))
         add(TaskColumn::Single, TaskRows::tr("There is no global BOOL variable %1 in this configuration.").arg(*task.single));
+    // The runtime starts a task with a SINGLE variable only on its rising edge and ignores the
+    // interval then; saying so beats a cyclic task that silently never runs cyclically.
+    if (hasSingle && task.interval && !task.interval->trimmed().isEmpty())
+        add(TaskColumn::Single,
+            TaskRows::tr("A task runs either every interval or when its SINGLE variable becomes TRUE: clear the "
+                         "interval or the SINGLE variable."));
     if (QString watchdog = taskWatchdog(task); !watchdog.isEmpty()) {
         if (QString problem = timeProblem(watchdog,
                 QT_TRANSLATE_NOOP("iec::editors::TaskRows", "A watchdog time must be above 0; leave it empty for none."));
@@ -228,6 +227,15 @@ void setTaskWatchdog(model::Task &task, const QString &time)
     QString escaped = time.toHtmlEscaped();
     task.addData.push_back({QString::fromLatin1(kWatchdogAddDataName), QStringLiteral("implementation"),
         QStringLiteral("<watchdog time=\"%1\"/>").arg(escaped)});
+}
+
+QStringList boolGlobals(const model::Configuration &configuration)
+{
+    QStringList names;
+    collectBoolGlobals(configuration.globalVars, names);
+    for (const model::Resource &resource : configuration.resources)
+        collectBoolGlobals(resource.globalVars, names);
+    return names;
 }
 
 QStringList programNames(const model::Project &project)

@@ -55,7 +55,8 @@ struct ResourceResult {
 
 // Every problem of the configuration: names that are no identifiers or taken twice (resources,
 // tasks and program instances of a configuration), intervals and watchdog times that are no
-// durations or are 0, SINGLE variables that are no global BOOL, programs that do not exist.
+// durations or are 0, SINGLE variables that are no global BOOL, a task with both an interval and a
+// SINGLE variable, programs that do not exist.
 [[nodiscard]] std::vector<ConfigurationProblem> validateConfiguration(
     const model::Configuration &configuration, const model::Project &project);
 
@@ -65,6 +66,8 @@ struct ResourceResult {
 void setTaskWatchdog(model::Task &task, const QString &time);
 inline constexpr const char *kWatchdogAddDataName = "http://www.iecstudio.org/task-watchdog";
 
+// The BOOL globals of the configuration and its resources (what may start a task).
+[[nodiscard]] QStringList boolGlobals(const model::Configuration &configuration);
 // The project's programs (what a task may run).
 [[nodiscard]] QStringList programNames(const model::Project &project);
 // The first name "<stem>N" (N = 1, 2, ...) not in `taken` (case-insensitive).

@@ -162,12 +162,19 @@ void TestTasks::validate_data()
         << c << std::vector {problem(1, -1, int(TaskColumn::Name), QStringLiteral("There is another task named fast."))};
     c = sampleConfiguration();
     c.resources[0].tasks[0].single = QStringLiteral("Level");
+    c.resources[0].tasks[0].interval.reset();
     QTest::newRow("single not BOOL")
         << c << std::vector {problem(0, -1, int(TaskColumn::Single),
                     QStringLiteral("There is no global BOOL variable Level in this configuration."))};
     c = sampleConfiguration();
     c.resources[0].tasks[0].single = QStringLiteral("alarm");
+    c.resources[0].tasks[0].interval.reset();
     QTest::newRow("single BOOL global") << c << std::vector<ConfigurationProblem> {};
+    c.resources[0].tasks[0].interval = QStringLiteral("T#10ms");
+    QTest::newRow("single and interval")
+        << c << std::vector {problem(0, -1, int(TaskColumn::Single),
+                    QStringLiteral("A task runs either every interval or when its SINGLE variable becomes TRUE: clear "
+                                   "the interval or the SINGLE variable."))};
     c = sampleConfiguration();
     c.resources[0].tasks[1].pouInstances[0].typeName = QStringLiteral("Missing");
     QTest::newRow("unknown program")
