@@ -83,4 +83,17 @@ bool GlobalListCommands::remove(const GlobalListRef &list)
     return true;
 }
 
+QString GlobalListCommands::taskConfiguration()
+{
+    const model::Project &project = m_model.project();
+    if (!project.instances.configurations.empty())
+        return project.instances.configurations.front().name;
+    model::Instances configured = editors::withExplicitConfiguration(project.instances, editors::implicitProgram(project));
+    const QString name = configured.configurations.front().name;
+    auto *command = new model::SetInstancesCommand(m_model, std::move(configured));
+    command->setText(tr("Create task configuration %1").arg(name));
+    m_stack.push(command);
+    return name;
+}
+
 } // namespace iec::app

@@ -36,6 +36,10 @@ public:
     // A copy under the first free name "<name>_N".
     std::optional<editors::GlobalListRef> duplicate(const editors::GlobalListRef &list);
     bool remove(const editors::GlobalListRef &list);
+    // The configuration the task configuration shows: the first one. A project without one gets
+    // the one it ran implicitly (editors::withExplicitConfiguration) in one undo step, so its
+    // tasks can be edited as CODESYS's task configuration always can.
+    QString taskConfiguration();
 
 private:
     model::ProjectModel &m_model;

@@ -40,6 +40,8 @@ void MainWindow::connectInstanceDocuments()
     connect(m_projectTree, &ProjectTreeView::openConfigurationRequested, m_documents, &DocumentArea::openConfiguration);
     connect(m_documents, &DocumentArea::addGlobalListRequested, m_treeActions,
         [this](const editors::GlobalListRef &owner) { m_treeActions->addGlobalListInteractive(owner); });
+    connect(m_treeActions, &ProjectTreeActions::configurationRequested, m_documents,
+        [this](const QString &configuration) { m_documents->openConfiguration(configuration); });
     connect(m_treeActions, &ProjectTreeActions::globalListCreated, this, [this](const editors::GlobalListRef &list) {
         m_projectTree->selectKey(ProjectTreeModel::globalListKey(list));
         m_documents->openGlobalList(list);

@@ -31,6 +31,7 @@ ProjectTreeActions::ProjectTreeActions(ProjectCommands &commands, GlobalListComm
     m_addGlobalList = new QAction(this);
     m_addGlobalList->setObjectName(QStringLiteral("addGlobalListAction"));
     connect(m_addGlobalList, &QAction::triggered, this, [this] { addGlobalListInteractive(); });
+    m_taskConfiguration = createAction("taskConfigurationAction", &ProjectTreeActions::openTaskConfiguration);
     m_rename = createAction("renameAction", &ProjectTreeActions::renameInteractive);
     m_delete = createAction("deleteAction", &ProjectTreeActions::deleteInteractive);
     m_duplicate = createAction("duplicateAction", &ProjectTreeActions::duplicateCurrent);
@@ -47,9 +48,8 @@ ProjectTreeActions::ProjectTreeActions(ProjectCommands &commands, GlobalListComm
     m_tree.setContextMenuPolicy(Qt::CustomContextMenu);
     connect(&m_tree, &QWidget::customContextMenuRequested, this, &ProjectTreeActions::showContextMenu);
     connect(&m_tree, &ProjectTreeView::currentItemChanged, this, &ProjectTreeActions::updateEnabled);
-    if (auto *treeModel = qobject_cast<ProjectTreeModel *>(m_tree.model()))
+    if (auto *treeModel = qobject_cast<ProjectTreeModel *>(m_tree.model())) {
         // Queued: the rename rebuilds the tree, which must not happen inside the editor's commit.
-    {
         connect(treeModel, &ProjectTreeModel::renameRequested, this, &ProjectTreeActions::renameInPlace,
             Qt::QueuedConnection);
         connect(treeModel, &ProjectTreeModel::globalListRenameRequested, this,
@@ -73,6 +73,7 @@ void ProjectTreeActions::addTo(QMenu *menu) const
     menu->addAction(m_addAction);
     menu->addAction(m_addTransition);
     menu->addAction(m_addGlobalList);
+    menu->addAction(m_taskConfiguration);
     menu->addSeparator();
     menu->addAction(m_rename);
     menu->addAction(m_duplicate);
@@ -85,6 +86,7 @@ void ProjectTreeActions::retranslate()
     m_addAction->setText(tr("Add &Action..."));
     m_addTransition->setText(tr("Add &Transition..."));
     m_addGlobalList->setText(tr("Add &Global Variable List..."));
+    m_taskConfiguration->setText(tr("Task &Configuration"));
     m_rename->setText(tr("&Rename..."));
     m_delete->setText(tr("&Delete"));
     m_duplicate->setText(tr("D&uplicate"));
@@ -195,6 +197,14 @@ void ProjectTreeActions::addGlobalListInteractive(const std::optional<editors::G
         Q_EMIT globalListCreated(*list);
     else
         QMessageBox::warning(m_dialogParent, dialog.windowTitle(), error);
+}
+
+void ProjectTreeActions::openTaskConfiguration()
+{
+    // Online an existing configuration opens (locked, to look at); none is made.
+    if (m_model.project().instances.configurations.empty() && refuseWhenLocked())
+        return;
+    Q_EMIT configurationRequested(m_lists.taskConfiguration());
 }
 
 void ProjectTreeActions::renameGlobalListInteractive(const editors::GlobalListRef &list)

@@ -14,9 +14,10 @@ namespace iec::app {
 class ProjectTreeView;
 
 // The project tree's commands as actions for the Project menu and the tree's context menu: Add
-// POU, Add Action, Add Transition, Add Global Variable List, Rename, Delete, Duplicate (the last
-// three for POUs, actions, transitions and global variable lists). Each asks what it needs with a
-// dialog and hands the answer to ProjectCommands, which does the work undoably. The actions are
+// POU, Add Action, Add Transition, Add Global Variable List, Task Configuration, Rename, Delete,
+// Duplicate (the last three for POUs, actions, transitions and global variable lists). Each asks
+// what it needs with a dialog and hands the answer to ProjectCommands (GlobalListCommands), which
+// does the work undoably. The actions are
 // enabled for the tree's current item; Delete and F2 work while the tree has the focus.
 class ProjectTreeActions : public QObject
 {
@@ -33,6 +34,7 @@ public:
     [[nodiscard]] QAction *addActionAction() const { return m_addAction; }
     [[nodiscard]] QAction *addTransitionAction() const { return m_addTransition; }
     [[nodiscard]] QAction *addGlobalListAction() const { return m_addGlobalList; }
+    [[nodiscard]] QAction *taskConfigurationAction() const { return m_taskConfiguration; }
     [[nodiscard]] QAction *renameAction() const { return m_rename; }
     [[nodiscard]] QAction *deleteAction() const { return m_delete; }
     [[nodiscard]] QAction *duplicateAction() const { return m_duplicate; }
@@ -48,6 +50,8 @@ public Q_SLOTS:
     // Asks for the name of a new global variable list in `owner` (by default where
     // GlobalListCommands puts it) and adds it.
     void addGlobalListInteractive(const std::optional<iec::editors::GlobalListRef> &owner = std::nullopt);
+    // Shows the task configuration (the first configuration, made first when there is none).
+    void openTaskConfiguration();
     void renameInteractive();
     void deleteInteractive();
     void duplicateCurrent();
@@ -60,6 +64,8 @@ Q_SIGNALS:
     void created(const iec::model::BodyRef &item);
     // A global variable list was created (added or duplicated): the window opens it.
     void globalListCreated(const iec::editors::GlobalListRef &list);
+    // The task configuration of `configuration` is to be shown.
+    void configurationRequested(const QString &configuration);
     // A change was asked for while locked (online) and not made.
     void editRefused();
 
@@ -82,6 +88,7 @@ private:
     QAction *m_addAction = nullptr;
     QAction *m_addTransition = nullptr;
     QAction *m_addGlobalList = nullptr;
+    QAction *m_taskConfiguration = nullptr;
     QAction *m_rename = nullptr;
     QAction *m_delete = nullptr;
     QAction *m_duplicate = nullptr;

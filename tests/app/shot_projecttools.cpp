@@ -8,6 +8,7 @@
 #include "app/projectdocumentation.h"
 #include "app/searchactions.h"
 #include "app/searchresultspane.h"
+#include "editors/datatypes/rowtable.h"
 #include "editors/declarations/declarationtablemodel.h"
 #include "editors/globals/globallisteditor.h"
 #include "editors/tasks/configurationeditor.h"

@@ -7,6 +7,7 @@
 #include "app/globallistcommands.h"
 #include "app/mainwindow.h"
 #include "app/messagespane.h"
+#include "app/projecttreeactions.h"
 #include "app/projecttreemodel.h"
 #include "app/projecttreeview.h"
 #include "app/undostacks.h"
@@ -18,6 +19,7 @@
 #include "model/projectmodel.h"
 #include "testsettings.h"
 
+#include <QAction>
 #include <QSettings>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -81,6 +83,7 @@ private Q_SLOTS:
     void listNamesAreChecked();
     void addingAListToAProjectWithoutConfigurationKeepsItRunning();
     void treeOpensListsAndConfigurations();
+    void taskConfigurationIsMadeWhenThereIsNone();
     void listTabFollowsRenameAndClosesOnDelete();
     void renamingAGlobalRenamesItsUses();
     void taskWithTwoProgramsCompiles();
@@ -202,6 +205,29 @@ void TestInstanceDocuments::treeOpensListsAndConfigurations()
     QCOMPARE(window.undoStacks().projectStack().count(), 1);
     QCOMPARE(window.projectModel().project().instances.configurations[0].resources[0].tasks[0].interval,
         std::optional(QStringLiteral("T#20ms")));
+}
+
+void TestInstanceDocuments::taskConfigurationIsMadeWhenThereIsNone()
+{
+    MainWindow window;
+    model::Project project = sampleProject();
+    project.instances = {};
+    window.projectModel().reset(project);
+    QAction *action = window.treeActions().taskConfigurationAction();
+    QVERIFY(action->isEnabled());
+    action->trigger();
+    auto *editor = qobject_cast<editors::ConfigurationEditor *>(window.documents().currentWidget());
+    QVERIFY(editor);
+    QCOMPARE(editor->configuration(), QStringLiteral("Config"));
+    QCOMPARE(editor->instanceTable()->rows().at(0).cells, (QStringList {QStringLiteral("Main"), QStringLiteral("Main")}));
+    QUndoStack &stack = window.undoStacks().projectStack();
+    QCOMPARE(stack.count(), 1);
+    QCOMPARE(stack.undoText(), QStringLiteral("Create task configuration Config"));
+    // Shown again, the configuration that exists opens: no second step.
+    action->trigger();
+    QCOMPARE(stack.count(), 1);
+    stack.undo();
+    QCOMPARE(window.projectModel().project().instances, model::Instances {});
 }
 
 void TestInstanceDocuments::listTabFollowsRenameAndClosesOnDelete()
