@@ -191,8 +191,9 @@ std::vector<ProjectDocumentation::Section> ProjectDocumentation::sections() cons
                 QStringList programs;
                 for (const model::PouInstance &instance : task.pouInstances)
                     programs << instance.name + QStringLiteral(" : ") + instance.typeName;
-                const QStringList cells {task.name, task.interval.value_or(QString()), task.single.value_or(QString()),
-                    QString::number(task.priority), editors::taskWatchdog(task), programs.join(QStringLiteral(", "))};
+                const QStringList cells {task.name, editors::shownTime(task.interval.value_or(QString())),
+                    task.single.value_or(QString()), QString::number(task.priority), editors::taskWatchdog(task),
+                    programs.join(QStringLiteral(", "))};
                 section.html += QStringLiteral("<tr>");
                 for (const QString &cell : cells)
                     section.html += QStringLiteral("<td>%1</td>").arg(escaped(cell));

@@ -158,10 +158,19 @@ void ConfigurationEditor::retranslate()
            "for the target; the simulator does not check it.")};
     for (int column = 0; column < kTaskColumnCount; ++column)
         m_tasks->table()->horizontalHeaderItem(column)->setToolTip(taskTips[column]);
+    fitTaskColumns();
     m_instances->table()->setHorizontalHeaderLabels({tr("Instance"), tr("Program")});
     m_globalsLabel->setText(tr("Global variable lists of the resource (double-click opens one)"));
     m_addGlobalList->setText(tr("Add List..."));
     showInstancesOfCurrentTask();
+}
+
+void ConfigurationEditor::fitTaskColumns()
+{
+    // The headers are long in every language: each column as wide as its header or its widest
+    // cell; the last one (watchdog) takes the rest.
+    for (int column = 0; column + 1 < kTaskColumnCount; ++column)
+        m_tasks->table()->resizeColumnToContents(column);
 }
 
 void ConfigurationEditor::changeEvent(QEvent *event)
@@ -221,6 +230,7 @@ void ConfigurationEditor::refreshFromModel()
     m_tasks->setRows(hasResource ? tableRows(taskRows(configuration->resources[size_t(m_resource)])) : std::vector<RowTable::Row> {});
     if (m_tasks->table()->rowCount() > 0)
         m_tasks->table()->setCurrentCell(std::min(task, m_tasks->table()->rowCount() - 1), 0);
+    fitTaskColumns();
     showInstancesOfCurrentTask();
     m_globalLists->clear();
     for (const GlobalListRef &list : globalLists(m_projectModel.project().instances)) {

@@ -64,6 +64,7 @@ protected:
 
 private:
     void retranslate();
+    void fitTaskColumns();
     void refreshFromModel();
     void showInstancesOfCurrentTask();
     void updateNewRows();

@@ -2,6 +2,7 @@
 
 #include "interpreter/compiler/lexer.h"
 #include "interpreter/frontend/duration.h"
+#include "interpreter/runtime/valueformat.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>
@@ -109,14 +110,34 @@ void checkTask(const model::Task &task, const model::Configuration &configuratio
     }
 }
 
+// The cell's time when it is the shown form of `stored`: what the file had stays as it was when
+// only another cell of the row changed.
+std::optional<QString> storedTime(const QString &cell, const std::optional<QString> &stored)
+{
+    if (cell.isEmpty())
+        return std::nullopt;
+    if (stored && shownTime(*stored) == cell)
+        return stored;
+    return cell;
+}
+
 } // namespace
+
+QString shownTime(const QString &stored)
+{
+    const QString text = stored.trimmed();
+    if (!text.startsWith(QLatin1Char('P'), Qt::CaseInsensitive))
+        return stored;
+    const std::optional<std::int64_t> ns = interp::frontend::parseDuration(text);
+    return ns ? interp::formatDuration(*ns) : stored;
+}
 
 std::vector<TextRow> taskRows(const model::Resource &resource)
 {
     std::vector<TextRow> rows;
     for (int index = 0; index < int(resource.tasks.size()); ++index) {
         const model::Task &task = resource.tasks[size_t(index)];
-        rows.push_back({{task.name, task.interval.value_or(QString()), task.single.value_or(QString()),
+        rows.push_back({{task.name, shownTime(task.interval.value_or(QString())), task.single.value_or(QString()),
                            QString::number(task.priority), taskWatchdog(task)},
             index});
     }
@@ -142,8 +163,7 @@ ResourceResult resourceWithTaskRows(const model::Resource &resource, const std::
         const model::Task *old = sourceOf(resource.tasks, rows[size_t(row)].source);
         model::Task task = old ? *old : model::Task {};
         task.name = cells.value(int(TaskColumn::Name)).trimmed();
-        const QString interval = cells.value(int(TaskColumn::Interval)).trimmed();
-        task.interval = interval.isEmpty() ? std::nullopt : std::optional(interval);
+        task.interval = storedTime(cells.value(int(TaskColumn::Interval)).trimmed(), task.interval);
         const QString single = cells.value(int(TaskColumn::Single)).trimmed();
         task.single = single.isEmpty() ? std::nullopt : std::optional(single);
         bool ok = false;

@@ -60,6 +60,11 @@ struct ResourceResult {
 [[nodiscard]] std::vector<ConfigurationProblem> validateConfiguration(
     const model::Configuration &configuration, const model::Project &project);
 
+// A task interval as the table shows it: an ISO 8601 duration from a file (PT0.01S, as PLCopen
+// exports write it) as the IEC literal T#10ms; anything else as it is. A row whose interval cell
+// still shows the stored value keeps the stored text.
+[[nodiscard]] QString shownTime(const QString &stored);
+
 // The watchdog time of a task (empty: none). PLCopen has no attribute for it, so it is kept in
 // an addData entry of ours; the runtime does not check it yet.
 [[nodiscard]] QString taskWatchdog(const model::Task &task);

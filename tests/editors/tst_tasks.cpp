@@ -93,6 +93,7 @@ class TestTasks : public QObject
 private Q_SLOTS:
     void rowsAreTheTasksAsText();
     void rowsKeepWhatTheTableDoesNotShow();
+    void isoIntervalsShowAsIecTimes();
     void validate_data();
     void validate();
     void watchdogIsKeptInAddData();
@@ -137,6 +138,28 @@ void TestTasks::rowsKeepWhatTheTableDoesNotShow()
         {{{QStringLiteral("Log2"), QStringLiteral("Logger")}, -1}, {{QStringLiteral("Main"), QStringLiteral("Main")}, 0}});
     QCOMPARE(moved.pouInstances, (std::vector<PouInstance> {instance(QStringLiteral("Log2"), QStringLiteral("Logger")),
                                      instance(QStringLiteral("Main"), QStringLiteral("Main"))}));
+}
+
+void TestTasks::isoIntervalsShowAsIecTimes()
+{
+    QCOMPARE(shownTime(QStringLiteral("PT0.01S")), QStringLiteral("T#10ms"));
+    QCOMPARE(shownTime(QStringLiteral("PT1M30S")), QStringLiteral("T#1m30s"));
+    QCOMPARE(shownTime(QStringLiteral("T#20ms")), QStringLiteral("T#20ms"));
+    QCOMPARE(shownTime(QStringLiteral("Pfff")), QStringLiteral("Pfff")); // no duration: shown as it is
+
+    Resource resource = sampleConfiguration().resources[0];
+    resource.tasks[0].interval = QStringLiteral("PT0.01S");
+    resource.tasks[1].interval = QStringLiteral("PT0.1S");
+    std::vector<TextRow> rows = taskRows(resource);
+    QCOMPARE(rows[0].cells[int(TaskColumn::Interval)], QStringLiteral("T#10ms"));
+    // The priority of the first task changed, the interval of the second: the first keeps the
+    // file's text, the second takes the typed one.
+    rows[0].cells[int(TaskColumn::Priority)] = QStringLiteral("3");
+    rows[1].cells[int(TaskColumn::Interval)] = QStringLiteral("T#200ms");
+    const ResourceResult result = resourceWithTaskRows(resource, rows, 0);
+    QCOMPARE(result.resource.tasks[0].interval, std::optional(QStringLiteral("PT0.01S")));
+    QCOMPARE(result.resource.tasks[0].priority, 3u);
+    QCOMPARE(result.resource.tasks[1].interval, std::optional(QStringLiteral("T#200ms")));
 }
 
 void TestTasks::validate_data()
