@@ -395,10 +395,11 @@ bool DocumentArea::goToDefinition(const BodyRef &from, const QString &path)
         // A member: its declaration in the function block or program the prefix is an instance of.
         if (const model::Pou *owner = project.findPou(typeNameOfPath(project, from.pou, path.left(dot))))
             return showDeclaration(owner->id, path.mid(dot + 1));
-        return false;
+        return showGlobalVariable(path.left(dot), path.mid(dot + 1)); // List.Variable
     }
-    if (const auto visible = findVisibleVariable(project, from.pou, head); visible && !visible->global)
-        return showDeclaration(from.pou, visible->variable->name);
+    if (const auto visible = findVisibleVariable(project, from.pou, head))
+        return visible->global ? showGlobalVariable({}, visible->variable->name)
+                               : showDeclaration(from.pou, visible->variable->name);
     if (const model::Pou *pou = project.findPou(head))
         return openBody({pou->id, BodyRef::Part::Pou, {}}) != nullptr;
     if (project.findDataType(head))

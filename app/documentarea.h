@@ -54,6 +54,9 @@ public:
     // the list and closes when it is deleted. (documentareainstances.cpp)
     QWidget *openGlobalList(const editors::GlobalListRef &list);
     [[nodiscard]] editors::GlobalListEditor *globalListEditorFor(const editors::GlobalListRef &list) const;
+    // Go to definition of a global: opens the list that declares `variable` (the list named
+    // `list` when given, CODESYS's List.Variable) at its row. False when no list declares it.
+    bool showGlobalVariable(const QString &list, const QString &variable);
     // Opens the task configuration of `configuration` (or shows its tab) at the resource and task
     // given (the first when empty); its edits go on the project's undo stack.
     QWidget *openConfiguration(const QString &configuration, const QString &resource = {}, const QString &task = {});

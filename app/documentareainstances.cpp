@@ -54,6 +54,13 @@ QWidget *DocumentArea::openGlobalList(const editors::GlobalListRef &list)
     return editor;
 }
 
+bool DocumentArea::showGlobalVariable(const QString &list, const QString &variable)
+{
+    const auto declaring = editors::globalListDeclaring(m_projectModel.project().instances, variable, list);
+    auto *editor = declaring ? qobject_cast<editors::GlobalListEditor *>(openGlobalList(*declaring)) : nullptr;
+    return editor && editor->showVariable(variable);
+}
+
 editors::ConfigurationEditor *DocumentArea::configurationEditorFor(const QString &configuration) const
 {
     for (int index = 0; index < count(); ++index) {

@@ -1,6 +1,7 @@
 #include "editors/globals/globallists.h"
 
 #include <algorithm>
+#include <functional>
 
 namespace iec::editors {
 
@@ -245,11 +246,13 @@ std::optional<Instances> withGlobalListRemoved(const Instances &instances, const
     return result;
 }
 
-std::optional<GlobalListRef> otherListDeclaring(
-    const Instances &instances, const QString &configuration, const QString &variable, const GlobalListRef &except)
+namespace {
+
+std::optional<GlobalListRef> firstListDeclaring(const Instances &instances, const QString &variable,
+    const std::function<bool(const GlobalListRef &)> &candidate)
 {
     for (const GlobalListRef &list : globalLists(instances)) {
-        if (!sameName(list.configuration, configuration) || list.sameList(except))
+        if (!candidate(list))
             continue;
         for (const VarList &varList : globalListDeclarations(instances, list).varLists) {
             if (std::ranges::any_of(varList.variables, [&](const model::Variable &v) { return sameName(v.name, variable); }))
@@ -257,6 +260,22 @@ std::optional<GlobalListRef> otherListDeclaring(
         }
     }
     return std::nullopt;
+}
+
+} // namespace
+
+std::optional<GlobalListRef> otherListDeclaring(
+    const Instances &instances, const QString &configuration, const QString &variable, const GlobalListRef &except)
+{
+    return firstListDeclaring(instances, variable, [&](const GlobalListRef &list) {
+        return sameName(list.configuration, configuration) && !list.sameList(except);
+    });
+}
+
+std::optional<GlobalListRef> globalListDeclaring(const Instances &instances, const QString &variable, const QString &listName)
+{
+    return firstListDeclaring(instances, variable,
+        [&](const GlobalListRef &list) { return listName.isEmpty() || sameName(list.displayName(), listName); });
 }
 
 } // namespace iec::editors

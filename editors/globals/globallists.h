@@ -81,6 +81,11 @@ struct GlobalListEdit {
 [[nodiscard]] std::optional<GlobalListRef> otherListDeclaring(const model::Instances &instances,
     const QString &configuration, const QString &variable, const GlobalListRef &except);
 
+// The first list that declares global `variable` (in any configuration); with `listName`, only a
+// list of that name (CODESYS's `List.Variable`). nullopt when none does.
+[[nodiscard]] std::optional<GlobalListRef> globalListDeclaring(
+    const model::Instances &instances, const QString &variable, const QString &listName = {});
+
 } // namespace iec::editors
 
 Q_DECLARE_METATYPE(iec::editors::GlobalListRef)

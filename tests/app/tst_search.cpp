@@ -9,6 +9,7 @@
 #include "app/searchactions.h"
 #include "app/searchresultspane.h"
 #include "editors/declarations/declarationeditor.h"
+#include "editors/globals/globallisteditor.h"
 #include "editors/text/codeeditor.h"
 #include "editors/text/findreplacebar.h"
 #include "editors/text/texteditorwidget.h"
@@ -139,6 +140,7 @@ private Q_SLOTS:
     void crossReferences();
     void hitsOpenTheirPlace();
     void crossReferencesOfTheWordUnderTheCursor();
+    void goToDefinitionOfAGlobalOpensItsList();
     void editCommandsReachTheFocusedText();
     void editCommandsReachADocumentsNamedActions();
     void findOpensTheEditorsBar();
@@ -257,6 +259,30 @@ void TestSearch::crossReferencesOfTheWordUnderTheCursor()
     editor->goToLine(6, 5); // on IO.Lamp
     QVERIFY(window.searchActions().showCrossReferences());
     QCOMPARE(window.searchResults().title(), QStringLiteral("Cross references of Lamp: 4 places"));
+}
+
+void TestSearch::goToDefinitionOfAGlobalOpensItsList()
+{
+    MainWindow window;
+    model::Project project = sampleProject();
+    std::vector<model::Variable> &globals = project.instances.configurations[0].resources[0].globalVars[0].variables;
+    globals.insert(globals.begin(), model::Variable {.name = QStringLiteral("Alarm")});
+    window.projectModel().reset(project);
+    const model::BodyRef main {idOf(window.projectModel().project(), "Main"), model::BodyRef::Part::Pou, {}};
+    DocumentArea &documents = window.documents();
+    const editors::GlobalListRef io {QStringLiteral("Config"), QStringLiteral("Resource"), QStringLiteral("IO")};
+    // CODESYS's List.Variable, and the global alone: the list's tab with the variable's row current.
+    for (const QString &path : {QStringLiteral("IO.Lamp"), QStringLiteral("lamp")}) {
+        documents.openBody(main);
+        QVERIFY2(documents.goToDefinition(main, path), qPrintable(path));
+        editors::GlobalListEditor *list = documents.globalListEditorFor(io);
+        QVERIFY(list);
+        QCOMPARE(documents.currentWidget(), list);
+        QCOMPARE(list->table()->currentIndex().row(), 1);
+    }
+    // No such variable in the list, no list of that name: nothing to go to.
+    QVERIFY(!documents.goToDefinition(main, QStringLiteral("IO.Missing")));
+    QVERIFY(!documents.goToDefinition(main, QStringLiteral("HMI.Lamp")));
 }
 
 void TestSearch::editCommandsReachTheFocusedText()
