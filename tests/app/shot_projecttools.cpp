@@ -90,6 +90,7 @@ int main(int argc, char *argv[])
         auto *tasks = qobject_cast<editors::ConfigurationEditor *>(
             window.documents().openConfiguration(model.project().instances.configurations.at(0).name));
         tasks->taskTable()->addRow();
+        tasks->showTask({}, QStringLiteral("MainTask")); // with the programs it runs
         save(&window, out, QStringLiteral("tasks"), language);
 
         window.searchActions().findInProject({QStringLiteral("Level")});
