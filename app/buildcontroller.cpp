@@ -129,12 +129,36 @@ bool BuildController::build(const interp::CompileOptions &options)
     m_documents.flushEdits();
     interp::Diagnostics diagnostics;
     m_module = interp::frontend::compileProject(m_projectModel.project(), diagnostics, options);
-    m_messages = messagesOf(diagnostics);
-    m_messagesPane.model().setMessages(kBuildSource, m_messages);
-    underlineInOpenEditors();
+    publish(messagesOf(diagnostics));
     const int errors = m_messagesPane.model().count(Message::Severity::Error);
     Q_EMIT built(errors, m_messagesPane.model().count(Message::Severity::Warning));
     return errors == 0;
+}
+
+void BuildController::publish(const QList<Message> &messages)
+{
+    m_messages = messages;
+    m_messagesPane.model().setMessages(kBuildSource, m_messages);
+    underlineInOpenEditors();
+    sendGraphicalDiagnostics();
+}
+
+void BuildController::sendGraphicalDiagnostics()
+{
+    const model::Project &project = m_projectModel.project();
+    for (int index = 0; index < m_documents.count(); ++index) {
+        const std::optional<BodyRef> ref = m_documents.bodyAt(index);
+        const model::Body *body = ref ? m_projectModel.body(*ref) : nullptr;
+        if (!body || !body->isGraphical())
+            continue;
+        const QString title = DocumentArea::title(project, *ref);
+        QList<Message> own;
+        for (const Message &message : std::as_const(m_messages)) {
+            if (message.pouName.compare(title, Qt::CaseInsensitive) == 0)
+                own.append(message);
+        }
+        Q_EMIT graphicalDiagnosticsChanged(*ref, own);
+    }
 }
 
 void BuildController::underlineInOpenEditors()
@@ -147,8 +171,12 @@ void BuildController::underlineInOpenEditors()
         const QString title = DocumentArea::title(project, *ref);
         if (editors::DiagramEditor *diagram = m_documents.diagramEditorFor(*ref))
             diagram->setDiagnostics(elementDiagnostics(m_messages, title));
-        if (editors::CodeEditor *editor = m_documents.textEditorFor(*ref))
-            editor->setDiagnostics(textDiagnostics(m_messages, title, *editor->document()));
+        if (editors::CodeEditor *editor = m_documents.textEditorFor(*ref)) {
+            // Typing not yet pushed: these diagnostics are of older text (the next compile marks it).
+            const model::Body *body = m_projectModel.body(*ref);
+            if (body && editor->toPlainText() == body->text())
+                editor->setDiagnostics(textDiagnostics(m_messages, title, *editor->document()));
+        }
     }
 }
 

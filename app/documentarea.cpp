@@ -157,8 +157,9 @@ void DocumentArea::setEditingLocked(bool locked)
     m_editingLocked = locked;
     for (int index = 0; index < count(); ++index) {
         QWidget *document = widget(index);
-        if (auto *types = qobject_cast<editors::DataTypeEditor *>(document))
-            lockEditor(types, locked, [this] { Q_EMIT editRefused(); });
+        // Data type, global list and configuration tabs are editors as a whole.
+        if (qobject_cast<editors::DataTypeEditor *>(document) || document->property(kWholeTabEditorProperty).toBool())
+            lockEditor(document, locked, [this] { Q_EMIT editRefused(); });
         else if (auto *declarations = document->findChild<editors::DeclarationEditor *>())
             lockEditor(declarations, locked, [this] { Q_EMIT editRefused(); });
     }
@@ -280,6 +281,10 @@ QWidget *DocumentArea::openDataType(const QString &typeName)
     if (m_projectModel.dataTypeIndex(typeName) < 0)
         return nullptr;
     auto *editor = new editors::DataTypeEditor(m_projectModel, typeName, &m_undoStacks->projectStack());
+    editor->setRenameMembers([this](const QString &type, const Renames &renames, QUndoCommand *gesture) {
+        flushEdits();
+        addMemberReferenceRenames(m_projectModel, type, renames, gesture);
+    });
     connect(editor, &editors::DataTypeEditor::typeRenamed, this, [this, editor](const QString &newName) {
         if (const int index = indexOf(editor); index >= 0)
             setTabText(index, newName);
@@ -430,10 +435,11 @@ bool DocumentArea::goToDefinition(const BodyRef &from, const QString &path)
         // A member: its declaration in the function block or program the prefix is an instance of.
         if (const model::Pou *owner = project.findPou(typeNameOfPath(project, from.pou, path.left(dot))))
             return showDeclaration(owner->id, path.mid(dot + 1));
-        return false;
+        return showGlobalVariable(path.left(dot), path.mid(dot + 1)); // List.Variable
     }
-    if (const auto visible = findVisibleVariable(project, from.pou, head); visible && !visible->global)
-        return showDeclaration(from.pou, visible->variable->name);
+    if (const auto visible = findVisibleVariable(project, from.pou, head))
+        return visible->global ? showGlobalVariable({}, visible->variable->name)
+                               : showDeclaration(from.pou, visible->variable->name);
     if (const model::Pou *pou = project.findPou(head))
         return openBody({pou->id, BodyRef::Part::Pou, {}}) != nullptr;
     if (project.findDataType(head))
@@ -527,7 +533,10 @@ void DocumentArea::declareInteractive(const BodyRef &ref, const QString &name, Q
 void DocumentArea::flushEdits()
 {
     for (int index = 0; index < count(); ++index) {
-        if (auto *declarations = widget(index)->findChild<editors::DeclarationEditor *>())
+        auto *declarations = qobject_cast<editors::DeclarationEditorBase *>(widget(index));
+        if (!declarations)
+            declarations = widget(index)->findChild<editors::DeclarationEditorBase *>();
+        if (declarations)
             declarations->flushPendingEdit();
         if (auto *textWidget = textWidgetIn(widget(index)))
             textWidget->editor()->flushPendingEdit();
@@ -543,7 +552,7 @@ void DocumentArea::updateTextFromModel(const BodyRef &ref)
     if (editor && body && editor->toPlainText() != body->text()) {
         // The replaced text came from an undoable command; typing before it is still unsaved.
         const bool typedBefore = editor->document()->isModified();
-        editor->setBodyText(body->text());
+        editor->setBodyTextKeepingCursor(body->text());
         editor->document()->setModified(typedBefore);
     }
 }

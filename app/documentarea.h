@@ -1,5 +1,6 @@
 #pragma once
 
+#include "editors/globals/globallists.h"
 #include "model/ids.h"
 
 #include <QTabWidget>
@@ -13,6 +14,8 @@ namespace iec::editors {
 class CodeEditor;
 class DiagramEditor;
 struct EditorFactory;
+class ConfigurationEditor;
+class GlobalListEditor;
 class DataTypeEditor;
 class DeclarationEditor;
 class OnlineView;
@@ -53,6 +56,18 @@ public:
     QWidget *openDataType(const QString &typeName);
     [[nodiscard]] editors::DataTypeEditor *dataTypeEditorFor(const QString &typeName) const;
     [[nodiscard]] editors::DataTypeEditor *currentDataTypeEditor() const;
+    // Opens the editor of a global variable list in a tab (or shows its tab); its edits go on the
+    // project's undo stack, a rename of a global renames its uses. The tab follows renames of
+    // the list and closes when it is deleted. (documentareainstances.cpp)
+    QWidget *openGlobalList(const editors::GlobalListRef &list);
+    [[nodiscard]] editors::GlobalListEditor *globalListEditorFor(const editors::GlobalListRef &list) const;
+    // Go to definition of a global: opens the list that declares `variable` (the list named
+    // `list` when given, CODESYS's List.Variable) at its row. False when no list declares it.
+    bool showGlobalVariable(const QString &list, const QString &variable);
+    // Opens the task configuration of `configuration` (or shows its tab) at the resource and task
+    // given (the first when empty); its edits go on the project's undo stack.
+    QWidget *openConfiguration(const QString &configuration, const QString &resource = {}, const QString &task = {});
+    [[nodiscard]] editors::ConfigurationEditor *configurationEditorFor(const QString &configuration) const;
     // Go to definition of `path` (a dotted name) used in the body `from`: a variable of the POU
     // shows its declaration row, a member of a function block instance the row in that FB, a
     // POU opens, a data type opens its editor, an action or transition of the POU opens. False
@@ -95,6 +110,9 @@ public:
     void closeAll();
 
     static QString title(const model::Project &project, const model::BodyRef &ref);
+    // Set on a tab that is one editor as a whole (a global list, a configuration): online it is
+    // locked as a whole, as a data type tab is.
+    static constexpr const char *kWholeTabEditorProperty = "iecWholeTabEditor";
 
 Q_SIGNALS:
     // hasUnsavedTyping() may have changed.
@@ -105,6 +123,8 @@ Q_SIGNALS:
     void prepareValueRequested(const QString &name, const QString &literal);
     // Undo or redo was tried in a locked (online) declaration table.
     void editRefused();
+    // A configuration editor's "Add List" for a resource (the window asks for the name).
+    void addGlobalListRequested(const iec::editors::GlobalListRef &owner);
 
 private:
     void closeDocumentsIf(const std::function<bool(const model::BodyRef &)> &shouldClose);

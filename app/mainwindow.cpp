@@ -2,9 +2,16 @@
 
 #include "app/buildcontroller.h"
 #include "app/documentarea.h"
+#include "app/editactions.h"
+#include "app/librarypane.h"
+#include "app/livediagnostics.h"
+#include "app/searchactions.h"
+#include "app/searchresultspane.h"
+#include "app/globallistcommands.h"
 #include "app/importexportactions.h"
 #include "app/listmenus.h"
 #include "app/messagespane.h"
+#include "app/newprojectdialog.h"
 #include "app/online/onlinecontroller.h"
 #include "app/online/watchpane.h"
 #include "app/projectcommands.h"
@@ -20,6 +27,7 @@
 #include "editors/declarations/declarationeditor.h"
 #include "editors/common/diagrameditor.h"
 #include "editors/text/codeeditor.h"
+#include "editors/text/texteditorwidget.h"
 #include "model/plcopen/reader.h"
 #include "model/plcopen/writer.h"
 #include "model/projectmodel.h"
@@ -34,6 +42,7 @@
 #include <QFileInfo>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
@@ -48,6 +57,7 @@ MainWindow::MainWindow(QWidget *parent)
     , m_projectModel(new model::ProjectModel(this))
     , m_undoStacks(new UndoStacks(this))
     , m_projectCommands(std::make_unique<ProjectCommands>(*m_projectModel, m_undoStacks->projectStack()))
+    , m_globalListCommands(std::make_unique<GlobalListCommands>(*m_projectModel, m_undoStacks->projectStack()))
     , m_recovery(new RecoveryManager(this))
     , m_translator(new UiTranslator(this))
     , m_settings(Settings::load(QSettings()))
@@ -213,6 +223,7 @@ void MainWindow::createMenus()
     m_insertMenu->addAction(m_treeActions->addPouAction());
     m_insertMenu->addAction(m_treeActions->addActionAction());
     m_insertMenu->addAction(m_treeActions->addTransitionAction());
+    m_insertMenu->addAction(m_treeActions->addGlobalListAction());
 
     m_projectMenu = addMenu("projectMenu");
     m_treeActions->addTo(m_projectMenu);
@@ -237,6 +248,7 @@ void MainWindow::createMenus()
     m_helpMenu->addSeparator();
     m_helpMenu->addAction(m_aboutAction);
     m_helpMenu->addAction(m_aboutQtAction);
+    extendMenus();
 }
 
 void MainWindow::createToolBar()
@@ -264,7 +276,9 @@ void MainWindow::createDocks()
     m_projectTree->setProjectModel(m_projectTreeModel);
     connect(m_projectTree, &ProjectTreeView::openRequested, m_documents, &DocumentArea::openBody);
     connect(m_projectTree, &ProjectTreeView::openDataTypeRequested, m_documents, &DocumentArea::openDataType);
-    m_treeActions = new ProjectTreeActions(*m_projectCommands, *m_projectModel, *m_projectTree, this);
+    m_treeActions
+        = new ProjectTreeActions(*m_projectCommands, *m_globalListCommands, *m_projectModel, *m_projectTree, this);
+    connectInstanceDocuments();
     connect(m_treeActions, &ProjectTreeActions::created, this, [this](const model::BodyRef &item) {
         m_projectTree->selectKey(item.part == model::BodyRef::Part::Pou ? ProjectTreeModel::pouKey(item.pou)
                                                                         : ProjectTreeModel::partKey(item));
@@ -297,6 +311,7 @@ void MainWindow::createDocks()
     addDockWidget(Qt::BottomDockWidgetArea, m_watchDock);
     m_online = new OnlineController(*m_projectModel, *m_documents, *m_messages, *m_build, *m_watch, *statusBar(),
         {m_loginAction, m_stopAction, m_singleCycleAction}, this);
+    createProjectTools();
 }
 
 void MainWindow::retranslateUi()
@@ -335,6 +350,7 @@ void MainWindow::retranslateUi()
     m_messagesDock->setWindowTitle(tr("Messages"));
     m_watchDock->setWindowTitle(tr("Watch"));
     m_online->retranslate();
+    retranslateProjectTools();
 }
 
 void MainWindow::changeEvent(QEvent *event)
@@ -378,20 +394,23 @@ void MainWindow::updateWindowTitle()
 
 void MainWindow::updateActiveUndoStack()
 {
-    const QWidget *focus = QApplication::focusWidget();
+    QWidget *focus = QApplication::focusWidget();
     const bool treeHasFocus = focus && (focus == m_projectTree || m_projectTree->isAncestorOf(focus));
     const std::optional<model::BodyRef> document = m_documents->currentBody();
+    // The declaration text being typed (a POU's or a global list's) undoes its own typing, as its
+    // Ctrl+Z does; the table beside it undoes the commands of its stack.
+    editors::DeclarationEditorBase *declarations = nullptr;
+    for (QWidget *widget = focus; widget && !declarations; widget = widget->parentWidget())
+        declarations = qobject_cast<editors::DeclarationEditorBase *>(widget);
+    QPlainTextEdit *declarationText = declarations && focus == declarations->textEditor() ? declarations->textEditor() : nullptr;
     if (treeHasFocus || !document) {
         m_undoStacks->activateProjectStack();
-        m_undoActions->setTextEditor(nullptr);
+        m_undoActions->setTextEditor(treeHasFocus ? nullptr : declarationText);
         return;
     }
     m_undoStacks->activatePouStack(document->pou);
-    // In the declarations the POU's stack undoes (the table's edits are commands); in the body
-    // the text editor's own history does, as long as typing is not yet a command.
-    const editors::DeclarationEditor *declarations = m_documents->declarationEditorFor(*document);
-    const bool inDeclarations = focus && declarations && declarations->isAncestorOf(focus);
-    m_undoActions->setTextEditor(inDeclarations ? nullptr : m_documents->textEditorFor(*document));
+    // In the body the text editor's own history undoes, as long as typing is not yet a command.
+    m_undoActions->setTextEditor(declarations ? declarationText : m_documents->textEditorFor(*document));
 }
 
 namespace {
@@ -449,6 +468,7 @@ bool MainWindow::openProject(const QString &path, QString *error)
     if (!loadProject(path, error))
         return false;
     setCurrentFile(path);
+    openMainProgram();
     return true;
 }
 
@@ -457,6 +477,7 @@ bool MainWindow::openExample(const QString &resourcePath, QString *error)
     if (!loadProject(resourcePath, error))
         return false;
     setCurrentFile({});
+    openMainProgram();
     return true;
 }
 
@@ -529,8 +550,11 @@ bool MainWindow::maybeSave()
 
 void MainWindow::newProjectInteractive()
 {
-    if (maybeSave())
-        newProject();
+    if (!maybeSave())
+        return;
+    NewProjectDialog dialog(this);
+    if (dialog.exec() == QDialog::Accepted)
+        newProjectFromTemplate(dialog.chosen());
 }
 
 bool MainWindow::openRecent(const QString &path, QString *error)

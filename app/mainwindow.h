@@ -1,8 +1,10 @@
 #pragma once
 
+#include "app/projecttemplates.h"
 #include "app/settings.h"
 
 #include <QMainWindow>
+#include <QPointer>
 
 #include <memory>
 
@@ -20,7 +22,13 @@ namespace iec::app {
 
 class BuildController;
 class DocumentArea;
+class EditActions;
+class LibraryPane;
+class LiveDiagnostics;
+class SearchActions;
+class SearchResultsPane;
 class ExamplesMenu;
+class GlobalListCommands;
 class ImportExportActions;
 class MessagesPane;
 class OnlineController;
@@ -37,7 +45,7 @@ class WatchPane;
 class WindowMenu;
 
 // The IDE's main window: menus, the project tree and messages docks, and the central document
-// area. Texts are set in retranslateUi() so that switching the UI language updates them live.
+// area (mainwindow.cpp); the project-wide tools (mainwindowtools.cpp). Texts are set in retranslateUi() so that switching the UI language updates them live.
 class MainWindow : public QMainWindow
 {
     Q_OBJECT
@@ -51,6 +59,7 @@ public:
     [[nodiscard]] UndoStacks &undoStacks() { return *m_undoStacks; }
     [[nodiscard]] ProjectCommands &projectCommands() { return *m_projectCommands; }
     [[nodiscard]] ProjectTreeActions &treeActions() { return *m_treeActions; }
+    [[nodiscard]] GlobalListCommands &globalListCommands() { return *m_globalListCommands; }
     [[nodiscard]] RecoveryManager &recovery() { return *m_recovery; }
     [[nodiscard]] const Settings &settings() const { return m_settings; }
     [[nodiscard]] MessagesPane &messagesPane() { return *m_messages; }
@@ -60,6 +69,11 @@ public:
     [[nodiscard]] WatchPane &watchPane() { return *m_watch; }
     [[nodiscard]] ProjectTreeView &projectTree() { return *m_projectTree; }
     [[nodiscard]] ImportExportActions &importExport() { return *m_importExport; }
+    [[nodiscard]] EditActions &editActions() { return *m_editActions; }
+    [[nodiscard]] SearchActions &searchActions() { return *m_searchActions; }
+    [[nodiscard]] SearchResultsPane &searchResults() { return *m_searchResults; }
+    [[nodiscard]] LiveDiagnostics &liveDiagnostics() { return *m_liveDiagnostics; }
+    [[nodiscard]] LibraryPane &libraryPane() { return *m_library; }
     [[nodiscard]] QString currentFile() const { return m_currentFile; }
     // The undo stacks are not at their clean state, typing is unsaved, or the project was
     // recovered and not saved since.
@@ -70,6 +84,10 @@ public:
     bool openProject(const QString &path, QString *error = nullptr);
     bool saveProject(const QString &path, QString *error = nullptr);
     void newProject();
+    // A new untitled project from a template (File → New); its main program opens.
+    void newProjectFromTemplate(ProjectTemplate projectTemplate);
+    // Opens the program a project starts with (mainProgramName), as CODESYS shows PLC_PRG.
+    void openMainProgram();
     // Opens a project of File → Recent Projects; one that is gone is removed from the list.
     bool openRecent(const QString &path, QString *error = nullptr);
     // Opens a shipped example (a resource path from Examples::list()) as a new, untitled project.
@@ -107,6 +125,18 @@ private:
     void createMenus();
     void createToolBar();
     void createDocks();
+    // Global variable lists and configurations open from the tree (and when created).
+    void connectInstanceDocuments();
+    // Edit menu commands (cut ... replace, find in project, definitions, cross references) and
+    // the search results dock; their menu entries (extendMenus).
+    void createProjectTools();
+    void extendMenus();
+    void retranslateProjectTools();
+    // The Insert menu carries the current text editor's insert commands (IL: Operator, Operand,
+    // Function, Function Block) below a separator of their own.
+    void showTextInsertActions();
+    void printDocumentationInteractive();
+    void exportDocumentationInteractive();
     void retranslateUi();
     void restoreWindowLayout();
     void saveWindowLayout() const;
@@ -124,6 +154,7 @@ private:
     model::ProjectModel *m_projectModel = nullptr;
     UndoStacks *m_undoStacks = nullptr;
     std::unique_ptr<ProjectCommands> m_projectCommands;
+    std::unique_ptr<GlobalListCommands> m_globalListCommands;
     RecoveryManager *m_recovery = nullptr;
     UiTranslator *m_translator = nullptr;
     Settings m_settings;
@@ -168,6 +199,17 @@ private:
     QDockWidget *m_watchDock = nullptr;
     WatchPane *m_watch = nullptr;
     OnlineController *m_online = nullptr;
+    EditActions *m_editActions = nullptr;
+    SearchActions *m_searchActions = nullptr;
+    SearchResultsPane *m_searchResults = nullptr;
+    QDockWidget *m_searchDock = nullptr;
+    LiveDiagnostics *m_liveDiagnostics = nullptr;
+    LibraryPane *m_library = nullptr;
+    QDockWidget *m_libraryDock = nullptr;
+    QAction *m_textInsertSeparator = nullptr;
+    QAction *m_printDocumentationAction = nullptr;
+    QAction *m_exportDocumentationAction = nullptr;
+    QList<QPointer<QAction>> m_textInsertActions; // owned by the editor, which may close first
 };
 
 } // namespace iec::app

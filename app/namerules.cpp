@@ -1,5 +1,6 @@
 #include "app/namerules.h"
 
+#include "editors/globals/globallists.h"
 #include "interpreter/compiler/lexer.h"
 #include "model/project.h"
 
@@ -33,6 +34,13 @@ bool isPartName(const model::Project &project, model::PouId id, const QString &n
         return sameName(part.name, name) && !(except.size() && sameName(part.name, except));
     };
     return std::ranges::any_of(pou->actions, clashes) || std::ranges::any_of(pou->transitions, clashes);
+}
+
+bool isGlobalListName(const model::Project &project, const QString &name, const QString &exceptKey)
+{
+    return std::ranges::any_of(editors::globalLists(project.instances), [&](const editors::GlobalListRef &list) {
+        return list.key() != exceptKey && sameName(list.name, name);
+    });
 }
 
 } // namespace
@@ -85,6 +93,25 @@ std::optional<QString> NameRules::partNameError(
     if (isPartName(project, pou, name, renamed))
         return tr("This POU has an action or transition named \"%1\" already.").arg(name);
     return std::nullopt;
+}
+
+std::optional<QString> NameRules::globalListNameError(
+    const model::Project &project, const QString &name, const QString &renamedKey)
+{
+    if (auto error = identifierError(name))
+        return error;
+    if (isGlobalListName(project, name, renamedKey))
+        return tr("A global variable list named \"%1\" exists already.").arg(name);
+    if (isPouOrTypeName(project, name, {}))
+        return tr("A POU or data type named \"%1\" exists already.").arg(name);
+    return std::nullopt;
+}
+
+QString NameRules::uniqueGlobalListName(const model::Project &project, const QString &base)
+{
+    return firstFree(base, [&](const QString &name) {
+        return isGlobalListName(project, name, {}) || isPouOrTypeName(project, name, {});
+    });
 }
 
 QString NameRules::uniquePouName(const model::Project &project, const QString &base)

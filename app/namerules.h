@@ -33,6 +33,13 @@ public:
     [[nodiscard]] static std::optional<QString> partNameError(
         const model::Project &project, model::PouId pou, const QString &name, const QString &renamed = {});
 
+    // The same for a global variable list: code writes `List.Variable`, so a list's name is unique
+    // among the lists and no POU or data type has it. `renamedKey` is GlobalListRef::key() of
+    // the list being renamed.
+    [[nodiscard]] static std::optional<QString> globalListNameError(
+        const model::Project &project, const QString &name, const QString &renamedKey = {});
+    [[nodiscard]] static QString uniqueGlobalListName(const model::Project &project, const QString &base);
+
     // `base` itself when it is free, otherwise base_1, base_2, ... (for duplicates and defaults).
     [[nodiscard]] static QString uniquePouName(const model::Project &project, const QString &base);
     [[nodiscard]] static QString uniquePartName(const model::Project &project, model::PouId pou, const QString &base);

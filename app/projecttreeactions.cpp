@@ -16,10 +16,11 @@ namespace iec::app {
 
 using model::BodyRef;
 
-ProjectTreeActions::ProjectTreeActions(
-    ProjectCommands &commands, model::ProjectModel &model, ProjectTreeView &tree, QWidget *dialogParent)
+ProjectTreeActions::ProjectTreeActions(ProjectCommands &commands, GlobalListCommands &lists, model::ProjectModel &model,
+    ProjectTreeView &tree, QWidget *dialogParent)
     : QObject(dialogParent)
     , m_commands(commands)
+    , m_lists(lists)
     , m_model(model)
     , m_tree(tree)
     , m_dialogParent(dialogParent)
@@ -27,6 +28,10 @@ ProjectTreeActions::ProjectTreeActions(
     m_addPou = createAction("addPouAction", &ProjectTreeActions::addPouInteractive);
     m_addAction = createAction("addActionAction", &ProjectTreeActions::addActionInteractive);
     m_addTransition = createAction("addTransitionAction", &ProjectTreeActions::addTransitionInteractive);
+    m_addGlobalList = new QAction(this);
+    m_addGlobalList->setObjectName(QStringLiteral("addGlobalListAction"));
+    connect(m_addGlobalList, &QAction::triggered, this, [this] { addGlobalListInteractive(); });
+    m_taskConfiguration = createAction("taskConfigurationAction", &ProjectTreeActions::openTaskConfiguration);
     m_rename = createAction("renameAction", &ProjectTreeActions::renameInteractive);
     m_delete = createAction("deleteAction", &ProjectTreeActions::deleteInteractive);
     m_duplicate = createAction("duplicateAction", &ProjectTreeActions::duplicateCurrent);
@@ -43,10 +48,13 @@ ProjectTreeActions::ProjectTreeActions(
     m_tree.setContextMenuPolicy(Qt::CustomContextMenu);
     connect(&m_tree, &QWidget::customContextMenuRequested, this, &ProjectTreeActions::showContextMenu);
     connect(&m_tree, &ProjectTreeView::currentItemChanged, this, &ProjectTreeActions::updateEnabled);
-    if (auto *treeModel = qobject_cast<ProjectTreeModel *>(m_tree.model()))
+    if (auto *treeModel = qobject_cast<ProjectTreeModel *>(m_tree.model())) {
         // Queued: the rename rebuilds the tree, which must not happen inside the editor's commit.
         connect(treeModel, &ProjectTreeModel::renameRequested, this, &ProjectTreeActions::renameInPlace,
             Qt::QueuedConnection);
+        connect(treeModel, &ProjectTreeModel::globalListRenameRequested, this,
+            &ProjectTreeActions::renameGlobalListInPlace, Qt::QueuedConnection);
+    }
     updateEnabled();
     retranslate();
 }
@@ -64,6 +72,8 @@ void ProjectTreeActions::addTo(QMenu *menu) const
     menu->addAction(m_addPou);
     menu->addAction(m_addAction);
     menu->addAction(m_addTransition);
+    menu->addAction(m_addGlobalList);
+    menu->addAction(m_taskConfiguration);
     menu->addSeparator();
     menu->addAction(m_rename);
     menu->addAction(m_duplicate);
@@ -75,6 +85,8 @@ void ProjectTreeActions::retranslate()
     m_addPou->setText(tr("Add &POU..."));
     m_addAction->setText(tr("Add &Action..."));
     m_addTransition->setText(tr("Add &Transition..."));
+    m_addGlobalList->setText(tr("Add &Global Variable List..."));
+    m_taskConfiguration->setText(tr("Task &Configuration"));
     m_rename->setText(tr("&Rename..."));
     m_delete->setText(tr("&Delete"));
     m_duplicate->setText(tr("D&uplicate"));
@@ -86,6 +98,12 @@ std::optional<BodyRef> ProjectTreeActions::currentItem() const
     return treeModel ? treeModel->bodyRef(m_tree.currentIndex()) : std::nullopt;
 }
 
+std::optional<editors::GlobalListRef> ProjectTreeActions::currentGlobalList() const
+{
+    const auto *treeModel = qobject_cast<const ProjectTreeModel *>(m_tree.model());
+    return treeModel ? treeModel->globalList(m_tree.currentIndex()) : std::nullopt;
+}
+
 void ProjectTreeActions::updateEnabled()
 {
     const std::optional<BodyRef> item = currentItem();
@@ -95,8 +113,10 @@ void ProjectTreeActions::updateEnabled()
     m_addPou->setEnabled(!m_locked);
     m_addAction->setEnabled(mayHaveParts && !m_locked);
     m_addTransition->setEnabled(mayHaveParts && !m_locked);
+    m_addGlobalList->setEnabled(!m_locked);
+    const bool named = item.has_value() || currentGlobalList().has_value();
     for (QAction *action : {m_rename, m_delete, m_duplicate})
-        action->setEnabled(item.has_value() && !m_locked);
+        action->setEnabled(named && !m_locked);
 }
 
 void ProjectTreeActions::setLocked(bool locked)
@@ -161,10 +181,63 @@ void ProjectTreeActions::addPartInteractive(BodyRef::Part part)
         QMessageBox::warning(m_dialogParent, dialog.windowTitle(), error);
 }
 
+void ProjectTreeActions::addGlobalListInteractive(const std::optional<editors::GlobalListRef> &owner)
+{
+    if (refuseWhenLocked())
+        return;
+    const model::Project &project = m_model.project();
+    RenameDialog dialog(
+        NameRules::uniqueGlobalListName(project, QStringLiteral("GVL")),
+        [&](const QString &name) { return NameRules::globalListNameError(project, name); }, m_dialogParent);
+    dialog.setWindowTitle(tr("Add Global Variable List"));
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    QString error;
+    if (const auto list = m_lists.add(dialog.newName(), &error, owner))
+        Q_EMIT globalListCreated(*list);
+    else
+        QMessageBox::warning(m_dialogParent, dialog.windowTitle(), error);
+}
+
+void ProjectTreeActions::openTaskConfiguration()
+{
+    // Online an existing configuration opens (locked, to look at); none is made.
+    if (m_model.project().instances.configurations.empty() && refuseWhenLocked())
+        return;
+    Q_EMIT configurationRequested(m_lists.taskConfiguration());
+}
+
+void ProjectTreeActions::renameGlobalListInteractive(const editors::GlobalListRef &list)
+{
+    const model::Project &project = m_model.project();
+    RenameDialog dialog(
+        list.displayName(),
+        [&](const QString &name) { return NameRules::globalListNameError(project, name, list.key()); },
+        m_dialogParent);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    QString error;
+    if (!m_lists.rename(list, dialog.newName(), &error))
+        QMessageBox::warning(m_dialogParent, dialog.windowTitle(), error);
+}
+
+void ProjectTreeActions::renameGlobalListInPlace(const editors::GlobalListRef &list, const QString &newName)
+{
+    if (refuseWhenLocked())
+        return;
+    QString error;
+    if (!m_lists.rename(list, newName, &error))
+        QMessageBox::warning(m_dialogParent, tr("Rename %1").arg(list.displayName()), error);
+}
+
 void ProjectTreeActions::renameInteractive()
 {
     if (refuseWhenLocked())
         return;
+    if (const auto list = currentGlobalList()) {
+        renameGlobalListInteractive(*list);
+        return;
+    }
     const std::optional<BodyRef> item = currentItem();
     if (!item)
         return;
@@ -198,13 +271,18 @@ void ProjectTreeActions::deleteInteractive()
     if (refuseWhenLocked())
         return;
     const std::optional<BodyRef> item = currentItem();
-    if (!item)
+    const auto list = currentGlobalList();
+    if (!item && !list)
         return;
+    const QString name = item ? m_commands.nameOf(*item) : list->displayName();
     const auto answer = QMessageBox::question(m_dialogParent, tr("Delete"),
-        tr("Delete %1? Edit → Undo brings it back.").arg(m_commands.nameOf(*item)), QMessageBox::Yes | QMessageBox::No,
-        QMessageBox::No);
-    if (answer == QMessageBox::Yes)
+        tr("Delete %1? Edit → Undo brings it back.").arg(name), QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
+    if (answer != QMessageBox::Yes)
+        return;
+    if (item)
         m_commands.remove(*item);
+    else
+        m_lists.remove(*list);
 }
 
 void ProjectTreeActions::duplicateCurrent()
@@ -214,6 +292,9 @@ void ProjectTreeActions::duplicateCurrent()
     if (const std::optional<BodyRef> item = currentItem()) {
         if (const auto copy = m_commands.duplicate(*item))
             Q_EMIT created(*copy);
+    } else if (const auto list = currentGlobalList()) {
+        if (const auto copy = m_lists.duplicate(*list))
+            Q_EMIT globalListCreated(*copy);
     }
 }
 

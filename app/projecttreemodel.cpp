@@ -21,6 +21,7 @@ ProjectTreeModel::ProjectTreeModel(model::ProjectModel &projectModel, QObject *p
     connect(&projectModel, &model::ProjectModel::pouRenamed, this, refresh);
     connect(&projectModel, &model::ProjectModel::pouPartsChanged, this, refresh);
     connect(&projectModel, &model::ProjectModel::dataTypesChanged, this, refresh);
+    connect(&projectModel, &model::ProjectModel::instancesChanged, this, refresh);
     rebuild();
 }
 
@@ -32,6 +33,11 @@ QString ProjectTreeModel::folderKey(Folder folder)
 QString ProjectTreeModel::pouKey(model::PouId id)
 {
     return QStringLiteral("pou:%1").arg(id.value);
+}
+
+QString ProjectTreeModel::globalListKey(const editors::GlobalListRef &list)
+{
+    return QStringLiteral("gvl:") + list.key();
 }
 
 QString ProjectTreeModel::partKey(const BodyRef &ref)
@@ -69,27 +75,25 @@ void ProjectTreeModel::addInstances()
 {
     const model::Project &project = m_projectModel.project();
     const int globals = addNode({.folder = Folder::GlobalVariables, .key = folderKey(Folder::GlobalVariables)});
+    // A list's sections (VAR_GLOBAL, CONSTANT, RETAIN) are one node, as CODESYS shows a GVL.
+    for (const editors::GlobalListRef &list : editors::globalLists(project.instances)) {
+        addNode({.kind = NodeKind::GlobalVarList, .key = globalListKey(list), .name = list.displayName(), .list = list,
+                 .configuration = list.configuration, .parent = globals});
+    }
     const int configurations = addNode({.folder = Folder::Configurations, .key = folderKey(Folder::Configurations)});
-    const auto addGlobalLists = [&](const std::vector<model::VarList> &lists, const QString &owner) {
-        for (std::size_t i = 0; i < lists.size(); ++i) {
-            const QString name = lists[i].name.value_or(owner);
-            addNode({.kind = NodeKind::GlobalVarList, .key = QStringLiteral("gvl:%1:%2").arg(owner).arg(i),
-                     .name = name, .parent = globals});
-        }
-    };
     for (const model::Configuration &configuration : project.instances.configurations) {
-        addGlobalLists(configuration.globalVars, configuration.name);
         const int configurationNode = addNode({.kind = NodeKind::Configuration,
                                                .key = QStringLiteral("cfg:%1").arg(configuration.name),
-                                               .name = configuration.name, .parent = configurations});
+                                               .name = configuration.name, .configuration = configuration.name,
+                                               .parent = configurations});
         for (const model::Resource &resource : configuration.resources) {
             const QString path = configuration.name + QLatin1Char('.') + resource.name;
-            addGlobalLists(resource.globalVars, path);
             const int resourceNode = addNode({.kind = NodeKind::Resource, .key = QStringLiteral("res:%1").arg(path),
-                                              .name = resource.name, .parent = configurationNode});
+                                              .name = resource.name, .configuration = configuration.name,
+                                              .parent = configurationNode});
             for (const model::Task &task : resource.tasks) {
                 addNode({.kind = NodeKind::Task, .key = QStringLiteral("task:%1.%2").arg(path, task.name),
-                         .name = task.name, .parent = resourceNode});
+                         .name = task.name, .configuration = configuration.name, .parent = resourceNode});
             }
         }
     }
@@ -228,18 +232,20 @@ QVariant ProjectTreeModel::data(const QModelIndex &index, int role) const
 Qt::ItemFlags ProjectTreeModel::flags(const QModelIndex &index) const
 {
     Qt::ItemFlags flags = QAbstractItemModel::flags(index);
-    if (bodyRef(index))
+    if (bodyRef(index) || globalList(index))
         flags |= Qt::ItemIsEditable;
     return flags;
 }
 
 bool ProjectTreeModel::setData(const QModelIndex &index, const QVariant &value, int role)
 {
-    const std::optional<BodyRef> item = bodyRef(index);
     const QString newName = value.toString().trimmed();
-    if (role != Qt::EditRole || !item || newName == name(index))
+    if (role != Qt::EditRole || newName == name(index))
         return false;
-    Q_EMIT renameRequested(*item, newName);
+    if (const std::optional<BodyRef> item = bodyRef(index))
+        Q_EMIT renameRequested(*item, newName);
+    else if (const auto list = globalList(index))
+        Q_EMIT globalListRenameRequested(*list, newName);
     return false;
 }
 
@@ -284,6 +290,20 @@ model::PouId ProjectTreeModel::pouId(const QModelIndex &index) const
 {
     const Node *item = node(index);
     return item ? item->pou : model::PouId{};
+}
+
+std::optional<editors::GlobalListRef> ProjectTreeModel::globalList(const QModelIndex &index) const
+{
+    const Node *item = node(index);
+    if (!item || item->kind != NodeKind::GlobalVarList)
+        return std::nullopt;
+    return item->list;
+}
+
+QString ProjectTreeModel::configurationName(const QModelIndex &index) const
+{
+    const Node *item = node(index);
+    return item ? item->configuration : QString();
 }
 
 QString ProjectTreeModel::name(const QModelIndex &index) const

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "editors/globals/globallists.h"
 #include "model/ids.h"
 #include "model/pou.h"
 
@@ -36,6 +37,10 @@ public:
     // The body a node opens: a POU's own body, an action's or a transition's.
     [[nodiscard]] std::optional<model::BodyRef> bodyRef(const QModelIndex &index) const;
     [[nodiscard]] model::PouId pouId(const QModelIndex &index) const;
+    // The global variable list a node shows; nullopt for other nodes.
+    [[nodiscard]] std::optional<editors::GlobalListRef> globalList(const QModelIndex &index) const;
+    // The configuration a configuration, resource or task node belongs to; empty for other nodes.
+    [[nodiscard]] QString configurationName(const QModelIndex &index) const;
     [[nodiscard]] QString name(const QModelIndex &index) const; // the model name, without decoration
 
     QModelIndex index(int row, int column, const QModelIndex &parent = {}) const override;
@@ -51,9 +56,11 @@ public:
     static QString folderKey(Folder folder);
     static QString pouKey(model::PouId id);
     static QString partKey(const model::BodyRef &ref);
+    static QString globalListKey(const editors::GlobalListRef &list);
 
 Q_SIGNALS:
     void renameRequested(const iec::model::BodyRef &item, const QString &newName);
+    void globalListRenameRequested(const iec::editors::GlobalListRef &list, const QString &newName);
 
 private:
     struct Node {
@@ -64,6 +71,8 @@ private:
         model::PouId pou;
         model::PouKind pouKind = model::PouKind::Program;
         model::BodyLanguage language = model::BodyLanguage::ST;
+        editors::GlobalListRef list; // global variable lists
+        QString configuration;       // configurations, resources and tasks
         int parent = -1; // index into m_nodes; -1: top level
         int row = 0;     // position among its siblings
         std::vector<int> children;

@@ -23,7 +23,29 @@ ProjectTreeView::ProjectTreeView(QWidget *parent)
             Q_EMIT openRequested(*body);
         else if (m_model->nodeKind(index) == ProjectTreeModel::NodeKind::DataType)
             Q_EMIT openDataTypeRequested(m_model->name(index));
+        else if (const auto list = m_model->globalList(index))
+            Q_EMIT openGlobalListRequested(*list);
+        else if (const QString configuration = m_model->configurationName(index); !configuration.isEmpty())
+            openConfigurationAt(index, configuration);
     });
+}
+
+void ProjectTreeView::openConfigurationAt(const QModelIndex &index, const QString &configuration)
+{
+    QString resource;
+    QString task;
+    switch (m_model->nodeKind(index).value_or(ProjectTreeModel::NodeKind::Configuration)) {
+    case ProjectTreeModel::NodeKind::Task:
+        task = m_model->name(index);
+        resource = m_model->name(index.parent());
+        break;
+    case ProjectTreeModel::NodeKind::Resource:
+        resource = m_model->name(index);
+        break;
+    default:
+        break;
+    }
+    Q_EMIT openConfigurationRequested(configuration, resource, task);
 }
 
 void ProjectTreeView::setProjectModel(ProjectTreeModel *model)

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "editors/globals/globallists.h"
 #include "model/ids.h"
 
 #include <QSet>
@@ -26,6 +27,10 @@ Q_SIGNALS:
     void openRequested(const iec::model::BodyRef &body);
     // A data type node was activated (double-click, Enter).
     void openDataTypeRequested(const QString &typeName);
+    // A global variable list was activated.
+    void openGlobalListRequested(const iec::editors::GlobalListRef &list);
+    // A configuration, one of its resources or tasks was activated: its editor opens there.
+    void openConfigurationRequested(const QString &configuration, const QString &resource, const QString &task);
     // The current node changed (also when a rebuild moved or removed it).
     void currentItemChanged();
 
@@ -33,6 +38,7 @@ protected:
     void changeEvent(QEvent *event) override;
 
 private:
+    void openConfigurationAt(const QModelIndex &index, const QString &configuration);
     void rememberState();
     void restoreState();
 

@@ -1,8 +1,10 @@
 #include "app/referencerename.h"
 
 #include "app/textrename.h"
+#include "editors/globals/globallists.h"
 #include "interpreter/compiler/lexer.h"
 #include "model/projectmodel.h"
+#include "model/sfcoptions.h"
 #include "model/undo/datatypecommands.h"
 #include "model/undo/elementcommands.h"
 #include "model/undo/instancecommands.h"
@@ -595,6 +597,17 @@ BodyRewrite partNameRewrite(BodyRef::Part part, const QString &oldName, const QS
         if (auto *block = std::get_if<model::ActionBlock>(&element); block && part == BodyRef::Part::Action) {
             for (model::ActionBlockAction &action : block->actions)
                 changed |= renameReference(action.reference, renames);
+        } else if (auto *step = std::get_if<model::Step>(&element); step && part == BodyRef::Part::Action) {
+            // A step's entry, exit and active actions (CoDeSys step options) name actions too.
+            model::StepOptions options = model::stepOptions(*step);
+            for (QString *action : {&options.entryAction, &options.exitAction, &options.activeAction}) {
+                if (const QString *renamed = newNameOf(renames, *action)) {
+                    *action = *renamed;
+                    changed = true;
+                }
+            }
+            if (changed)
+                model::setStepOptions(*step, options);
         } else if (auto *transition = std::get_if<model::Transition>(&element);
                    transition && part == BodyRef::Part::Transition && transition->condition) {
             if (auto *reference = std::get_if<model::Reference>(&transition->condition->kind)) {
@@ -678,8 +691,47 @@ QUndoCommand *createRenameVariableCommand(
     return command;
 }
 
+namespace {
+
+// The names of the global variable lists that declare one of the renamed globals (CODESYS GVLs:
+// code may write List.Variable).
+QStringList listsDeclaring(const model::Instances &instances, const Renames &renames)
+{
+    QStringList names;
+    for (const editors::GlobalListRef &list : editors::globalLists(instances)) {
+        if (list.name.isEmpty())
+            continue;
+        for (const model::VarList &varList : editors::globalListDeclarations(instances, list).varLists) {
+            for (const model::Variable &variable : varList.variables) {
+                if (newNameOf(renames, variable.name) && !names.contains(list.name, Qt::CaseInsensitive))
+                    names << list.name;
+            }
+        }
+    }
+    return names;
+}
+
+// `List.Old` becomes `List.New` for the lists given, whatever the POU declares itself.
+BodyRewrite qualifiedGlobalRewrite(const QStringList &lists, const Renames &renames)
+{
+    BodyRewrite rewrite;
+    rewrite.text = [lists, renames](const QString &text, TextDialect) {
+        TokenText tokens(text);
+        for (size_t i = 2; i < tokens.size(); ++i) {
+            const QString *newName = tokens.is(i, interp::TokenKind::Identifier) ? newNameOf(renames, tokens.word(i)) : nullptr;
+            if (newName && tokens.isOperator(i - 1, u".") && lists.contains(tokens.word(i - 2).toString(), Qt::CaseInsensitive))
+                tokens.replace(i, *newName);
+        }
+        return tokens.result();
+    };
+    return rewrite;
+}
+
+} // namespace
+
 void addGlobalReferenceRenames(model::ProjectModel &model, const Renames &renames, QUndoCommand *gesture)
 {
+    const QStringList lists = listsDeclaring(model.project().instances, renames);
     for (const model::Pou &pou : model.project().types.pous) {
         Renames seen;
         for (const model::VariableRename &rename : renames) {
@@ -692,8 +744,13 @@ void addGlobalReferenceRenames(model::ProjectModel &model, const Renames &rename
                 new model::ChangeVariableCommand(model, pou.id, external->name, std::move(renamed), gesture);
             }
         }
+        std::vector<BodyRewrite> rewrites;
         if (!seen.empty())
-            addPouRewrite(model, pou, variableRewrite(pou, seen), gesture);
+            rewrites.push_back(variableRewrite(pou, seen));
+        if (!lists.isEmpty())
+            rewrites.push_back(qualifiedGlobalRewrite(lists, renames));
+        if (!rewrites.empty())
+            addPouRewrite(model, pou, composed(std::move(rewrites)), gesture);
     }
 }
 

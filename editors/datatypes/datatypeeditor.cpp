@@ -173,6 +173,14 @@ void DataTypeEditor::apply()
     auto *step = new QUndoCommand;
     const auto *command = new model::ChangeDataTypeCommand(m_projectModel, decl->name, *changed, step);
     step->setText(command->text());
+    // Renamed members take their uses along, in the same step.
+    const std::vector<model::VariableRename> renames = model::renamedMembers(decl->baseType, changed->baseType);
+    if (!renames.empty() && m_renameMembers) {
+        m_renameMembers(decl->name, renames, step);
+        step->setText(renames.size() == 1
+                ? tr("Rename member %1 to %2").arg(renames.front().oldName, renames.front().newName)
+                : tr("Rename %n member(s)", nullptr, int(renames.size())));
+    }
     // A rename is noticed by loadFromModel (the type keeps its place), which emits typeRenamed.
     if (m_undoStack) {
         m_undoStack->push(step);

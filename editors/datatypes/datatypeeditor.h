@@ -3,14 +3,18 @@
 #include "editors/datatypes/datatypeform.h"
 #include "editors/datatypes/datatypevalidation.h"
 
+#include "model/undo/variablerename.h"
+
 #include <QWidget>
 
 #include <array>
+#include <functional>
 
 class QComboBox;
 class QLabel;
 class QLineEdit;
 class QPlainTextEdit;
+class QUndoCommand;
 class QStackedWidget;
 class QUndoStack;
 
@@ -49,6 +53,13 @@ public:
     [[nodiscard]] QLineEdit *initialValueEdit() const { return m_initialValue; }
     [[nodiscard]] QPlainTextEdit *preview() const { return m_preview; }
 
+    // Adds to a gesture that renames members of struct `typeName` what else the renames change
+    // (`x.Member` in the bodies, member names in initial values); called before the gesture is
+    // pushed. The app provides it (app/referencerename); without one only the type changes.
+    using RenameMembers = std::function<void(
+        const QString &typeName, const std::vector<model::VariableRename> &renames, QUndoCommand *gesture)>;
+    void setRenameMembers(RenameMembers renameMembers) { m_renameMembers = std::move(renameMembers); }
+
 Q_SIGNALS:
     // For the tab title.
     void typeRenamed(const QString &newName);
@@ -70,6 +81,7 @@ private:
     bool m_present = true; // false once the type left the project (an undo may bring it back)
     QStringList m_otherNames; // the other POU and type names when the form was loaded
     QUndoStack *m_undoStack;
+    RenameMembers m_renameMembers;
     std::vector<FormError> m_errors;
 
     QLineEdit *m_name;

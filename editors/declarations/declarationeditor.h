@@ -1,20 +1,11 @@
 #pragma once
 
-#include "editors/declarations/declarationrows.h"
+#include "editors/declarations/declarationeditorbase.h"
 
 #include "model/ids.h"
 #include "model/undo/variablerename.h"
 
-#include <QPointer>
-#include <QUndoStack>
-#include <QWidget>
-
 #include <functional>
-
-class QAction;
-class QLabel;
-class QTabWidget;
-class QTableView;
 
 namespace iec::model {
 class ProjectModel;
@@ -22,17 +13,11 @@ class ProjectModel;
 
 namespace iec::editors {
 
-class CodeEditor;
-class DeclarationTableModel;
-
-// The declarations of one POU, above its body as in CODESYS: a table (name, class, type, initial
-// value, address, comment) and the same declarations as VAR ... END_VAR text, on two tabs. Both
-// edit the model's Interface: every gesture (a cell edit, a row added, removed or moved, text
-// applied after a pause or when the text loses focus) is validated and, when valid, pushed as one
-// SetInterfaceCommand on `undoStack`. Problems are shown where they are (a tinted cell, an
-// underline at the line and column) with the message below, and nothing is applied. Changes from
-// elsewhere (undo, a rename) refresh both views.
-class DeclarationEditor : public QWidget
+// The declarations of one POU, above its body as in CODESYS (DeclarationEditorBase): every valid
+// gesture is one SetInterfaceCommand on the POU's `undoStack`; a gesture that renames variables
+// takes their uses along in the same step. Changes from elsewhere (undo, a rename) refresh both
+// views.
+class DeclarationEditor : public DeclarationEditorBase
 {
     Q_OBJECT
 
@@ -48,57 +33,14 @@ public:
     void setRenameReferences(RenameReferences renameReferences) { m_renameReferences = std::move(renameReferences); }
 
     [[nodiscard]] model::PouId pou() const { return m_pou; }
-    [[nodiscard]] QTabWidget *views() const { return m_views; }
-    [[nodiscard]] QTableView *table() const { return m_table; }
-    [[nodiscard]] DeclarationTableModel *tableModel() const { return m_tableModel; }
-    [[nodiscard]] CodeEditor *textEditor() const { return m_text; }
-    // The message of the first problem, empty when the shown declarations are valid.
-    [[nodiscard]] QString problemText() const;
-
-    void showTable();
-    void showText();
-
-    // Table gestures; the row is the current one (or the end when none is current).
-    void addRow();
-    void removeCurrentRow();
-    void moveCurrentRow(int delta);
-
-    // Applies text typed but not yet applied (the text waits for a pause).
-    void flushPendingEdit();
-    // Go to definition: shows the table with the variable's row current and focused. False when
-    // the POU declares no variable of that name.
-    bool showVariable(const QString &name);
 
 protected:
-    bool eventFilter(QObject *watched, QEvent *event) override;
-    void changeEvent(QEvent *event) override;
+    [[nodiscard]] model::Interface declarations() const override;
+    void applyDeclarations(const model::Interface &declarations) override;
 
 private:
-    QWidget *createTablePage();
-    void retranslate();
-    [[nodiscard]] model::Interface currentInterface() const;
-    void refreshFromModel();
-    void fitColumns();
-    void applyRows(const std::vector<DeclarationRow> &rows);
-    void applyText();
-    void apply(const model::Interface &declarations);
-    void showProblem(const QString &message);
-    [[nodiscard]] int currentRow() const;
-    void selectRow(int row);
-
     model::ProjectModel &m_projectModel;
     model::PouId m_pou;
-    QPointer<QUndoStack> m_undoStack; // the app drops a POU's stack when another project opens
-    QTabWidget *m_views = nullptr;
-    QTableView *m_table = nullptr;
-    DeclarationTableModel *m_tableModel = nullptr;
-    CodeEditor *m_text = nullptr;
-    QLabel *m_problem = nullptr;
-    QAction *m_addAction = nullptr;
-    QAction *m_removeAction = nullptr;
-    QAction *m_moveUpAction = nullptr;
-    QAction *m_moveDownAction = nullptr;
-    bool m_columnsFitted = false;
     RenameReferences m_renameReferences;
 };
 

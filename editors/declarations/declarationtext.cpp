@@ -240,6 +240,11 @@ DeclarationTextResult readDeclarationText(QStringView text, const model::Interfa
     model::Interface declarations = base;
     declarations.varLists = std::move(lists);
     result.declarations = std::move(declarations);
+    for (const ast::VarSection &section : sections) {
+        result.sectionPlaces.push_back({section.location.line, section.location.column, {}});
+        for (const ast::VarDecl &decl : section.vars)
+            result.variablePlaces.push_back({decl.location.line, decl.location.column, {}});
+    }
     return result;
 }
 

@@ -24,6 +24,10 @@ struct DeclarationProblem {
 struct DeclarationTextResult {
     std::optional<model::Interface> declarations; // set only when there are no problems
     std::vector<DeclarationProblem> problems;
+    // Where each var list's header and each variable (in order, across the lists) is written;
+    // set with `declarations`, so checks made later can point at the line.
+    std::vector<DeclarationProblem> sectionPlaces;
+    std::vector<DeclarationProblem> variablePlaces;
 };
 
 // The var lists of `declarations` as IEC text; a variable's documentation follows it as (* ... *).

@@ -1,5 +1,7 @@
 #include "editors/text/codeeditor.h"
 
+#include "editors/text/calltext.h"
+
 #include "editors/text/blockrules.h"
 #include "editors/text/bracketmatcher.h"
 #include "editors/text/codehighlighter.h"
@@ -14,6 +16,7 @@
 #include <QFontDatabase>
 #include <QHash>
 #include <QMenu>
+#include <QMimeData>
 #include <QPainter>
 #include <QPainterPath>
 #include <QScrollBar>
@@ -208,6 +211,20 @@ CodeEditor::CodeEditor(TextLanguage language, QWidget *parent)
 }
 
 CodeEditor::~CodeEditor() = default;
+
+void CodeEditor::setBodyTextKeepingCursor(const QString &text)
+{
+    const QTextCursor before = textCursor();
+    const int line = before.blockNumber();
+    const int column = before.positionInBlock();
+    const int scroll = verticalScrollBar()->value();
+    setBodyText(text);
+    const QTextBlock block = document()->findBlockByNumber(std::min(line, document()->blockCount() - 1));
+    QTextCursor cursor(block);
+    cursor.setPosition(block.position() + std::min(column, int(block.length()) - 1));
+    setTextCursor(cursor);
+    verticalScrollBar()->setValue(scroll);
+}
 
 InputAssistantDialog *CodeEditor::inputAssistant() const
 {
@@ -956,6 +973,13 @@ void CodeEditor::openInputAssistant()
     dialog->open();
 }
 
+void CodeEditor::openInputAssistantOn(InputAssistantDialog::Category category)
+{
+    openInputAssistant();
+    if (m_assistant)
+        m_assistant->setCategory(category);
+}
+
 QString CodeEditor::identifierPathAt(int position) const
 {
     const QTextBlock block = document()->findBlock(position);
@@ -1031,6 +1055,23 @@ void CodeEditor::contextMenuEvent(QContextMenuEvent *event)
     watch->setEnabled(!watchPath.isEmpty());
     menu->exec(event->globalPos());
     delete menu;
+}
+
+bool CodeEditor::canInsertFromMimeData(const QMimeData *source) const
+{
+    return source->hasFormat(mimeCallMimeType(m_language)) || QPlainTextEdit::canInsertFromMimeData(source);
+}
+
+void CodeEditor::insertFromMimeData(const QMimeData *source)
+{
+    const QString callType = mimeCallMimeType(m_language);
+    if (!source->hasFormat(callType) || isReadOnly()) {
+        QPlainTextEdit::insertFromMimeData(source);
+        return;
+    }
+    QTextCursor cursor = textCursor();
+    cursor.insertText(QString::fromUtf8(source->data(callType)));
+    setTextCursor(cursor);
 }
 
 // ---- online mode ----------------------------------------------------------------------------

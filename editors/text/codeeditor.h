@@ -1,6 +1,7 @@
 #pragma once
 
 #include "editors/text/completion.h"
+#include "editors/text/inputassistant.h"
 #include "editors/text/onlinevalues.h"
 #include "editors/text/textlanguage.h"
 
@@ -40,6 +41,9 @@ public:
     // Replaces the whole text (opening a body, or a change that came from the model): no
     // textEdited, the undo history starts afresh, diagnostics are cleared.
     void setBodyText(const QString &text);
+    // The same for a change made elsewhere to an open body (a rename rewrote it): the cursor stays
+    // on its line and column and the view does not scroll.
+    void setBodyTextKeepingCursor(const QString &text);
 
     // Not owned; may be null (then only keywords and the standard library are offered).
     void setCompletionProvider(const CompletionProvider *provider) { m_provider = provider; }
@@ -91,6 +95,8 @@ public Q_SLOTS:
     void toggleComment();
     void showCompletion();
     void openInputAssistant();
+    // The input assistant on one category (RunPro's IL Insert menu: Operator, Operand, ...).
+    void openInputAssistantOn(iec::editors::InputAssistantDialog::Category category);
     void requestDefinition();
 
 Q_SIGNALS:
@@ -111,6 +117,9 @@ protected:
     void mousePressEvent(QMouseEvent *event) override;
     bool viewportEvent(QEvent *event) override;
     void contextMenuEvent(QContextMenuEvent *event) override;
+    // A POU dragged from the library pane drops as a call in this editor's language.
+    bool canInsertFromMimeData(const QMimeData *source) const override;
+    void insertFromMimeData(const QMimeData *source) override;
 
 private:
     struct PlacedDiagnostic {

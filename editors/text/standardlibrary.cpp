@@ -23,77 +23,131 @@ QList<StdParameter> params(std::initializer_list<std::pair<const char *, const c
 }
 
 StdPou fn(const char *name, StdPou::Category category, std::initializer_list<std::pair<const char *, const char *>> in,
-    const char *returnType)
+    const char *returnType, const char *description)
 {
-    return {
-        QString::fromLatin1(name), StdPou::Kind::Function, category, params(in), {}, QString::fromLatin1(returnType)};
+    return {QString::fromLatin1(name), StdPou::Kind::Function, category, params(in), {},
+        QString::fromLatin1(returnType), description};
 }
 
 StdPou fb(const char *name, StdPou::Category category, std::initializer_list<std::pair<const char *, const char *>> in,
-    std::initializer_list<std::pair<const char *, const char *>> out)
+    std::initializer_list<std::pair<const char *, const char *>> out, const char *description)
 {
-    return {QString::fromLatin1(name), StdPou::Kind::FunctionBlock, category, params(in), params(out), {}};
+    return {QString::fromLatin1(name), StdPou::Kind::FunctionBlock, category, params(in), params(out), {}, description};
 }
 
 QList<StdPou> buildStandardPous()
 {
     using C = StdPou::Category;
     QList<StdPou> pous = {
-        fn("ADD", C::Arithmetic, {{"IN1", "ANY_NUM"}, {"IN2", "ANY_NUM"}}, "ANY_NUM"),
-        fn("SUB", C::Arithmetic, {{"IN1", "ANY_NUM"}, {"IN2", "ANY_NUM"}}, "ANY_NUM"),
-        fn("MUL", C::Arithmetic, {{"IN1", "ANY_NUM"}, {"IN2", "ANY_NUM"}}, "ANY_NUM"),
-        fn("DIV", C::Arithmetic, {{"IN1", "ANY_NUM"}, {"IN2", "ANY_NUM"}}, "ANY_NUM"),
-        fn("MOD", C::Arithmetic, {{"IN1", "ANY_INT"}, {"IN2", "ANY_INT"}}, "ANY_INT"),
-        fn("MOVE", C::Arithmetic, {{"IN", "ANY"}}, "ANY"),
-        fn("EXPT", C::Arithmetic, {{"IN1", "ANY_REAL"}, {"IN2", "ANY_NUM"}}, "ANY_REAL"),
-        fn("ABS", C::Numeric, {{"IN", "ANY_NUM"}}, "ANY_NUM"),
-        fn("SQRT", C::Numeric, {{"IN", "ANY_REAL"}}, "ANY_REAL"),
-        fn("LN", C::Numeric, {{"IN", "ANY_REAL"}}, "ANY_REAL"),
-        fn("LOG", C::Numeric, {{"IN", "ANY_REAL"}}, "ANY_REAL"),
-        fn("EXP", C::Numeric, {{"IN", "ANY_REAL"}}, "ANY_REAL"),
-        fn("SIN", C::Numeric, {{"IN", "ANY_REAL"}}, "ANY_REAL"),
-        fn("COS", C::Numeric, {{"IN", "ANY_REAL"}}, "ANY_REAL"),
-        fn("TAN", C::Numeric, {{"IN", "ANY_REAL"}}, "ANY_REAL"),
-        fn("ASIN", C::Numeric, {{"IN", "ANY_REAL"}}, "ANY_REAL"),
-        fn("ACOS", C::Numeric, {{"IN", "ANY_REAL"}}, "ANY_REAL"),
-        fn("ATAN", C::Numeric, {{"IN", "ANY_REAL"}}, "ANY_REAL"),
-        fn("TRUNC", C::Numeric, {{"IN", "ANY_REAL"}}, "DINT"),
-        fn("SHL", C::BitShift, {{"IN", "ANY_BIT"}, {"N", "INT"}}, "ANY_BIT"),
-        fn("SHR", C::BitShift, {{"IN", "ANY_BIT"}, {"N", "INT"}}, "ANY_BIT"),
-        fn("ROL", C::BitShift, {{"IN", "ANY_BIT"}, {"N", "INT"}}, "ANY_BIT"),
-        fn("ROR", C::BitShift, {{"IN", "ANY_BIT"}, {"N", "INT"}}, "ANY_BIT"),
-        fn("SEL", C::Selection, {{"G", "BOOL"}, {"IN0", "ANY"}, {"IN1", "ANY"}}, "ANY"),
-        fn("MAX", C::Selection, {{"IN1", "ANY"}, {"IN2", "ANY"}}, "ANY"),
-        fn("MIN", C::Selection, {{"IN1", "ANY"}, {"IN2", "ANY"}}, "ANY"),
-        fn("LIMIT", C::Selection, {{"MN", "ANY"}, {"IN", "ANY"}, {"MX", "ANY"}}, "ANY"),
-        fn("MUX", C::Selection, {{"K", "INT"}, {"IN0", "ANY"}, {"IN1", "ANY"}}, "ANY"),
-        fn("GT", C::Comparison, {{"IN1", "ANY"}, {"IN2", "ANY"}}, "BOOL"),
-        fn("GE", C::Comparison, {{"IN1", "ANY"}, {"IN2", "ANY"}}, "BOOL"),
-        fn("EQ", C::Comparison, {{"IN1", "ANY"}, {"IN2", "ANY"}}, "BOOL"),
-        fn("NE", C::Comparison, {{"IN1", "ANY"}, {"IN2", "ANY"}}, "BOOL"),
-        fn("LE", C::Comparison, {{"IN1", "ANY"}, {"IN2", "ANY"}}, "BOOL"),
-        fn("LT", C::Comparison, {{"IN1", "ANY"}, {"IN2", "ANY"}}, "BOOL"),
-        fn("LEN", C::String, {{"STR", "STRING"}}, "INT"),
-        fn("LEFT", C::String, {{"STR", "STRING"}, {"SIZE", "INT"}}, "STRING"),
-        fn("RIGHT", C::String, {{"STR", "STRING"}, {"SIZE", "INT"}}, "STRING"),
-        fn("MID", C::String, {{"STR", "STRING"}, {"LEN", "INT"}, {"POS", "INT"}}, "STRING"),
-        fn("CONCAT", C::String, {{"STR1", "STRING"}, {"STR2", "STRING"}}, "STRING"),
-        fn("INSERT", C::String, {{"STR1", "STRING"}, {"STR2", "STRING"}, {"POS", "INT"}}, "STRING"),
-        fn("DELETE", C::String, {{"STR", "STRING"}, {"LEN", "INT"}, {"POS", "INT"}}, "STRING"),
-        fn("REPLACE", C::String, {{"STR1", "STRING"}, {"STR2", "STRING"}, {"L", "INT"}, {"P", "INT"}}, "STRING"),
-        fn("FIND", C::String, {{"STR1", "STRING"}, {"STR2", "STRING"}}, "INT"),
-        fb("SR", C::Bistable, {{"SET1", "BOOL"}, {"RESET", "BOOL"}}, {{"Q1", "BOOL"}}),
-        fb("RS", C::Bistable, {{"SET", "BOOL"}, {"RESET1", "BOOL"}}, {{"Q1", "BOOL"}}),
-        fb("R_TRIG", C::Edge, {{"CLK", "BOOL"}}, {{"Q", "BOOL"}}),
-        fb("F_TRIG", C::Edge, {{"CLK", "BOOL"}}, {{"Q", "BOOL"}}),
-        fb("CTU", C::Counter, {{"CU", "BOOL"}, {"RESET", "BOOL"}, {"PV", "WORD"}}, {{"Q", "BOOL"}, {"CV", "WORD"}}),
-        fb("CTD", C::Counter, {{"CD", "BOOL"}, {"LOAD", "BOOL"}, {"PV", "WORD"}}, {{"Q", "BOOL"}, {"CV", "WORD"}}),
+        fn("ADD", C::Arithmetic, {{"IN1", "ANY_NUM"}, {"IN2", "ANY_NUM"}}, "ANY_NUM",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Adds the inputs.")),
+        fn("SUB", C::Arithmetic, {{"IN1", "ANY_NUM"}, {"IN2", "ANY_NUM"}}, "ANY_NUM",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Subtracts IN2 from IN1.")),
+        fn("MUL", C::Arithmetic, {{"IN1", "ANY_NUM"}, {"IN2", "ANY_NUM"}}, "ANY_NUM",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Multiplies the inputs.")),
+        fn("DIV", C::Arithmetic, {{"IN1", "ANY_NUM"}, {"IN2", "ANY_NUM"}}, "ANY_NUM",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Divides IN1 by IN2.")),
+        fn("MOD", C::Arithmetic, {{"IN1", "ANY_INT"}, {"IN2", "ANY_INT"}}, "ANY_INT",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "The remainder of IN1 divided by IN2.")),
+        fn("MOVE", C::Arithmetic, {{"IN", "ANY"}}, "ANY",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Copies the input to the output.")),
+        fn("EXPT", C::Arithmetic, {{"IN1", "ANY_REAL"}, {"IN2", "ANY_NUM"}}, "ANY_REAL",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "IN1 raised to the power IN2.")),
+        fn("ABS", C::Numeric, {{"IN", "ANY_NUM"}}, "ANY_NUM",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "The absolute value.")),
+        fn("SQRT", C::Numeric, {{"IN", "ANY_REAL"}}, "ANY_REAL",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "The square root.")),
+        fn("LN", C::Numeric, {{"IN", "ANY_REAL"}}, "ANY_REAL",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "The natural logarithm.")),
+        fn("LOG", C::Numeric, {{"IN", "ANY_REAL"}}, "ANY_REAL",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "The logarithm to base 10.")),
+        fn("EXP", C::Numeric, {{"IN", "ANY_REAL"}}, "ANY_REAL",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "e raised to the power IN.")),
+        fn("SIN", C::Numeric, {{"IN", "ANY_REAL"}}, "ANY_REAL",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "The sine (IN in radians).")),
+        fn("COS", C::Numeric, {{"IN", "ANY_REAL"}}, "ANY_REAL",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "The cosine (IN in radians).")),
+        fn("TAN", C::Numeric, {{"IN", "ANY_REAL"}}, "ANY_REAL",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "The tangent (IN in radians).")),
+        fn("ASIN", C::Numeric, {{"IN", "ANY_REAL"}}, "ANY_REAL",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "The arc sine, in radians.")),
+        fn("ACOS", C::Numeric, {{"IN", "ANY_REAL"}}, "ANY_REAL",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "The arc cosine, in radians.")),
+        fn("ATAN", C::Numeric, {{"IN", "ANY_REAL"}}, "ANY_REAL",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "The arc tangent, in radians.")),
+        fn("TRUNC", C::Numeric, {{"IN", "ANY_REAL"}}, "DINT",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "The whole-number part of a REAL.")),
+        fn("SHL", C::BitShift, {{"IN", "ANY_BIT"}, {"N", "INT"}}, "ANY_BIT",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Shifts the bits N places to the left.")),
+        fn("SHR", C::BitShift, {{"IN", "ANY_BIT"}, {"N", "INT"}}, "ANY_BIT",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Shifts the bits N places to the right.")),
+        fn("ROL", C::BitShift, {{"IN", "ANY_BIT"}, {"N", "INT"}}, "ANY_BIT",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Rotates the bits N places to the left.")),
+        fn("ROR", C::BitShift, {{"IN", "ANY_BIT"}, {"N", "INT"}}, "ANY_BIT",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Rotates the bits N places to the right.")),
+        fn("SEL", C::Selection, {{"G", "BOOL"}, {"IN0", "ANY"}, {"IN1", "ANY"}}, "ANY",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "IN0 when G is FALSE, IN1 when G is TRUE.")),
+        fn("MAX", C::Selection, {{"IN1", "ANY"}, {"IN2", "ANY"}}, "ANY",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "The larger input.")),
+        fn("MIN", C::Selection, {{"IN1", "ANY"}, {"IN2", "ANY"}}, "ANY",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "The smaller input.")),
+        fn("LIMIT", C::Selection, {{"MN", "ANY"}, {"IN", "ANY"}, {"MX", "ANY"}}, "ANY",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "IN limited to the range MN..MX.")),
+        fn("MUX", C::Selection, {{"K", "INT"}, {"IN0", "ANY"}, {"IN1", "ANY"}}, "ANY",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Input number K (IN0, IN1, ...).")),
+        fn("GT", C::Comparison, {{"IN1", "ANY"}, {"IN2", "ANY"}}, "BOOL",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "TRUE when IN1 > IN2.")),
+        fn("GE", C::Comparison, {{"IN1", "ANY"}, {"IN2", "ANY"}}, "BOOL",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "TRUE when IN1 >= IN2.")),
+        fn("EQ", C::Comparison, {{"IN1", "ANY"}, {"IN2", "ANY"}}, "BOOL",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "TRUE when IN1 = IN2.")),
+        fn("NE", C::Comparison, {{"IN1", "ANY"}, {"IN2", "ANY"}}, "BOOL",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "TRUE when IN1 <> IN2.")),
+        fn("LE", C::Comparison, {{"IN1", "ANY"}, {"IN2", "ANY"}}, "BOOL",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "TRUE when IN1 <= IN2.")),
+        fn("LT", C::Comparison, {{"IN1", "ANY"}, {"IN2", "ANY"}}, "BOOL",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "TRUE when IN1 < IN2.")),
+        fn("LEN", C::String, {{"STR", "STRING"}}, "INT",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "The number of characters of STR.")),
+        fn("LEFT", C::String, {{"STR", "STRING"}, {"SIZE", "INT"}}, "STRING",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "The first SIZE characters of STR.")),
+        fn("RIGHT", C::String, {{"STR", "STRING"}, {"SIZE", "INT"}}, "STRING",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "The last SIZE characters of STR.")),
+        fn("MID", C::String, {{"STR", "STRING"}, {"LEN", "INT"}, {"POS", "INT"}}, "STRING",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "LEN characters of STR from position POS.")),
+        fn("CONCAT", C::String, {{"STR1", "STRING"}, {"STR2", "STRING"}}, "STRING",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "STR1 followed by STR2.")),
+        fn("INSERT", C::String, {{"STR1", "STRING"}, {"STR2", "STRING"}, {"POS", "INT"}}, "STRING",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "STR2 inserted into STR1 after position POS.")),
+        fn("DELETE", C::String, {{"STR", "STRING"}, {"LEN", "INT"}, {"POS", "INT"}}, "STRING",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "STR without LEN characters from position POS.")),
+        fn("REPLACE", C::String, {{"STR1", "STRING"}, {"STR2", "STRING"}, {"L", "INT"}, {"P", "INT"}}, "STRING",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "STR1 with L characters from position P replaced by STR2.")),
+        fn("FIND", C::String, {{"STR1", "STRING"}, {"STR2", "STRING"}}, "INT",
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "The position of STR2 in STR1 (0: not found).")),
+        fb("SR", C::Bistable, {{"SET1", "BOOL"}, {"RESET", "BOOL"}}, {{"Q1", "BOOL"}},
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Bistable, set dominant: Q1 stays TRUE from SET1 until RESET.")),
+        fb("RS", C::Bistable, {{"SET", "BOOL"}, {"RESET1", "BOOL"}}, {{"Q1", "BOOL"}},
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Bistable, reset dominant: Q1 stays TRUE from SET until RESET1.")),
+        fb("R_TRIG", C::Edge, {{"CLK", "BOOL"}}, {{"Q", "BOOL"}},
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Q is TRUE for one cycle when CLK rises.")),
+        fb("F_TRIG", C::Edge, {{"CLK", "BOOL"}}, {{"Q", "BOOL"}},
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Q is TRUE for one cycle when CLK falls.")),
+        fb("CTU", C::Counter, {{"CU", "BOOL"}, {"RESET", "BOOL"}, {"PV", "WORD"}}, {{"Q", "BOOL"}, {"CV", "WORD"}},
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Counts rising edges of CU up; Q when CV reaches PV.")),
+        fb("CTD", C::Counter, {{"CD", "BOOL"}, {"LOAD", "BOOL"}, {"PV", "WORD"}}, {{"Q", "BOOL"}, {"CV", "WORD"}},
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Counts rising edges of CD down from PV; Q when CV reaches 0.")),
         fb("CTUD", C::Counter, {{"CU", "BOOL"}, {"CD", "BOOL"}, {"RESET", "BOOL"}, {"LOAD", "BOOL"}, {"PV", "WORD"}},
-            {{"QU", "BOOL"}, {"QD", "BOOL"}, {"CV", "WORD"}}),
-        fb("TP", C::Timer, {{"IN", "BOOL"}, {"PT", "TIME"}}, {{"Q", "BOOL"}, {"ET", "TIME"}}),
-        fb("TON", C::Timer, {{"IN", "BOOL"}, {"PT", "TIME"}}, {{"Q", "BOOL"}, {"ET", "TIME"}}),
-        fb("TOF", C::Timer, {{"IN", "BOOL"}, {"PT", "TIME"}}, {{"Q", "BOOL"}, {"ET", "TIME"}}),
-        fb("RTC", C::Timer, {{"EN", "BOOL"}, {"PDT", "DT"}}, {{"Q", "BOOL"}, {"CDT", "DT"}}),
+            {{"QU", "BOOL"}, {"QD", "BOOL"}, {"CV", "WORD"}},
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Counts up (CU) and down (CD); QU when CV reaches PV, QD at 0.")),
+        fb("TP", C::Timer, {{"IN", "BOOL"}, {"PT", "TIME"}}, {{"Q", "BOOL"}, {"ET", "TIME"}},
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Pulse: Q is TRUE for PT after IN rises.")),
+        fb("TON", C::Timer, {{"IN", "BOOL"}, {"PT", "TIME"}}, {{"Q", "BOOL"}, {"ET", "TIME"}},
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "On delay: Q follows IN after it was TRUE for PT.")),
+        fb("TOF", C::Timer, {{"IN", "BOOL"}, {"PT", "TIME"}}, {{"Q", "BOOL"}, {"ET", "TIME"}},
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Off delay: Q stays TRUE for PT after IN falls.")),
+        fb("RTC", C::Timer, {{"EN", "BOOL"}, {"PDT", "DT"}}, {{"Q", "BOOL"}, {"CDT", "DT"}},
+            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Real-time clock: CDT runs from PDT while EN is TRUE.")),
     };
     // The conversion operators X_TO_Y between the elementary types, as CODESYS V2.3 offers them.
     static const char *const convertible[] = {"BOOL", "BYTE", "WORD", "DWORD", "SINT", "USINT", "INT", "UINT", "DINT",
@@ -104,7 +158,8 @@ QList<StdPou> buildStandardPous()
                 continue;
             const QString name = QString::fromLatin1(from) + QLatin1String("_TO_") + QString::fromLatin1(to);
             pous.append({name, StdPou::Kind::Function, C::TypeConversion,
-                {{QStringLiteral("IN"), QString::fromLatin1(from)}}, {}, QString::fromLatin1(to)});
+                {{QStringLiteral("IN"), QString::fromLatin1(from)}}, {}, QString::fromLatin1(to),
+                QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Converts %1 to %2.")});
         }
     }
     return pous;
@@ -126,6 +181,14 @@ QString StdPou::signature() const
     if (kind == Kind::Function)
         return text + QLatin1String(" : ") + returnType;
     return text + QLatin1String(" => ") + joinParams(outputs);
+}
+
+QString StdPou::translatedDescription() const
+{
+    if (!description)
+        return {};
+    const QString text = trLib(description);
+    return category == Category::TypeConversion ? text.arg(inputs.value(0).type, returnType) : text;
 }
 
 QString stdCategoryName(StdPou::Category category)

@@ -37,6 +37,13 @@ struct StdPou {
     QList<StdParameter> inputs;
     QList<StdParameter> outputs; // function blocks
     QString returnType; // functions
+    // What it does, one short sentence (QT_TRANSLATE_NOOP text; translatedDescription() shows it).
+    const char *description = nullptr;
+    // The library it belongs to, as the library pane groups it ("Standard", "Util", ...). New
+    // libraries add their blocks to standardPous() with their name here and appear in the pane.
+    QString library = QStringLiteral("Standard");
+
+    [[nodiscard]] QString translatedDescription() const;
 
     // "LIMIT(MN: ANY, IN: ANY, MX: ANY) : ANY" or "TON(IN: BOOL, PT: TIME) => Q: BOOL, ET: TIME"
     [[nodiscard]] QString signature() const;

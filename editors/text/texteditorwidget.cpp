@@ -4,6 +4,7 @@
 #include "editors/text/findreplacebar.h"
 
 #include <QAction>
+#include <QEvent>
 #include <QLabel>
 #include <QTextDocument>
 #include <QVBoxLayout>
@@ -35,22 +36,57 @@ TextEditorWidget::TextEditorWidget(TextLanguage language, QWidget *parent)
     m_findBar->hide();
     setFocusProxy(m_editor);
 
-    auto addShortcut = [this](const QKeySequence &keys, auto slot) {
+    // The names let the window's Edit menu find them (app/editactions.h).
+    auto addShortcut = [this](const QKeySequence &keys, auto slot, const char *name = "") {
         auto *action = new QAction(this);
+        action->setObjectName(QString::fromLatin1(name));
         action->setShortcut(keys);
         action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
         connect(action, &QAction::triggered, this, slot);
         addAction(action);
     };
-    addShortcut(QKeySequence::Find, [this] { m_findBar->activate(false); });
+    addShortcut(QKeySequence::Find, [this] { m_findBar->activate(false); }, "editFind");
     addShortcut(QKeySequence::Replace, [this] {
         if (m_online)
             Q_EMIT m_editor->editRefused(CodeEditor::onlineEditRefusal());
         else
             m_findBar->activate(true);
-    });
+    }, "editReplace");
     addShortcut(QKeySequence::FindNext, [this] { m_findBar->findNext(); });
     addShortcut(QKeySequence::FindPrevious, [this] { m_findBar->findPrevious(); });
+    if (language == TextLanguage::IL)
+        createInsertActions();
+    retranslate();
+}
+
+void TextEditorWidget::createInsertActions()
+{
+    using Category = InputAssistantDialog::Category;
+    const std::pair<const char *, Category> entries[] {{"ilInsertOperator", Category::Operators},
+        {"ilInsertOperand", Category::Operands}, {"ilInsertFunction", Category::Functions},
+        {"ilInsertFunctionBlock", Category::FunctionBlocks}};
+    for (const auto &[name, category] : entries) {
+        auto *action = new QAction(this);
+        action->setObjectName(QString::fromLatin1(name));
+        connect(action, &QAction::triggered, this, [this, category = category] { m_editor->openInputAssistantOn(category); });
+        m_insertActions << action;
+    }
+}
+
+void TextEditorWidget::retranslate()
+{
+    // The letters are RunPro's: O, P, F, B.
+    const char *const texts[] {QT_TR_NOOP("&Operator..."), QT_TR_NOOP("O&perand..."), QT_TR_NOOP("&Function..."),
+        QT_TR_NOOP("Function &Block...")};
+    for (int index = 0; index < m_insertActions.size(); ++index)
+        m_insertActions[index]->setText(tr(texts[index]));
+}
+
+void TextEditorWidget::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
 }
 
 // ---- online mode ----------------------------------------------------------------------------

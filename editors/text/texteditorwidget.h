@@ -30,6 +30,10 @@ public:
 
     [[nodiscard]] CodeEditor *editor() const { return m_editor; }
     [[nodiscard]] FindReplaceBar *findBar() const { return m_findBar; }
+    // What the window's Insert menu shows while this editor is current: for IL, RunPro's
+    // Operator (O), Operand (P), Function (F) and Function Block (B), each opening the input
+    // assistant on that category; nothing for ST.
+    [[nodiscard]] QList<QAction *> insertActions() const { return m_insertActions; }
 
     // The instance whose variables the body uses ("Main"), asked for when going online, so a
     // renamed POU is found under its new name. Unset or empty: nothing is shown online.
@@ -43,7 +47,12 @@ Q_SIGNALS:
     // "Add to Watch" on a variable, with the full name the runtime knows ("Main.Count").
     void addToWatchRequested(const QString &name);
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 private:
+    void createInsertActions();
+    void retranslate();
     const std::vector<QStringList> &linePaths() const;
     void showBanner(const QString &text, bool warning);
 
@@ -56,6 +65,7 @@ private:
 
     CodeEditor *m_editor;
     FindReplaceBar *m_findBar;
+    QList<QAction *> m_insertActions;
 };
 
 } // namespace iec::editors

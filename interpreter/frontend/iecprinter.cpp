@@ -156,11 +156,22 @@ QString printProgramInstance(const model::PouInstance &instance, const QString &
     return QStringLiteral("(* PROGRAM %1%2 has no program type in the file and was left out. *)\n").arg(instance.name, with);
 }
 
+// A configuration's or resource's VAR_GLOBAL lists. IEC text has no name for a list; CODESYS
+// V2.3 exports a global variable list's name in a comment before it, which the reader takes back.
+QString printGlobalLists(const std::vector<model::VarList> &lists)
+{
+    QString text;
+    for (const model::VarList &list : lists) {
+        if (list.name && !list.name->isEmpty())
+            text += QStringLiteral("(* @GLOBAL_VARIABLE_LIST := %1 *)\n").arg(*list.name);
+        text += printVarList(list);
+    }
+    return text;
+}
+
 QString printResource(const model::Resource &resource)
 {
-    QString body;
-    for (const model::VarList &list : resource.globalVars)
-        body += printVarList(list);
+    QString body = printGlobalLists(resource.globalVars);
     for (const model::Task &task : resource.tasks)
         body += printTask(task);
     for (const model::Task &task : resource.tasks) {
@@ -307,9 +318,7 @@ QString printPou(const model::Pou &pou, std::vector<PrintWarning> *warnings)
 
 QString printConfiguration(const model::Configuration &configuration)
 {
-    QString body;
-    for (const model::VarList &list : configuration.globalVars)
-        body += printVarList(list);
+    QString body = printGlobalLists(configuration.globalVars);
     for (const model::Resource &resource : configuration.resources)
         body += printResource(resource);
     return QStringLiteral("CONFIGURATION %1\n").arg(configuration.name) + indented(body, kIndent)

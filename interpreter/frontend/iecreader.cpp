@@ -4,6 +4,8 @@
 #include "interpreter/compiler/parser.h"
 #include "interpreter/sfc/sfctext.h"
 
+#include <QRegularExpression>
+
 namespace iec::interp::frontend {
 
 namespace {
@@ -192,8 +194,24 @@ std::optional<model::VarListKind> listKind(ast::VarKind kind)
     return std::nullopt;
 }
 
-std::vector<model::VarList> toModel(
-    const std::vector<ast::VarSection> &sections, const QString &owner, Diagnostics &diagnostics)
+// The name of the global variable list a section is, from the comment CODESYS V2.3 writes on
+// the line before it: (* @GLOBAL_VARIABLE_LIST := IO *). Empty when there is none.
+QString globalListName(QStringView text, const ast::VarSection &section)
+{
+    static const QRegularExpression named(
+        QStringLiteral("\\(\\*\\s*@GLOBAL_VARIABLE_LIST\\s*:=\\s*([A-Za-z_][A-Za-z0-9_]*)\\s*\\*\\)\\s*$"));
+    qsizetype lineStart = 0;
+    for (int line = 1; line < section.location.line && lineStart >= 0; ++line)
+        lineStart = text.indexOf(u'\n', lineStart) + 1;
+    if (lineStart <= 0)
+        return {};
+    const QStringView before = text.left(lineStart).trimmed();
+    const qsizetype previousLine = before.lastIndexOf(u'\n') + 1;
+    return named.match(before.mid(previousLine).toString()).captured(1);
+}
+
+std::vector<model::VarList> toModel(const std::vector<ast::VarSection> &sections, const QString &owner,
+    Diagnostics &diagnostics, QStringView text = {})
 {
     std::vector<model::VarList> lists;
     for (const ast::VarSection &section : sections) {
@@ -209,6 +227,8 @@ std::vector<model::VarList> toModel(
         list.retain = section.retain;
         list.nonretain = section.nonRetain;
         list.variables = toModel(section.vars);
+        if (const QString name = globalListName(text, section); list.kind == model::VarListKind::Global && !name.isEmpty())
+            list.name = name;
         lists.push_back(std::move(list));
     }
     return lists;
@@ -253,15 +273,15 @@ void addProgram(
     resource.pouInstances.push_back(instance); // no WITH (or an unknown task: the compiler reports it)
 }
 
-model::Configuration toModel(const ast::ConfigurationDecl &decl, Diagnostics &diagnostics)
+model::Configuration toModel(const ast::ConfigurationDecl &decl, QStringView text, Diagnostics &diagnostics)
 {
     model::Configuration configuration;
     configuration.name = decl.name;
-    configuration.globalVars = toModel(decl.globals, decl.name, diagnostics);
+    configuration.globalVars = toModel(decl.globals, decl.name, diagnostics, text);
     for (const ast::ResourceDecl &r : decl.resources) {
         model::Resource resource;
         resource.name = r.name.isEmpty() ? QStringLiteral("Resource") : r.name;
-        resource.globalVars = toModel(r.globals, decl.name, diagnostics);
+        resource.globalVars = toModel(r.globals, decl.name, diagnostics, text);
         for (const ast::TaskDecl &task : r.tasks)
             resource.tasks.push_back(toModel(task, decl.name, diagnostics));
         for (const ast::ProgramConfig &program : r.programs)
@@ -477,7 +497,7 @@ TextReadResult readIecText(QStringView text, const QString &projectName)
         result.project.types.pous.push_back(
             toModel(unit.pous[i], i < texts.size() ? texts[i] : PouTexts {}, result.diagnostics));
     for (const ast::ConfigurationDecl &configuration : unit.configurations)
-        result.project.instances.configurations.push_back(toModel(configuration, result.diagnostics));
+        result.project.instances.configurations.push_back(toModel(configuration, text, result.diagnostics));
     if (!unit.globals.empty()) {
         result.diagnostics.warning({}, unit.globals.front().location,
             QStringLiteral("VAR_GLOBAL outside a CONFIGURATION cannot be stored in a PLCopen project; put it inside "

@@ -82,4 +82,25 @@ void ChangeDataTypeCommand::undo()
     m_model.changeDataType(m_after.name, m_before);
 }
 
+namespace {
+
+int typeFields(const DataTypeDecl &before, const DataTypeDecl &after)
+{
+    return model::changedFields(before, after, &DataTypeDecl::name, &DataTypeDecl::baseType,
+        &DataTypeDecl::initialValue, &DataTypeDecl::documentation);
+}
+
+} // namespace
+
+bool ChangeDataTypeCommand::mergeWith(const QUndoCommand *other)
+{
+    const auto *change = static_cast<const ChangeDataTypeCommand *>(other);
+    if (change->m_before.name != m_after.name
+        || !sameSingleField(typeFields(m_before, m_after), typeFields(change->m_before, change->m_after)))
+        return false;
+    m_after = change->m_after;
+    setText(change->text());
+    return true;
+}
+
 } // namespace iec::model

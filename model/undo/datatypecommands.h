@@ -41,7 +41,10 @@ public:
 
     void redo() override;
     void undo() override;
-    // No merging: every change of a type (a form field, a rename in the tree) is its own gesture.
+    // Repeated edits of the same field of the same type (its name, its definition, its initial
+    // value, its documentation) merge; an edit of another field is its own step.
+    int id() const override { return ChangeDataTypeMerge; }
+    bool mergeWith(const QUndoCommand *other) override;
 
 private:
     DataTypeDecl m_before;

@@ -27,6 +27,33 @@ enum MergeId : int {
     MoveElementsMerge,
     ChangeElementMerge,
     RenamePouPartMerge,
+    ChangeDataTypeMerge,
 };
+
+// Which fields of a value a change touches: one bit per member pointer given, in that order, and
+// the next bit when anything else changed as well. Commands use it to merge only repeated edits
+// of one field (sameSingleField).
+template <typename T, typename... Members>
+int changedFields(const T &before, const T &after, Members... members)
+{
+    T rest = after;
+    int fields = 0;
+    int bit = 1;
+    const auto compare = [&](auto member) {
+        if (!(before.*member == after.*member)) {
+            fields |= bit;
+            rest.*member = before.*member;
+        }
+        bit <<= 1;
+    };
+    (compare(members), ...);
+    return rest == before ? fields : fields | bit;
+}
+
+// Two changes that each touch the same one field.
+inline bool sameSingleField(int fields, int otherFields)
+{
+    return fields == otherFields && fields != 0 && (fields & (fields - 1)) == 0;
+}
 
 } // namespace iec::model

@@ -108,10 +108,23 @@ void ChangeVariableCommand::undo()
     m_model.changeVariable(m_pou, m_after.name, m_before);
 }
 
+namespace {
+
+int variableFields(const Variable &before, const Variable &after)
+{
+    return model::changedFields(before, after, &Variable::name, &Variable::type, &Variable::initialValue,
+        &Variable::address, &Variable::documentation);
+}
+
+} // namespace
+
 bool ChangeVariableCommand::mergeWith(const QUndoCommand *other)
 {
+    // Only repeated edits of one field of one variable are one step (typing a name in several
+    // goes); a change of another field is a gesture of its own.
     const auto *change = static_cast<const ChangeVariableCommand *>(other);
-    if (change->m_pou != m_pou || change->m_before.name != m_after.name)
+    if (change->m_pou != m_pou || change->m_before.name != m_after.name
+        || !sameSingleField(variableFields(m_before, m_after), variableFields(change->m_before, change->m_after)))
         return false;
     m_after = change->m_after;
     return true;

@@ -40,7 +40,7 @@ private:
 };
 
 // Changes one variable (name, type, initial value, address, documentation...). Successive
-// changes of the same variable merge.
+// changes of the same field of the same variable merge; a change of another field does not.
 class ChangeVariableCommand : public ModelCommand
 {
 public:

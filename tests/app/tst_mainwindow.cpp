@@ -376,9 +376,11 @@ void TestMainWindow::activeUndoStackFollowsTheDocuments()
     MainWindow window;
     QVERIFY(window.openProject(kFirstSteps));
     QUndoGroup &group = window.undoGroup();
-    QCOMPARE(group.activeStack(), &window.undoStacks().projectStack());
-
+    // Opening shows the main program, so its stack is active.
     const iec::model::PouId main = pouNamed(window, QStringLiteral("Main"));
+    QCOMPARE(group.activeStack(), &window.undoStacks().pouStack(main));
+    window.documents().closeAll();
+    QCOMPARE(group.activeStack(), &window.undoStacks().projectStack());
     window.documents().openBody({main, {}, {}});
     QCOMPARE(group.activeStack(), &window.undoStacks().pouStack(main));
 
@@ -485,6 +487,7 @@ void TestMainWindow::editUndoWorksOnTypingOrOnTheActiveStack()
 {
     MainWindow window;
     QVERIFY(window.openProject(kFirstSteps));
+    window.documents().closeAll(); // opening showed the main program
     auto *undo = window.findChild<QAction *>(QStringLiteral("undoAction"));
     auto *redo = window.findChild<QAction *>(QStringLiteral("redoAction"));
     QVERIFY(!undo->isEnabled());

@@ -23,6 +23,7 @@ private Q_SLOTS:
     void readsIntoModelValues();
     void keepsBodiesVerbatim();
     void printsTheFirstStepsExample();
+    void globalListNamesAndChartsSurviveText();
     void graphicalBodiesBecomeAComment();
     void reportsParseErrorsWithFileLines();
     void textAndModelRunAlike();
@@ -155,6 +156,36 @@ void TestIecText::printsTheFirstStepsExample()
                        "CONFIGURATION Config\n    RESOURCE Resource ON PLC\n        TASK MainTask(INTERVAL := T#10ms, "
                        "PRIORITY := 1);\n"
                        "        PROGRAM Main WITH MainTask : Main;\n    END_RESOURCE\nEND_CONFIGURATION\n"));
+}
+
+// iecstudio-cli convert: .xml -> .st -> .xml keeps a CODESYS global list's name (the comment
+// CODESYS V2.3 writes before it) and a chart (textual SFC).
+void TestIecText::globalListNamesAndChartsSurviveText()
+{
+    const auto read
+        = model::plcopen::readProjectFile(QStringLiteral(IEC_SOURCE_DIR "/resources/examples/mixing_tank.xml"));
+    QVERIFY(read.ok);
+    model::Project project = read.project;
+    model::VarList io;
+    io.kind = model::VarListKind::Global;
+    io.name = QStringLiteral("IO");
+    io.variables.push_back({.name = QStringLiteral("Valve")});
+    project.instances.configurations.at(0).resources.at(0).globalVars.push_back(io);
+    const QString text = frontend::printProject(project);
+    QVERIFY(text.contains(QStringLiteral("(* @GLOBAL_VARIABLE_LIST := IO *)\n        VAR_GLOBAL\n")));
+
+    const frontend::TextReadResult back = frontend::readIecText(text, QStringLiteral("p"));
+    const std::vector<model::VarList> &lists = back.project.instances.configurations.at(0).resources.at(0).globalVars;
+    QCOMPARE(lists.back().name, std::optional(QStringLiteral("IO")));
+    const model::Pou *chart = back.project.findPou(QStringLiteral("Main"));
+    QVERIFY(chart && chart->body());
+    QCOMPARE(chart->body()->language(), model::BodyLanguage::SFC);
+    const auto countSteps = [](const model::Pou &pou) {
+        return std::ranges::count_if(*pou.body()->elements(),
+            [](const model::Element &e) { return std::holds_alternative<model::Step>(e); });
+    };
+    QCOMPARE(countSteps(*chart), countSteps(*project.findPou(QStringLiteral("Main"))));
+    QCOMPARE(frontend::printProject(back.project), text);
 }
 
 void TestIecText::graphicalBodiesBecomeAComment()

@@ -303,6 +303,7 @@ void TestUndoCommands::repeatedEditsMerge_data()
     QTest::newRow("variable") << 0 << 0 << QStringLiteral("variable");
     QTest::newRow("element") << 0 << 0 << QStringLiteral("element");
     QTest::newRow("action rename") << 0 << 0 << QStringLiteral("actionRename");
+    QTest::newRow("type rename") << 0 << 0 << QStringLiteral("typeRename");
 }
 
 void TestUndoCommands::repeatedEditsMerge()
@@ -333,6 +334,9 @@ void TestUndoCommands::repeatedEditsMerge()
         } else if (kind == QLatin1String("actionRename")) {
             const QString name = step == 1 ? QStringLiteral("Reset") : QStringLiteral("step%1").arg(step - 1);
             stack.push(new RenamePouPartCommand(model, motor, BodyRef::Part::Action, name, text));
+        } else if (kind == QLatin1String("typeRename")) { // Colour -> step1 -> step2 -> step3
+            const QString name = step == 1 ? QStringLiteral("Colour") : QStringLiteral("step%1").arg(step - 1);
+            stack.push(ChangeDataTypeCommand::rename(model, name, text));
         }
     }
     QCOMPARE(stack.count(), 1);
@@ -356,16 +360,27 @@ void TestUndoCommands::editsOfDifferentThingsDoNotMerge()
     stack.push(new RenamePouCommand(model, pouId(model, "Motor"), QStringLiteral("M")));
     stack.push(new RenamePouCommand(model, pouId(model, "Chart"), QStringLiteral("C")));
     QCOMPARE(stack.count(), 6);
-    // Declarations applied and data types changed are one gesture each, even of the same thing.
+    // Declarations applied are one gesture each, even of the same thing.
     for (const char *name : {"a", "b"}) {
         Interface declarations;
         declarations.varLists.push_back({.kind = VarListKind::Local});
         declarations.varLists.back().variables.push_back({.name = QString::fromLatin1(name)});
         stack.push(new SetInterfaceCommand(model, pouId(model, "M"), declarations));
     }
-    stack.push(ChangeDataTypeCommand::rename(model, QStringLiteral("Colour"), QStringLiteral("Hue")));
-    stack.push(ChangeDataTypeCommand::rename(model, QStringLiteral("Hue"), QStringLiteral("Tint")));
+    QCOMPARE(stack.count(), 8);
+    // Edits of different fields of one variable or one type are steps of their own.
+    const PouId m = pouId(model, "M");
+    Variable b = *model.findVariable(m, QStringLiteral("b"));
+    b.name = QStringLiteral("c");
+    stack.push(new ChangeVariableCommand(model, m, QStringLiteral("b"), b));
+    b.type = {ElementaryType {QStringLiteral("INT")}};
+    stack.push(new ChangeVariableCommand(model, m, QStringLiteral("c"), b));
     QCOMPARE(stack.count(), 10);
+    stack.push(ChangeDataTypeCommand::rename(model, QStringLiteral("Colour"), QStringLiteral("Hue")));
+    DataTypeDecl hue = *model.project().findDataType(QStringLiteral("Hue"));
+    hue.initialValue = Value {SimpleValue {QStringLiteral("Red")}};
+    stack.push(new ChangeDataTypeCommand(model, QStringLiteral("Hue"), hue));
+    QCOMPARE(stack.count(), 12);
 }
 
 void TestUndoCommands::commandsHaveTexts()
