@@ -2,6 +2,37 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
     <context>
+        <name>GlobalListCommands</name>
+        <message>
+            <source>The configuration or resource for the list does not exist any more.</source>
+            <translation>Die Konfiguration oder Ressource der Liste existiert nicht mehr.</translation>
+        </message>
+        <message>
+            <source>Add global variable list %1</source>
+            <translation>Globale Variablenliste %1 hinzufügen</translation>
+        </message>
+        <message>
+            <source>The list does not exist any more.</source>
+            <translation>Die Liste existiert nicht mehr.</translation>
+        </message>
+        <message>
+            <source>Rename global variable list %1 to %2</source>
+            <translation>Globale Variablenliste %1 in %2 umbenennen</translation>
+        </message>
+        <message>
+            <source>Duplicate global variable list %1</source>
+            <translation>Globale Variablenliste %1 duplizieren</translation>
+        </message>
+        <message>
+            <source>Delete global variable list %1</source>
+            <translation>Globale Variablenliste %1 löschen</translation>
+        </message>
+        <message>
+            <source>Create task configuration %1</source>
+            <translation>Taskkonfiguration %1 anlegen</translation>
+        </message>
+    </context>
+    <context>
         <name>ImportExport</name>
         <message>
             <source>%1 is not a PLCopen XML project.</source>
@@ -80,6 +111,10 @@
             <source>This POU has an action or transition named "%1" already.</source>
             <translation>Dieser Baustein hat bereits eine Aktion oder Transition namens "%1".</translation>
         </message>
+        <message>
+            <source>A global variable list named "%1" exists already.</source>
+            <translation>Eine globale Variablenliste namens "%1" existiert bereits.</translation>
+        </message>
     </context>
     <context>
         <name>ProjectCommands</name>
@@ -94,6 +129,17 @@
         <message>
             <source>The item does not exist any more.</source>
             <translation>Das Element existiert nicht mehr.</translation>
+        </message>
+    </context>
+    <context>
+        <name>ProjectTemplates</name>
+        <message>
+            <source>Closes the contact</source>
+            <translation>Schließt den Kontakt</translation>
+        </message>
+        <message>
+            <source>Lit while Start is TRUE</source>
+            <translation>Leuchtet, solange Start TRUE ist</translation>
         </message>
     </context>
     <context>
@@ -230,6 +276,64 @@
         </message>
     </context>
     <context>
+        <name>iec::app::EditActions</name>
+        <message>
+            <source>Cu&amp;t</source>
+            <translation>&amp;Ausschneiden</translation>
+        </message>
+        <message>
+            <source>&amp;Copy</source>
+            <translation>&amp;Kopieren</translation>
+        </message>
+        <message>
+            <source>&amp;Paste</source>
+            <translation>E&amp;infügen</translation>
+        </message>
+        <message>
+            <source>&amp;Delete</source>
+            <translation>&amp;Löschen</translation>
+        </message>
+        <message>
+            <source>Select &amp;All</source>
+            <translation>Alles a&amp;uswählen</translation>
+        </message>
+        <message>
+            <source>&amp;Find...</source>
+            <translation>&amp;Suchen...</translation>
+        </message>
+        <message>
+            <source>R&amp;eplace...</source>
+            <translation>&amp;Ersetzen...</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::FindInProjectDialog</name>
+        <message>
+            <source>Match &amp;case</source>
+            <translation>&amp;Groß-/Kleinschreibung beachten</translation>
+        </message>
+        <message>
+            <source>&amp;Whole words</source>
+            <translation>Ganze &amp;Wörter</translation>
+        </message>
+        <message>
+            <source>&amp;Regular expression</source>
+            <translation>&amp;Regulärer Ausdruck</translation>
+        </message>
+        <message>
+            <source>Find in Project</source>
+            <translation>Im Projekt suchen</translation>
+        </message>
+        <message>
+            <source>Find:</source>
+            <translation>Suchen:</translation>
+        </message>
+        <message>
+            <source>Find</source>
+            <translation>Suchen</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::app::ImportExportActions</name>
         <message>
             <source>&amp;Import...</source>
@@ -270,6 +374,65 @@
         <message>
             <source>Export</source>
             <translation>Exportieren</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::LibraryPane</name>
+        <message>
+            <source>Standard library</source>
+            <translation>Standardbibliothek</translation>
+        </message>
+        <message>
+            <source>%1 library</source>
+            <translation>Bibliothek %1</translation>
+        </message>
+        <message>
+            <source>Project</source>
+            <translation>Projekt</translation>
+        </message>
+        <message>
+            <source>Function Blocks</source>
+            <translation>Funktionsbausteine</translation>
+        </message>
+        <message>
+            <source>Functions</source>
+            <translation>Funktionen</translation>
+        </message>
+        <message>
+            <source>A function block of this project.</source>
+            <translation>Ein Funktionsbaustein dieses Projekts.</translation>
+        </message>
+        <message>
+            <source>A function of this project.</source>
+            <translation>Eine Funktion dieses Projekts.</translation>
+        </message>
+        <message>
+            <source>(function block)</source>
+            <translation>(Funktionsbaustein)</translation>
+        </message>
+        <message>
+            <source>(function)</source>
+            <translation>(Funktion)</translation>
+        </message>
+        <message>
+            <source>Inputs:</source>
+            <translation>Eingänge:</translation>
+        </message>
+        <message>
+            <source>Outputs:</source>
+            <translation>Ausgänge:</translation>
+        </message>
+        <message>
+            <source>Returns:</source>
+            <translation>Rückgabewert:</translation>
+        </message>
+        <message>
+            <source>Search blocks</source>
+            <translation>Bausteine suchen</translation>
+        </message>
+        <message>
+            <source>Choose a block to see its pins; drag it into an editor to call it.</source>
+            <translation>Wählen Sie einen Baustein, um seine Anschlüsse zu sehen; ziehen Sie ihn in einen Editor, um ihn aufzurufen.</translation>
         </message>
     </context>
     <context>
@@ -484,6 +647,38 @@ Automatisch gespeichert: %2</translation>
             <source>Log out to edit (Online → Logout).</source>
             <translation>Zum Bearbeiten ausloggen (Online → Ausloggen).</translation>
         </message>
+        <message>
+            <source>Search Results</source>
+            <translation>Suchergebnisse</translation>
+        </message>
+        <message>
+            <source>Library</source>
+            <translation>Bibliothek</translation>
+        </message>
+        <message>
+            <source>&amp;Print Documentation...</source>
+            <translation>Dokumentation d&amp;rucken...</translation>
+        </message>
+        <message>
+            <source>Export Documentation as P&amp;DF...</source>
+            <translation>Dokumentation als P&amp;DF exportieren...</translation>
+        </message>
+        <message>
+            <source>Print Documentation</source>
+            <translation>Dokumentation drucken</translation>
+        </message>
+        <message>
+            <source>Export Documentation</source>
+            <translation>Dokumentation exportieren</translation>
+        </message>
+        <message>
+            <source>PDF documents (*.pdf)</source>
+            <translation>PDF-Dokumente (*.pdf)</translation>
+        </message>
+        <message>
+            <source>The documentation was written to %1.</source>
+            <translation>Die Dokumentation wurde in %1 geschrieben.</translation>
+        </message>
     </context>
     <context>
         <name>iec::app::MessagesPane</name>
@@ -526,6 +721,17 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>Errors: %1, warnings: %2</source>
             <translation>Fehler: %1, Warnungen: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::NewProjectDialog</name>
+        <message>
+            <source>New Project</source>
+            <translation>Neues Projekt</translation>
+        </message>
+        <message>
+            <source>Start the project from:</source>
+            <translation>Projekt beginnen mit:</translation>
         </message>
     </context>
     <context>
@@ -652,6 +858,199 @@ Automatisch gespeichert: %2</translation>
         </message>
     </context>
     <context>
+        <name>iec::app::ProjectDocumentation</name>
+        <message>
+            <source>program</source>
+            <translation>Programm</translation>
+        </message>
+        <message>
+            <source>function block</source>
+            <translation>Funktionsbaustein</translation>
+        </message>
+        <message>
+            <source>function</source>
+            <translation>Funktion</translation>
+        </message>
+        <message>
+            <source>The body is empty.</source>
+            <translation>Der Rumpf ist leer.</translation>
+        </message>
+        <message>
+            <source>The %1 body is drawn in the editor; this version cannot print it as a picture.</source>
+            <translation>Der %1-Rumpf wird im Editor gezeichnet; diese Version kann ihn nicht als Bild drucken.</translation>
+        </message>
+        <message>
+            <source>%1 (%2, %3)</source>
+            <translation>%1 (%2, %3)</translation>
+        </message>
+        <message>
+            <source>Declarations</source>
+            <translation>Deklarationen</translation>
+        </message>
+        <message>
+            <source>Returns %1.</source>
+            <translation>Gibt %1 zurück.</translation>
+        </message>
+        <message>
+            <source>No variables.</source>
+            <translation>Keine Variablen.</translation>
+        </message>
+        <message>
+            <source>Body</source>
+            <translation>Rumpf</translation>
+        </message>
+        <message>
+            <source>Action %1</source>
+            <translation>Aktion %1</translation>
+        </message>
+        <message>
+            <source>Transition %1</source>
+            <translation>Transition %1</translation>
+        </message>
+        <message>
+            <source>Data types</source>
+            <translation>Datentypen</translation>
+        </message>
+        <message>
+            <source>Global variables</source>
+            <translation>Globale Variablen</translation>
+        </message>
+        <message>
+            <source>%1 (in %2)</source>
+            <translation>%1 (in %2)</translation>
+        </message>
+        <message>
+            <source>Configuration %1</source>
+            <translation>Konfiguration %1</translation>
+        </message>
+        <message>
+            <source>Resource %1</source>
+            <translation>Ressource %1</translation>
+        </message>
+        <message>
+            <source>No tasks.</source>
+            <translation>Keine Tasks.</translation>
+        </message>
+        <message>
+            <source>Task</source>
+            <translation>Task</translation>
+        </message>
+        <message>
+            <source>Interval</source>
+            <translation>Intervall</translation>
+        </message>
+        <message>
+            <source>SINGLE</source>
+            <translation>SINGLE</translation>
+        </message>
+        <message>
+            <source>Priority</source>
+            <translation>Priorität</translation>
+        </message>
+        <message>
+            <source>Watchdog</source>
+            <translation>Watchdog</translation>
+        </message>
+        <message>
+            <source>Programs</source>
+            <translation>Programme</translation>
+        </message>
+        <message>
+            <source>Untitled project</source>
+            <translation>Unbenanntes Projekt</translation>
+        </message>
+        <message>
+            <source>Project documentation</source>
+            <translation>Projektdokumentation</translation>
+        </message>
+        <message>
+            <source>Author: %1</source>
+            <translation>Autor: %1</translation>
+        </message>
+        <message>
+            <source>Organization: %1</source>
+            <translation>Organisation: %1</translation>
+        </message>
+        <message>
+            <source>Version: %1</source>
+            <translation>Version: %1</translation>
+        </message>
+        <message>
+            <source>Printed on %1</source>
+            <translation>Gedruckt am %1</translation>
+        </message>
+        <message>
+            <source>Contents</source>
+            <translation>Inhalt</translation>
+        </message>
+        <message>
+            <source>The PDF could not be written to %1.</source>
+            <translation>Das PDF konnte nicht in %1 geschrieben werden.</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::ProjectSearch</name>
+        <message>
+            <source>The regular expression is not valid: %1.</source>
+            <translation>Der reguläre Ausdruck ist ungültig: %1.</translation>
+        </message>
+        <message>
+            <source>declared</source>
+            <translation>deklariert</translation>
+        </message>
+        <message>
+            <source>read</source>
+            <translation>gelesen</translation>
+        </message>
+        <message>
+            <source>written</source>
+            <translation>geschrieben</translation>
+        </message>
+        <message>
+            <source>read and written</source>
+            <translation>gelesen und geschrieben</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::ProjectTemplates</name>
+        <message>
+            <source>Empty project</source>
+            <translation>Leeres Projekt</translation>
+        </message>
+        <message>
+            <source>Structured Text (ST) program</source>
+            <translation>Programm in Strukturiertem Text (ST)</translation>
+        </message>
+        <message>
+            <source>Ladder Diagram (LD) program</source>
+            <translation>Programm in Kontaktplan (KOP)</translation>
+        </message>
+        <message>
+            <source>Function Block Diagram (FBD) program</source>
+            <translation>Programm in Funktionsbausteinsprache (FUP)</translation>
+        </message>
+        <message>
+            <source>Continuous Function Chart (CFC) program</source>
+            <translation>Programm in Freigraphischem Funktionsplan (CFC)</translation>
+        </message>
+        <message>
+            <source>Sequential Function Chart (SFC) program</source>
+            <translation>Programm in Ablaufsprache (AS)</translation>
+        </message>
+        <message>
+            <source>Instruction List (IL) program</source>
+            <translation>Programm in Anweisungsliste (AWL)</translation>
+        </message>
+        <message>
+            <source>No POUs and no configuration: add what you need from the Project menu.</source>
+            <translation>Keine Bausteine und keine Konfiguration: Fügen Sie das Benötigte über das Menü Projekt hinzu.</translation>
+        </message>
+        <message>
+            <source>A program Main, run every 10 ms by the task MainTask of configuration Config.</source>
+            <translation>Ein Programm Main, das alle 10 ms von der Task MainTask der Konfiguration Config ausgeführt wird.</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::app::ProjectTreeActions</name>
         <message>
             <source>Add &amp;POU...</source>
@@ -692,6 +1091,18 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>Delete %1? Edit → Undo brings it back.</source>
             <translation>%1 löschen? Bearbeiten → Rückgängig holt es zurück.</translation>
+        </message>
+        <message>
+            <source>Add &amp;Global Variable List...</source>
+            <translation>&amp;Globale Variablenliste hinzufügen...</translation>
+        </message>
+        <message>
+            <source>Task &amp;Configuration</source>
+            <translation>Task&amp;konfiguration</translation>
+        </message>
+        <message>
+            <source>Add Global Variable List</source>
+            <translation>Globale Variablenliste hinzufügen</translation>
         </message>
     </context>
     <context>
@@ -791,6 +1202,60 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>%1: %2</source>
             <translation>%1: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::SearchActions</name>
+        <message>
+            <source>Find in &amp;Project...</source>
+            <translation>Im &amp;Projekt suchen...</translation>
+        </message>
+        <message>
+            <source>&amp;Go to Definition</source>
+            <translation>&amp;Gehe zur Definition</translation>
+        </message>
+        <message>
+            <source>Cross &amp;References</source>
+            <translation>&amp;Querverweisliste</translation>
+        </message>
+        <message>
+            <source>%1 matches of "%2"</source>
+            <translation>%1 Treffer für "%2"</translation>
+        </message>
+        <message>
+            <source>Cross references of %1: %2 places</source>
+            <translation>Querverweise von %1: %2 Stellen</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::SearchResultsPane</name>
+        <message>
+            <source>declaration</source>
+            <translation>Deklaration</translation>
+        </message>
+        <message>
+            <source>element %1</source>
+            <translation>Element %1</translation>
+        </message>
+        <message>
+            <source>line %1, column %2</source>
+            <translation>Zeile %1, Spalte %2</translation>
+        </message>
+        <message>
+            <source>Place</source>
+            <translation>Stelle</translation>
+        </message>
+        <message>
+            <source>Where</source>
+            <translation>Ort</translation>
+        </message>
+        <message>
+            <source>Use</source>
+            <translation>Zugriff</translation>
+        </message>
+        <message>
+            <source>Text</source>
+            <translation>Text</translation>
         </message>
     </context>
     <context>
@@ -1037,6 +1502,125 @@ Automatisch gespeichert: %2</translation>
         </message>
     </context>
     <context>
+        <name>iec::editors::ConfigurationEditor</name>
+        <message>
+            <source>Configuration %1</source>
+            <translation>Konfiguration %1</translation>
+        </message>
+        <message>
+            <source>Resource:</source>
+            <translation>Ressource:</translation>
+        </message>
+        <message>
+            <source>Resource name</source>
+            <translation>Name der Ressource</translation>
+        </message>
+        <message>
+            <source>Add Resource</source>
+            <translation>Ressource hinzufügen</translation>
+        </message>
+        <message>
+            <source>Remove Resource</source>
+            <translation>Ressource entfernen</translation>
+        </message>
+        <message>
+            <source>Tasks (the lower the priority number, the earlier the task runs)</source>
+            <translation>Tasks (je kleiner die Prioritätszahl, desto früher läuft die Task)</translation>
+        </message>
+        <message>
+            <source>Task</source>
+            <translation>Task</translation>
+        </message>
+        <message>
+            <source>Interval (cyclic)</source>
+            <translation>Intervall (zyklisch)</translation>
+        </message>
+        <message>
+            <source>SINGLE (event variable)</source>
+            <translation>SINGLE (Ereignisvariable)</translation>
+        </message>
+        <message>
+            <source>Priority</source>
+            <translation>Priorität</translation>
+        </message>
+        <message>
+            <source>Watchdog</source>
+            <translation>Watchdog</translation>
+        </message>
+        <message>
+            <source>The task's name, unique in the configuration.</source>
+            <translation>Der Name der Task, eindeutig in der Konfiguration.</translation>
+        </message>
+        <message>
+            <source>The task runs every interval (T#10ms). With neither an interval nor a SINGLE variable it runs in every cycle (CODESYS: freewheeling).</source>
+            <translation>Die Task läuft in jedem Intervall (T#10ms). Ohne Intervall und ohne SINGLE-Variable läuft sie in jedem Zyklus (CODESYS: freilaufend).</translation>
+        </message>
+        <message>
+            <source>A global BOOL variable: the task runs once each time it becomes TRUE (CODESYS: triggered by event).</source>
+            <translation>Eine globale BOOL-Variable: Die Task läuft jedes Mal einmal, wenn sie TRUE wird (CODESYS: ereignisgesteuert).</translation>
+        </message>
+        <message>
+            <source>0 is the highest priority; tasks due in the same cycle run in the order of their priorities.</source>
+            <translation>0 ist die höchste Priorität; Tasks, die im selben Zyklus fällig sind, laufen in der Reihenfolge ihrer Prioritäten.</translation>
+        </message>
+        <message>
+            <source>The longest time one run of the task may take (T#50ms); empty for none. It is kept in the project for the target; the simulator does not check it.</source>
+            <translation>Die längste Zeit, die ein Durchlauf der Task dauern darf (T#50ms); leer für keine. Sie wird im Projekt für das Zielsystem gespeichert; der Simulator prüft sie nicht.</translation>
+        </message>
+        <message>
+            <source>Instance</source>
+            <translation>Instanz</translation>
+        </message>
+        <message>
+            <source>Program</source>
+            <translation>Programm</translation>
+        </message>
+        <message>
+            <source>Global variable lists of the resource (double-click opens one)</source>
+            <translation>Globale Variablenlisten der Ressource (Doppelklick öffnet eine)</translation>
+        </message>
+        <message>
+            <source>Add List...</source>
+            <translation>Liste hinzufügen...</translation>
+        </message>
+        <message>
+            <source>Programs run by task %1</source>
+            <translation>Von Task %1 ausgeführte Programme</translation>
+        </message>
+        <message>
+            <source>Programs run by the task</source>
+            <translation>Von der Task ausgeführte Programme</translation>
+        </message>
+        <message>
+            <source>Change tasks of %1</source>
+            <translation>Tasks von %1 ändern</translation>
+        </message>
+        <message>
+            <source>Change programs of task %1</source>
+            <translation>Programme der Task %1 ändern</translation>
+        </message>
+        <message>
+            <source>Rename resource %1 to %2</source>
+            <translation>Ressource %1 in %2 umbenennen</translation>
+        </message>
+        <message>
+            <source>Add resource %1</source>
+            <translation>Ressource %1 hinzufügen</translation>
+        </message>
+        <message>
+            <source>Remove resource %1</source>
+            <translation>Ressource %1 entfernen</translation>
+        </message>
+        <message>
+            <source>Resource %1: %2</source>
+            <translation>Ressource %1: %2</translation>
+        </message>
+        <message>
+            <source>Task %1: %2</source>
+            <translation>Task %1: %2</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::editors::DataTypeEditor</name>
         <message>
             <source>Name:</source>
@@ -1085,6 +1669,17 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>IEC text as last applied (correct the marked fields to apply):</source>
             <translation>IEC-Text wie zuletzt übernommen (korrigieren Sie die markierten Felder, um zu übernehmen):</translation>
+        </message>
+        <message>
+            <source>Rename member %1 to %2</source>
+            <translation>Komponente %1 in %2 umbenennen</translation>
+        </message>
+        <message numerus="yes">
+            <source>Rename %n member(s)</source>
+            <translation>
+                <numerusform>%n Komponente umbenennen</numerusform>
+                <numerusform>%n Komponenten umbenennen</numerusform>
+            </translation>
         </message>
     </context>
     <context>
@@ -1409,6 +2004,32 @@ Automatisch gespeichert: %2</translation>
         </message>
     </context>
     <context>
+        <name>iec::editors::GlobalListEditor</name>
+        <message>
+            <source>Change global variable list %1</source>
+            <translation>Globale Variablenliste %1 ändern</translation>
+        </message>
+        <message>
+            <source>Rename global variable %1 to %2</source>
+            <translation>Globale Variable %1 in %2 umbenennen</translation>
+        </message>
+        <message numerus="yes">
+            <source>Rename %n global variable(s)</source>
+            <translation>
+                <numerusform>%n globale Variable umbenennen</numerusform>
+                <numerusform>%n globale Variablen umbenennen</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>A global variable list holds VAR_GLOBAL sections only; %1 belongs in a POU.</source>
+            <translation>Eine globale Variablenliste enthält nur VAR_GLOBAL-Abschnitte; %1 gehört in einen Baustein.</translation>
+        </message>
+        <message>
+            <source>%1 is declared in the global variable list %2 already.</source>
+            <translation>%1 ist bereits in der globalen Variablenliste %2 deklariert.</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::editors::InPlaceEditor</name>
         <message>
             <source>Enter applies, Esc cancels, F2 opens the input assistant.</source>
@@ -1675,6 +2296,226 @@ Automatisch gespeichert: %2</translation>
             <source>Negation</source>
             <translation>Negation</translation>
         </message>
+        <message>
+            <source>Adds the inputs.</source>
+            <translation>Addiert die Eingänge.</translation>
+        </message>
+        <message>
+            <source>Subtracts IN2 from IN1.</source>
+            <translation>Subtrahiert IN2 von IN1.</translation>
+        </message>
+        <message>
+            <source>Multiplies the inputs.</source>
+            <translation>Multipliziert die Eingänge.</translation>
+        </message>
+        <message>
+            <source>Divides IN1 by IN2.</source>
+            <translation>Dividiert IN1 durch IN2.</translation>
+        </message>
+        <message>
+            <source>The remainder of IN1 divided by IN2.</source>
+            <translation>Der Rest von IN1 geteilt durch IN2.</translation>
+        </message>
+        <message>
+            <source>Copies the input to the output.</source>
+            <translation>Kopiert den Eingang auf den Ausgang.</translation>
+        </message>
+        <message>
+            <source>IN1 raised to the power IN2.</source>
+            <translation>IN1 hoch IN2.</translation>
+        </message>
+        <message>
+            <source>The absolute value.</source>
+            <translation>Der Absolutwert.</translation>
+        </message>
+        <message>
+            <source>The square root.</source>
+            <translation>Die Quadratwurzel.</translation>
+        </message>
+        <message>
+            <source>The natural logarithm.</source>
+            <translation>Der natürliche Logarithmus.</translation>
+        </message>
+        <message>
+            <source>The logarithm to base 10.</source>
+            <translation>Der Logarithmus zur Basis 10.</translation>
+        </message>
+        <message>
+            <source>e raised to the power IN.</source>
+            <translation>e hoch IN.</translation>
+        </message>
+        <message>
+            <source>The sine (IN in radians).</source>
+            <translation>Der Sinus (IN im Bogenmaß).</translation>
+        </message>
+        <message>
+            <source>The cosine (IN in radians).</source>
+            <translation>Der Kosinus (IN im Bogenmaß).</translation>
+        </message>
+        <message>
+            <source>The tangent (IN in radians).</source>
+            <translation>Der Tangens (IN im Bogenmaß).</translation>
+        </message>
+        <message>
+            <source>The arc sine, in radians.</source>
+            <translation>Der Arkussinus, im Bogenmaß.</translation>
+        </message>
+        <message>
+            <source>The arc cosine, in radians.</source>
+            <translation>Der Arkuskosinus, im Bogenmaß.</translation>
+        </message>
+        <message>
+            <source>The arc tangent, in radians.</source>
+            <translation>Der Arkustangens, im Bogenmaß.</translation>
+        </message>
+        <message>
+            <source>The whole-number part of a REAL.</source>
+            <translation>Der ganzzahlige Anteil eines REAL.</translation>
+        </message>
+        <message>
+            <source>Shifts the bits N places to the left.</source>
+            <translation>Schiebt die Bits um N Stellen nach links.</translation>
+        </message>
+        <message>
+            <source>Shifts the bits N places to the right.</source>
+            <translation>Schiebt die Bits um N Stellen nach rechts.</translation>
+        </message>
+        <message>
+            <source>Rotates the bits N places to the left.</source>
+            <translation>Rotiert die Bits um N Stellen nach links.</translation>
+        </message>
+        <message>
+            <source>Rotates the bits N places to the right.</source>
+            <translation>Rotiert die Bits um N Stellen nach rechts.</translation>
+        </message>
+        <message>
+            <source>IN0 when G is FALSE, IN1 when G is TRUE.</source>
+            <translation>IN0, wenn G FALSE ist, IN1, wenn G TRUE ist.</translation>
+        </message>
+        <message>
+            <source>The larger input.</source>
+            <translation>Der größere Eingang.</translation>
+        </message>
+        <message>
+            <source>The smaller input.</source>
+            <translation>Der kleinere Eingang.</translation>
+        </message>
+        <message>
+            <source>IN limited to the range MN..MX.</source>
+            <translation>IN, begrenzt auf den Bereich MN..MX.</translation>
+        </message>
+        <message>
+            <source>Input number K (IN0, IN1, ...).</source>
+            <translation>Eingang Nummer K (IN0, IN1, ...).</translation>
+        </message>
+        <message>
+            <source>TRUE when IN1 &gt; IN2.</source>
+            <translation>TRUE, wenn IN1 &gt; IN2.</translation>
+        </message>
+        <message>
+            <source>TRUE when IN1 &gt;= IN2.</source>
+            <translation>TRUE, wenn IN1 &gt;= IN2.</translation>
+        </message>
+        <message>
+            <source>TRUE when IN1 = IN2.</source>
+            <translation>TRUE, wenn IN1 = IN2.</translation>
+        </message>
+        <message>
+            <source>TRUE when IN1 &lt;&gt; IN2.</source>
+            <translation>TRUE, wenn IN1 &lt;&gt; IN2.</translation>
+        </message>
+        <message>
+            <source>TRUE when IN1 &lt;= IN2.</source>
+            <translation>TRUE, wenn IN1 &lt;= IN2.</translation>
+        </message>
+        <message>
+            <source>TRUE when IN1 &lt; IN2.</source>
+            <translation>TRUE, wenn IN1 &lt; IN2.</translation>
+        </message>
+        <message>
+            <source>The number of characters of STR.</source>
+            <translation>Die Anzahl der Zeichen von STR.</translation>
+        </message>
+        <message>
+            <source>The first SIZE characters of STR.</source>
+            <translation>Die ersten SIZE Zeichen von STR.</translation>
+        </message>
+        <message>
+            <source>The last SIZE characters of STR.</source>
+            <translation>Die letzten SIZE Zeichen von STR.</translation>
+        </message>
+        <message>
+            <source>LEN characters of STR from position POS.</source>
+            <translation>LEN Zeichen von STR ab Position POS.</translation>
+        </message>
+        <message>
+            <source>STR1 followed by STR2.</source>
+            <translation>STR1, gefolgt von STR2.</translation>
+        </message>
+        <message>
+            <source>STR2 inserted into STR1 after position POS.</source>
+            <translation>STR2, in STR1 nach Position POS eingefügt.</translation>
+        </message>
+        <message>
+            <source>STR without LEN characters from position POS.</source>
+            <translation>STR ohne LEN Zeichen ab Position POS.</translation>
+        </message>
+        <message>
+            <source>STR1 with L characters from position P replaced by STR2.</source>
+            <translation>STR1, in dem L Zeichen ab Position P durch STR2 ersetzt sind.</translation>
+        </message>
+        <message>
+            <source>The position of STR2 in STR1 (0: not found).</source>
+            <translation>Die Position von STR2 in STR1 (0: nicht gefunden).</translation>
+        </message>
+        <message>
+            <source>Bistable, set dominant: Q1 stays TRUE from SET1 until RESET.</source>
+            <translation>Bistabil, setzdominant: Q1 bleibt von SET1 bis RESET TRUE.</translation>
+        </message>
+        <message>
+            <source>Bistable, reset dominant: Q1 stays TRUE from SET until RESET1.</source>
+            <translation>Bistabil, rücksetzdominant: Q1 bleibt von SET bis RESET1 TRUE.</translation>
+        </message>
+        <message>
+            <source>Q is TRUE for one cycle when CLK rises.</source>
+            <translation>Q ist für einen Zyklus TRUE, wenn CLK steigt.</translation>
+        </message>
+        <message>
+            <source>Q is TRUE for one cycle when CLK falls.</source>
+            <translation>Q ist für einen Zyklus TRUE, wenn CLK fällt.</translation>
+        </message>
+        <message>
+            <source>Counts rising edges of CU up; Q when CV reaches PV.</source>
+            <translation>Zählt steigende Flanken von CU aufwärts; Q, wenn CV PV erreicht.</translation>
+        </message>
+        <message>
+            <source>Counts rising edges of CD down from PV; Q when CV reaches 0.</source>
+            <translation>Zählt steigende Flanken von CD ab PV abwärts; Q, wenn CV 0 erreicht.</translation>
+        </message>
+        <message>
+            <source>Counts up (CU) and down (CD); QU when CV reaches PV, QD at 0.</source>
+            <translation>Zählt aufwärts (CU) und abwärts (CD); QU, wenn CV PV erreicht, QD bei 0.</translation>
+        </message>
+        <message>
+            <source>Pulse: Q is TRUE for PT after IN rises.</source>
+            <translation>Impuls: Q ist für PT TRUE, nachdem IN steigt.</translation>
+        </message>
+        <message>
+            <source>On delay: Q follows IN after it was TRUE for PT.</source>
+            <translation>Einschaltverzögerung: Q folgt IN, nachdem es für PT TRUE war.</translation>
+        </message>
+        <message>
+            <source>Off delay: Q stays TRUE for PT after IN falls.</source>
+            <translation>Ausschaltverzögerung: Q bleibt für PT TRUE, nachdem IN fällt.</translation>
+        </message>
+        <message>
+            <source>Real-time clock: CDT runs from PDT while EN is TRUE.</source>
+            <translation>Echtzeituhr: CDT läuft ab PDT, solange EN TRUE ist.</translation>
+        </message>
+        <message>
+            <source>Converts %1 to %2.</source>
+            <translation>Wandelt %1 in %2 um.</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::StringPage</name>
@@ -1726,6 +2567,57 @@ Automatisch gespeichert: %2</translation>
         </message>
     </context>
     <context>
+        <name>iec::editors::TaskRows</name>
+        <message>
+            <source>"%1" is not a time such as T#10ms, T#1s or 20ms.</source>
+            <translation>"%1" ist keine Zeit wie T#10ms, T#1s oder 20ms.</translation>
+        </message>
+        <message>
+            <source>Enter a name.</source>
+            <translation>Geben Sie einen Namen ein.</translation>
+        </message>
+        <message>
+            <source>"%1" is not a valid name: use letters, digits and single underscores.</source>
+            <translation>"%1" ist kein gültiger Name: Verwenden Sie Buchstaben, Ziffern und einzelne Unterstriche.</translation>
+        </message>
+        <message>
+            <source>A cyclic task needs an interval above 0; leave it empty for a task started by its SINGLE variable.</source>
+            <translation>Eine zyklische Task braucht ein Intervall über 0; lassen Sie es leer für eine Task, die von ihrer SINGLE-Variable gestartet wird.</translation>
+        </message>
+        <message>
+            <source>There is no global BOOL variable %1 in this configuration.</source>
+            <translation>In dieser Konfiguration gibt es keine globale BOOL-Variable %1.</translation>
+        </message>
+        <message>
+            <source>A task runs either every interval or when its SINGLE variable becomes TRUE: clear the interval or the SINGLE variable.</source>
+            <translation>Eine Task läuft entweder in jedem Intervall oder wenn ihre SINGLE-Variable TRUE wird: Leeren Sie das Intervall oder die SINGLE-Variable.</translation>
+        </message>
+        <message>
+            <source>A watchdog time must be above 0; leave it empty for none.</source>
+            <translation>Eine Watchdog-Zeit muss über 0 liegen; lassen Sie sie leer für keine.</translation>
+        </message>
+        <message>
+            <source>"%1" is not a priority: use a whole number from 0 (highest) to 65535.</source>
+            <translation>"%1" ist keine Priorität: Verwenden Sie eine ganze Zahl von 0 (höchste) bis 65535.</translation>
+        </message>
+        <message>
+            <source>There is another resource named %1.</source>
+            <translation>Es gibt bereits eine Ressource namens %1.</translation>
+        </message>
+        <message>
+            <source>There is another task named %1.</source>
+            <translation>Es gibt bereits eine Task namens %1.</translation>
+        </message>
+        <message>
+            <source>There is another program instance named %1.</source>
+            <translation>Es gibt bereits eine Programminstanz namens %1.</translation>
+        </message>
+        <message>
+            <source>There is no program called %1.</source>
+            <translation>Es gibt kein Programm namens %1.</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::editors::TextEditorWidget</name>
         <message>
             <source>Online: %1, cycle %2</source>
@@ -1734,6 +2626,22 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>no instance</source>
             <translation>keine Instanz</translation>
+        </message>
+        <message>
+            <source>&amp;Operator...</source>
+            <translation>&amp;Operator...</translation>
+        </message>
+        <message>
+            <source>O&amp;perand...</source>
+            <translation>O&amp;perand...</translation>
+        </message>
+        <message>
+            <source>&amp;Function...</source>
+            <translation>&amp;Funktion...</translation>
+        </message>
+        <message>
+            <source>Function &amp;Block...</source>
+            <translation>Funktions&amp;baustein...</translation>
         </message>
     </context>
     <context>

@@ -2,6 +2,37 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
     <context>
+        <name>GlobalListCommands</name>
+        <message>
+            <source>The configuration or resource for the list does not exist any more.</source>
+            <translation>该列表所属的配置或资源已不存在。</translation>
+        </message>
+        <message>
+            <source>Add global variable list %1</source>
+            <translation>添加全局变量列表 %1</translation>
+        </message>
+        <message>
+            <source>The list does not exist any more.</source>
+            <translation>该列表已不存在。</translation>
+        </message>
+        <message>
+            <source>Rename global variable list %1 to %2</source>
+            <translation>将全局变量列表 %1 重命名为 %2</translation>
+        </message>
+        <message>
+            <source>Duplicate global variable list %1</source>
+            <translation>复制全局变量列表 %1</translation>
+        </message>
+        <message>
+            <source>Delete global variable list %1</source>
+            <translation>删除全局变量列表 %1</translation>
+        </message>
+        <message>
+            <source>Create task configuration %1</source>
+            <translation>创建任务配置 %1</translation>
+        </message>
+    </context>
+    <context>
         <name>ImportExport</name>
         <message>
             <source>%1 is not a PLCopen XML project.</source>
@@ -79,6 +110,10 @@
             <source>This POU has an action or transition named "%1" already.</source>
             <translation>此 POU 已有名为 "%1" 的动作或转换。</translation>
         </message>
+        <message>
+            <source>A global variable list named "%1" exists already.</source>
+            <translation>名为 "%1" 的全局变量列表已存在。</translation>
+        </message>
     </context>
     <context>
         <name>ProjectCommands</name>
@@ -93,6 +128,17 @@
         <message>
             <source>The item does not exist any more.</source>
             <translation>该项已不存在。</translation>
+        </message>
+    </context>
+    <context>
+        <name>ProjectTemplates</name>
+        <message>
+            <source>Closes the contact</source>
+            <translation>闭合触点</translation>
+        </message>
+        <message>
+            <source>Lit while Start is TRUE</source>
+            <translation>Start 为 TRUE 时点亮</translation>
         </message>
     </context>
     <context>
@@ -229,6 +275,64 @@
         </message>
     </context>
     <context>
+        <name>iec::app::EditActions</name>
+        <message>
+            <source>Cu&amp;t</source>
+            <translation>剪切(&amp;T)</translation>
+        </message>
+        <message>
+            <source>&amp;Copy</source>
+            <translation>复制(&amp;C)</translation>
+        </message>
+        <message>
+            <source>&amp;Paste</source>
+            <translation>粘贴(&amp;P)</translation>
+        </message>
+        <message>
+            <source>&amp;Delete</source>
+            <translation>删除(&amp;D)</translation>
+        </message>
+        <message>
+            <source>Select &amp;All</source>
+            <translation>全选(&amp;A)</translation>
+        </message>
+        <message>
+            <source>&amp;Find...</source>
+            <translation>查找(&amp;F)...</translation>
+        </message>
+        <message>
+            <source>R&amp;eplace...</source>
+            <translation>替换(&amp;E)...</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::FindInProjectDialog</name>
+        <message>
+            <source>Match &amp;case</source>
+            <translation>区分大小写(&amp;C)</translation>
+        </message>
+        <message>
+            <source>&amp;Whole words</source>
+            <translation>全字匹配(&amp;W)</translation>
+        </message>
+        <message>
+            <source>&amp;Regular expression</source>
+            <translation>正则表达式(&amp;R)</translation>
+        </message>
+        <message>
+            <source>Find in Project</source>
+            <translation>在项目中查找</translation>
+        </message>
+        <message>
+            <source>Find:</source>
+            <translation>查找：</translation>
+        </message>
+        <message>
+            <source>Find</source>
+            <translation>查找</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::app::ImportExportActions</name>
         <message>
             <source>&amp;Import...</source>
@@ -269,6 +373,65 @@
         <message>
             <source>Export</source>
             <translation>导出</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::LibraryPane</name>
+        <message>
+            <source>Standard library</source>
+            <translation>标准库</translation>
+        </message>
+        <message>
+            <source>%1 library</source>
+            <translation>%1 库</translation>
+        </message>
+        <message>
+            <source>Project</source>
+            <translation>项目</translation>
+        </message>
+        <message>
+            <source>Function Blocks</source>
+            <translation>功能块</translation>
+        </message>
+        <message>
+            <source>Functions</source>
+            <translation>函数</translation>
+        </message>
+        <message>
+            <source>A function block of this project.</source>
+            <translation>本项目中的一个功能块。</translation>
+        </message>
+        <message>
+            <source>A function of this project.</source>
+            <translation>本项目中的一个函数。</translation>
+        </message>
+        <message>
+            <source>(function block)</source>
+            <translation>（功能块）</translation>
+        </message>
+        <message>
+            <source>(function)</source>
+            <translation>（函数）</translation>
+        </message>
+        <message>
+            <source>Inputs:</source>
+            <translation>输入：</translation>
+        </message>
+        <message>
+            <source>Outputs:</source>
+            <translation>输出：</translation>
+        </message>
+        <message>
+            <source>Returns:</source>
+            <translation>返回值：</translation>
+        </message>
+        <message>
+            <source>Search blocks</source>
+            <translation>搜索功能块</translation>
+        </message>
+        <message>
+            <source>Choose a block to see its pins; drag it into an editor to call it.</source>
+            <translation>选择一个块可查看其引脚；将其拖入编辑器即可调用。</translation>
         </message>
     </context>
     <context>
@@ -483,6 +646,38 @@ Autosaved: %2</source>
             <source>Log out to edit (Online → Logout).</source>
             <translation>要编辑，请先注销（在线 → 注销）。</translation>
         </message>
+        <message>
+            <source>Search Results</source>
+            <translation>搜索结果</translation>
+        </message>
+        <message>
+            <source>Library</source>
+            <translation>库</translation>
+        </message>
+        <message>
+            <source>&amp;Print Documentation...</source>
+            <translation>打印文档(&amp;P)...</translation>
+        </message>
+        <message>
+            <source>Export Documentation as P&amp;DF...</source>
+            <translation>将文档导出为 PDF(&amp;D)...</translation>
+        </message>
+        <message>
+            <source>Print Documentation</source>
+            <translation>打印文档</translation>
+        </message>
+        <message>
+            <source>Export Documentation</source>
+            <translation>导出文档</translation>
+        </message>
+        <message>
+            <source>PDF documents (*.pdf)</source>
+            <translation>PDF 文档 (*.pdf)</translation>
+        </message>
+        <message>
+            <source>The documentation was written to %1.</source>
+            <translation>文档已写入 %1。</translation>
+        </message>
     </context>
     <context>
         <name>iec::app::MessagesPane</name>
@@ -525,6 +720,17 @@ Autosaved: %2</source>
         <message>
             <source>Errors: %1, warnings: %2</source>
             <translation>错误：%1，警告：%2</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::NewProjectDialog</name>
+        <message>
+            <source>New Project</source>
+            <translation>新建项目</translation>
+        </message>
+        <message>
+            <source>Start the project from:</source>
+            <translation>项目起点：</translation>
         </message>
     </context>
     <context>
@@ -651,6 +857,199 @@ Autosaved: %2</source>
         </message>
     </context>
     <context>
+        <name>iec::app::ProjectDocumentation</name>
+        <message>
+            <source>program</source>
+            <translation>程序</translation>
+        </message>
+        <message>
+            <source>function block</source>
+            <translation>功能块</translation>
+        </message>
+        <message>
+            <source>function</source>
+            <translation>函数</translation>
+        </message>
+        <message>
+            <source>The body is empty.</source>
+            <translation>程序体为空。</translation>
+        </message>
+        <message>
+            <source>The %1 body is drawn in the editor; this version cannot print it as a picture.</source>
+            <translation>%1 程序体在编辑器中以图形绘制；此版本无法将其打印为图片。</translation>
+        </message>
+        <message>
+            <source>%1 (%2, %3)</source>
+            <translation>%1（%2，%3）</translation>
+        </message>
+        <message>
+            <source>Declarations</source>
+            <translation>声明</translation>
+        </message>
+        <message>
+            <source>Returns %1.</source>
+            <translation>返回 %1。</translation>
+        </message>
+        <message>
+            <source>No variables.</source>
+            <translation>无变量。</translation>
+        </message>
+        <message>
+            <source>Body</source>
+            <translation>程序体</translation>
+        </message>
+        <message>
+            <source>Action %1</source>
+            <translation>动作 %1</translation>
+        </message>
+        <message>
+            <source>Transition %1</source>
+            <translation>转换 %1</translation>
+        </message>
+        <message>
+            <source>Data types</source>
+            <translation>数据类型</translation>
+        </message>
+        <message>
+            <source>Global variables</source>
+            <translation>全局变量</translation>
+        </message>
+        <message>
+            <source>%1 (in %2)</source>
+            <translation>%1（位于 %2）</translation>
+        </message>
+        <message>
+            <source>Configuration %1</source>
+            <translation>配置 %1</translation>
+        </message>
+        <message>
+            <source>Resource %1</source>
+            <translation>资源 %1</translation>
+        </message>
+        <message>
+            <source>No tasks.</source>
+            <translation>无任务。</translation>
+        </message>
+        <message>
+            <source>Task</source>
+            <translation>任务</translation>
+        </message>
+        <message>
+            <source>Interval</source>
+            <translation>间隔</translation>
+        </message>
+        <message>
+            <source>SINGLE</source>
+            <translation>SINGLE</translation>
+        </message>
+        <message>
+            <source>Priority</source>
+            <translation>优先级</translation>
+        </message>
+        <message>
+            <source>Watchdog</source>
+            <translation>看门狗</translation>
+        </message>
+        <message>
+            <source>Programs</source>
+            <translation>程序</translation>
+        </message>
+        <message>
+            <source>Untitled project</source>
+            <translation>未命名项目</translation>
+        </message>
+        <message>
+            <source>Project documentation</source>
+            <translation>项目文档</translation>
+        </message>
+        <message>
+            <source>Author: %1</source>
+            <translation>作者：%1</translation>
+        </message>
+        <message>
+            <source>Organization: %1</source>
+            <translation>组织：%1</translation>
+        </message>
+        <message>
+            <source>Version: %1</source>
+            <translation>版本：%1</translation>
+        </message>
+        <message>
+            <source>Printed on %1</source>
+            <translation>打印于 %1</translation>
+        </message>
+        <message>
+            <source>Contents</source>
+            <translation>目录</translation>
+        </message>
+        <message>
+            <source>The PDF could not be written to %1.</source>
+            <translation>无法将 PDF 写入 %1。</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::ProjectSearch</name>
+        <message>
+            <source>The regular expression is not valid: %1.</source>
+            <translation>正则表达式无效：%1。</translation>
+        </message>
+        <message>
+            <source>declared</source>
+            <translation>声明</translation>
+        </message>
+        <message>
+            <source>read</source>
+            <translation>读取</translation>
+        </message>
+        <message>
+            <source>written</source>
+            <translation>写入</translation>
+        </message>
+        <message>
+            <source>read and written</source>
+            <translation>读取和写入</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::ProjectTemplates</name>
+        <message>
+            <source>Empty project</source>
+            <translation>空项目</translation>
+        </message>
+        <message>
+            <source>Structured Text (ST) program</source>
+            <translation>结构化文本 (ST) 程序</translation>
+        </message>
+        <message>
+            <source>Ladder Diagram (LD) program</source>
+            <translation>梯形图 (LD) 程序</translation>
+        </message>
+        <message>
+            <source>Function Block Diagram (FBD) program</source>
+            <translation>功能块图 (FBD) 程序</translation>
+        </message>
+        <message>
+            <source>Continuous Function Chart (CFC) program</source>
+            <translation>连续功能图 (CFC) 程序</translation>
+        </message>
+        <message>
+            <source>Sequential Function Chart (SFC) program</source>
+            <translation>顺序功能图 (SFC) 程序</translation>
+        </message>
+        <message>
+            <source>Instruction List (IL) program</source>
+            <translation>指令表 (IL) 程序</translation>
+        </message>
+        <message>
+            <source>No POUs and no configuration: add what you need from the Project menu.</source>
+            <translation>没有程序组织单元，也没有配置：请通过“项目”菜单添加所需内容。</translation>
+        </message>
+        <message>
+            <source>A program Main, run every 10 ms by the task MainTask of configuration Config.</source>
+            <translation>一个程序 Main，由配置 Config 中的任务 MainTask 每 10 ms 执行一次。</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::app::ProjectTreeActions</name>
         <message>
             <source>Add &amp;POU...</source>
@@ -691,6 +1090,18 @@ Autosaved: %2</source>
         <message>
             <source>Delete %1? Edit → Undo brings it back.</source>
             <translation>删除 %1？可通过 编辑 → 撤销 恢复。</translation>
+        </message>
+        <message>
+            <source>Add &amp;Global Variable List...</source>
+            <translation>添加全局变量列表(&amp;G)...</translation>
+        </message>
+        <message>
+            <source>Task &amp;Configuration</source>
+            <translation>任务配置(&amp;C)</translation>
+        </message>
+        <message>
+            <source>Add Global Variable List</source>
+            <translation>添加全局变量列表</translation>
         </message>
     </context>
     <context>
@@ -790,6 +1201,60 @@ Autosaved: %2</source>
         <message>
             <source>%1: %2</source>
             <translation>%1:%2</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::SearchActions</name>
+        <message>
+            <source>Find in &amp;Project...</source>
+            <translation>在项目中查找(&amp;P)...</translation>
+        </message>
+        <message>
+            <source>&amp;Go to Definition</source>
+            <translation>转到定义(&amp;G)</translation>
+        </message>
+        <message>
+            <source>Cross &amp;References</source>
+            <translation>交叉引用(&amp;R)</translation>
+        </message>
+        <message>
+            <source>%1 matches of "%2"</source>
+            <translation>"%2" 的 %1 个匹配项</translation>
+        </message>
+        <message>
+            <source>Cross references of %1: %2 places</source>
+            <translation>%1 的交叉引用：%2 处</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::SearchResultsPane</name>
+        <message>
+            <source>declaration</source>
+            <translation>声明</translation>
+        </message>
+        <message>
+            <source>element %1</source>
+            <translation>元素 %1</translation>
+        </message>
+        <message>
+            <source>line %1, column %2</source>
+            <translation>第 %1 行，第 %2 列</translation>
+        </message>
+        <message>
+            <source>Place</source>
+            <translation>位置</translation>
+        </message>
+        <message>
+            <source>Where</source>
+            <translation>所在处</translation>
+        </message>
+        <message>
+            <source>Use</source>
+            <translation>用法</translation>
+        </message>
+        <message>
+            <source>Text</source>
+            <translation>文本</translation>
         </message>
     </context>
     <context>
@@ -1036,6 +1501,125 @@ Autosaved: %2</source>
         </message>
     </context>
     <context>
+        <name>iec::editors::ConfigurationEditor</name>
+        <message>
+            <source>Configuration %1</source>
+            <translation>配置 %1</translation>
+        </message>
+        <message>
+            <source>Resource:</source>
+            <translation>资源：</translation>
+        </message>
+        <message>
+            <source>Resource name</source>
+            <translation>资源名称</translation>
+        </message>
+        <message>
+            <source>Add Resource</source>
+            <translation>添加资源</translation>
+        </message>
+        <message>
+            <source>Remove Resource</source>
+            <translation>移除资源</translation>
+        </message>
+        <message>
+            <source>Tasks (the lower the priority number, the earlier the task runs)</source>
+            <translation>任务（优先级数字越小，任务越先执行）</translation>
+        </message>
+        <message>
+            <source>Task</source>
+            <translation>任务</translation>
+        </message>
+        <message>
+            <source>Interval (cyclic)</source>
+            <translation>间隔（循环）</translation>
+        </message>
+        <message>
+            <source>SINGLE (event variable)</source>
+            <translation>SINGLE（事件变量）</translation>
+        </message>
+        <message>
+            <source>Priority</source>
+            <translation>优先级</translation>
+        </message>
+        <message>
+            <source>Watchdog</source>
+            <translation>看门狗</translation>
+        </message>
+        <message>
+            <source>The task's name, unique in the configuration.</source>
+            <translation>任务名称，在配置中必须唯一。</translation>
+        </message>
+        <message>
+            <source>The task runs every interval (T#10ms). With neither an interval nor a SINGLE variable it runs in every cycle (CODESYS: freewheeling).</source>
+            <translation>任务按间隔 (T#10ms) 周期执行。既无间隔也无 SINGLE 变量时，任务在每个周期都执行（CODESYS：自由运行）。</translation>
+        </message>
+        <message>
+            <source>A global BOOL variable: the task runs once each time it becomes TRUE (CODESYS: triggered by event).</source>
+            <translation>一个全局 BOOL 变量：每当它变为 TRUE 时，任务执行一次（CODESYS：事件触发）。</translation>
+        </message>
+        <message>
+            <source>0 is the highest priority; tasks due in the same cycle run in the order of their priorities.</source>
+            <translation>0 为最高优先级；在同一周期内到期的任务按优先级顺序执行。</translation>
+        </message>
+        <message>
+            <source>The longest time one run of the task may take (T#50ms); empty for none. It is kept in the project for the target; the simulator does not check it.</source>
+            <translation>任务单次执行允许的最长时间 (T#50ms)；留空表示不设置。该值保存在项目中供目标系统使用；仿真器不检查它。</translation>
+        </message>
+        <message>
+            <source>Instance</source>
+            <translation>实例</translation>
+        </message>
+        <message>
+            <source>Program</source>
+            <translation>程序</translation>
+        </message>
+        <message>
+            <source>Global variable lists of the resource (double-click opens one)</source>
+            <translation>该资源的全局变量列表（双击打开）</translation>
+        </message>
+        <message>
+            <source>Add List...</source>
+            <translation>添加列表...</translation>
+        </message>
+        <message>
+            <source>Programs run by task %1</source>
+            <translation>由任务 %1 执行的程序</translation>
+        </message>
+        <message>
+            <source>Programs run by the task</source>
+            <translation>由该任务执行的程序</translation>
+        </message>
+        <message>
+            <source>Change tasks of %1</source>
+            <translation>修改 %1 的任务</translation>
+        </message>
+        <message>
+            <source>Change programs of task %1</source>
+            <translation>修改任务 %1 的程序</translation>
+        </message>
+        <message>
+            <source>Rename resource %1 to %2</source>
+            <translation>将资源 %1 重命名为 %2</translation>
+        </message>
+        <message>
+            <source>Add resource %1</source>
+            <translation>添加资源 %1</translation>
+        </message>
+        <message>
+            <source>Remove resource %1</source>
+            <translation>移除资源 %1</translation>
+        </message>
+        <message>
+            <source>Resource %1: %2</source>
+            <translation>资源 %1：%2</translation>
+        </message>
+        <message>
+            <source>Task %1: %2</source>
+            <translation>任务 %1：%2</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::editors::DataTypeEditor</name>
         <message>
             <source>Name:</source>
@@ -1084,6 +1668,16 @@ Autosaved: %2</source>
         <message>
             <source>IEC text as last applied (correct the marked fields to apply):</source>
             <translation>最近一次应用的 IEC 文本(请更正标记的字段以应用)：</translation>
+        </message>
+        <message>
+            <source>Rename member %1 to %2</source>
+            <translation>将成员 %1 重命名为 %2</translation>
+        </message>
+        <message numerus="yes">
+            <source>Rename %n member(s)</source>
+            <translation>
+                <numerusform>重命名 %n 个成员</numerusform>
+            </translation>
         </message>
     </context>
     <context>
@@ -1406,6 +2000,31 @@ Autosaved: %2</source>
         </message>
     </context>
     <context>
+        <name>iec::editors::GlobalListEditor</name>
+        <message>
+            <source>Change global variable list %1</source>
+            <translation>修改全局变量列表 %1</translation>
+        </message>
+        <message>
+            <source>Rename global variable %1 to %2</source>
+            <translation>将全局变量 %1 重命名为 %2</translation>
+        </message>
+        <message numerus="yes">
+            <source>Rename %n global variable(s)</source>
+            <translation>
+                <numerusform>重命名 %n 个全局变量</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>A global variable list holds VAR_GLOBAL sections only; %1 belongs in a POU.</source>
+            <translation>全局变量列表只能包含 VAR_GLOBAL 段；%1 应放在程序组织单元中。</translation>
+        </message>
+        <message>
+            <source>%1 is declared in the global variable list %2 already.</source>
+            <translation>%1 已在全局变量列表 %2 中声明。</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::editors::InPlaceEditor</name>
         <message>
             <source>Enter applies, Esc cancels, F2 opens the input assistant.</source>
@@ -1672,6 +2291,226 @@ Autosaved: %2</source>
             <source>Negation</source>
             <translation>取反</translation>
         </message>
+        <message>
+            <source>Adds the inputs.</source>
+            <translation>将各输入相加。</translation>
+        </message>
+        <message>
+            <source>Subtracts IN2 from IN1.</source>
+            <translation>IN1 减去 IN2。</translation>
+        </message>
+        <message>
+            <source>Multiplies the inputs.</source>
+            <translation>将各输入相乘。</translation>
+        </message>
+        <message>
+            <source>Divides IN1 by IN2.</source>
+            <translation>IN1 除以 IN2。</translation>
+        </message>
+        <message>
+            <source>The remainder of IN1 divided by IN2.</source>
+            <translation>IN1 除以 IN2 的余数。</translation>
+        </message>
+        <message>
+            <source>Copies the input to the output.</source>
+            <translation>将输入复制到输出。</translation>
+        </message>
+        <message>
+            <source>IN1 raised to the power IN2.</source>
+            <translation>IN1 的 IN2 次幂。</translation>
+        </message>
+        <message>
+            <source>The absolute value.</source>
+            <translation>绝对值。</translation>
+        </message>
+        <message>
+            <source>The square root.</source>
+            <translation>平方根。</translation>
+        </message>
+        <message>
+            <source>The natural logarithm.</source>
+            <translation>自然对数。</translation>
+        </message>
+        <message>
+            <source>The logarithm to base 10.</source>
+            <translation>以 10 为底的对数。</translation>
+        </message>
+        <message>
+            <source>e raised to the power IN.</source>
+            <translation>e 的 IN 次幂。</translation>
+        </message>
+        <message>
+            <source>The sine (IN in radians).</source>
+            <translation>正弦（IN 以弧度为单位）。</translation>
+        </message>
+        <message>
+            <source>The cosine (IN in radians).</source>
+            <translation>余弦（IN 以弧度为单位）。</translation>
+        </message>
+        <message>
+            <source>The tangent (IN in radians).</source>
+            <translation>正切（IN 以弧度为单位）。</translation>
+        </message>
+        <message>
+            <source>The arc sine, in radians.</source>
+            <translation>反正弦，以弧度为单位。</translation>
+        </message>
+        <message>
+            <source>The arc cosine, in radians.</source>
+            <translation>反余弦，以弧度为单位。</translation>
+        </message>
+        <message>
+            <source>The arc tangent, in radians.</source>
+            <translation>反正切，以弧度为单位。</translation>
+        </message>
+        <message>
+            <source>The whole-number part of a REAL.</source>
+            <translation>REAL 的整数部分。</translation>
+        </message>
+        <message>
+            <source>Shifts the bits N places to the left.</source>
+            <translation>将各位左移 N 位。</translation>
+        </message>
+        <message>
+            <source>Shifts the bits N places to the right.</source>
+            <translation>将各位右移 N 位。</translation>
+        </message>
+        <message>
+            <source>Rotates the bits N places to the left.</source>
+            <translation>将各位循环左移 N 位。</translation>
+        </message>
+        <message>
+            <source>Rotates the bits N places to the right.</source>
+            <translation>将各位循环右移 N 位。</translation>
+        </message>
+        <message>
+            <source>IN0 when G is FALSE, IN1 when G is TRUE.</source>
+            <translation>G 为 FALSE 时为 IN0，G 为 TRUE 时为 IN1。</translation>
+        </message>
+        <message>
+            <source>The larger input.</source>
+            <translation>较大的输入。</translation>
+        </message>
+        <message>
+            <source>The smaller input.</source>
+            <translation>较小的输入。</translation>
+        </message>
+        <message>
+            <source>IN limited to the range MN..MX.</source>
+            <translation>IN 限制在 MN..MX 范围内。</translation>
+        </message>
+        <message>
+            <source>Input number K (IN0, IN1, ...).</source>
+            <translation>第 K 个输入（IN0、IN1、...）。</translation>
+        </message>
+        <message>
+            <source>TRUE when IN1 &gt; IN2.</source>
+            <translation>IN1 &gt; IN2 时为 TRUE。</translation>
+        </message>
+        <message>
+            <source>TRUE when IN1 &gt;= IN2.</source>
+            <translation>IN1 &gt;= IN2 时为 TRUE。</translation>
+        </message>
+        <message>
+            <source>TRUE when IN1 = IN2.</source>
+            <translation>IN1 = IN2 时为 TRUE。</translation>
+        </message>
+        <message>
+            <source>TRUE when IN1 &lt;&gt; IN2.</source>
+            <translation>IN1 &lt;&gt; IN2 时为 TRUE。</translation>
+        </message>
+        <message>
+            <source>TRUE when IN1 &lt;= IN2.</source>
+            <translation>IN1 &lt;= IN2 时为 TRUE。</translation>
+        </message>
+        <message>
+            <source>TRUE when IN1 &lt; IN2.</source>
+            <translation>IN1 &lt; IN2 时为 TRUE。</translation>
+        </message>
+        <message>
+            <source>The number of characters of STR.</source>
+            <translation>STR 的字符数。</translation>
+        </message>
+        <message>
+            <source>The first SIZE characters of STR.</source>
+            <translation>STR 的前 SIZE 个字符。</translation>
+        </message>
+        <message>
+            <source>The last SIZE characters of STR.</source>
+            <translation>STR 的后 SIZE 个字符。</translation>
+        </message>
+        <message>
+            <source>LEN characters of STR from position POS.</source>
+            <translation>STR 中从位置 POS 开始的 LEN 个字符。</translation>
+        </message>
+        <message>
+            <source>STR1 followed by STR2.</source>
+            <translation>STR1 后接 STR2。</translation>
+        </message>
+        <message>
+            <source>STR2 inserted into STR1 after position POS.</source>
+            <translation>在 STR1 的位置 POS 之后插入 STR2。</translation>
+        </message>
+        <message>
+            <source>STR without LEN characters from position POS.</source>
+            <translation>从 STR 的位置 POS 起删除 LEN 个字符。</translation>
+        </message>
+        <message>
+            <source>STR1 with L characters from position P replaced by STR2.</source>
+            <translation>将 STR1 中从位置 P 起的 L 个字符替换为 STR2。</translation>
+        </message>
+        <message>
+            <source>The position of STR2 in STR1 (0: not found).</source>
+            <translation>STR2 在 STR1 中的位置（0：未找到）。</translation>
+        </message>
+        <message>
+            <source>Bistable, set dominant: Q1 stays TRUE from SET1 until RESET.</source>
+            <translation>双稳态，置位优先：Q1 从 SET1 起保持 TRUE，直到 RESET。</translation>
+        </message>
+        <message>
+            <source>Bistable, reset dominant: Q1 stays TRUE from SET until RESET1.</source>
+            <translation>双稳态，复位优先：Q1 从 SET 起保持 TRUE，直到 RESET1。</translation>
+        </message>
+        <message>
+            <source>Q is TRUE for one cycle when CLK rises.</source>
+            <translation>CLK 上升沿时 Q 在一个周期内为 TRUE。</translation>
+        </message>
+        <message>
+            <source>Q is TRUE for one cycle when CLK falls.</source>
+            <translation>CLK 下降沿时 Q 在一个周期内为 TRUE。</translation>
+        </message>
+        <message>
+            <source>Counts rising edges of CU up; Q when CV reaches PV.</source>
+            <translation>对 CU 的上升沿加计数；CV 达到 PV 时 Q 为 TRUE。</translation>
+        </message>
+        <message>
+            <source>Counts rising edges of CD down from PV; Q when CV reaches 0.</source>
+            <translation>从 PV 开始对 CD 的上升沿减计数；CV 达到 0 时 Q 为 TRUE。</translation>
+        </message>
+        <message>
+            <source>Counts up (CU) and down (CD); QU when CV reaches PV, QD at 0.</source>
+            <translation>加计数 (CU) 和减计数 (CD)；CV 达到 PV 时 QU 为 TRUE，为 0 时 QD 为 TRUE。</translation>
+        </message>
+        <message>
+            <source>Pulse: Q is TRUE for PT after IN rises.</source>
+            <translation>脉冲：IN 上升后 Q 在 PT 时间内为 TRUE。</translation>
+        </message>
+        <message>
+            <source>On delay: Q follows IN after it was TRUE for PT.</source>
+            <translation>接通延时：IN 为 TRUE 持续 PT 后，Q 跟随 IN。</translation>
+        </message>
+        <message>
+            <source>Off delay: Q stays TRUE for PT after IN falls.</source>
+            <translation>断开延时：IN 下降后 Q 在 PT 时间内保持 TRUE。</translation>
+        </message>
+        <message>
+            <source>Real-time clock: CDT runs from PDT while EN is TRUE.</source>
+            <translation>实时时钟：EN 为 TRUE 时，CDT 从 PDT 开始计时。</translation>
+        </message>
+        <message>
+            <source>Converts %1 to %2.</source>
+            <translation>将 %1 转换为 %2。</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::StringPage</name>
@@ -1723,6 +2562,57 @@ Autosaved: %2</source>
         </message>
     </context>
     <context>
+        <name>iec::editors::TaskRows</name>
+        <message>
+            <source>"%1" is not a time such as T#10ms, T#1s or 20ms.</source>
+            <translation>"%1" 不是有效的时间，例如 T#10ms、T#1s 或 20ms。</translation>
+        </message>
+        <message>
+            <source>Enter a name.</source>
+            <translation>请输入名称。</translation>
+        </message>
+        <message>
+            <source>"%1" is not a valid name: use letters, digits and single underscores.</source>
+            <translation>"%1" 不是有效的名称：请使用字母、数字和单个下划线。</translation>
+        </message>
+        <message>
+            <source>A cyclic task needs an interval above 0; leave it empty for a task started by its SINGLE variable.</source>
+            <translation>循环任务的间隔必须大于 0；由 SINGLE 变量启动的任务请将间隔留空。</translation>
+        </message>
+        <message>
+            <source>There is no global BOOL variable %1 in this configuration.</source>
+            <translation>此配置中没有全局 BOOL 变量 %1。</translation>
+        </message>
+        <message>
+            <source>A task runs either every interval or when its SINGLE variable becomes TRUE: clear the interval or the SINGLE variable.</source>
+            <translation>任务要么按间隔执行，要么在其 SINGLE 变量变为 TRUE 时执行：请清除间隔或 SINGLE 变量。</translation>
+        </message>
+        <message>
+            <source>A watchdog time must be above 0; leave it empty for none.</source>
+            <translation>看门狗时间必须大于 0；留空表示不设置。</translation>
+        </message>
+        <message>
+            <source>"%1" is not a priority: use a whole number from 0 (highest) to 65535.</source>
+            <translation>"%1" 不是有效的优先级：请使用 0（最高）到 65535 之间的整数。</translation>
+        </message>
+        <message>
+            <source>There is another resource named %1.</source>
+            <translation>已有名为 %1 的资源。</translation>
+        </message>
+        <message>
+            <source>There is another task named %1.</source>
+            <translation>已有名为 %1 的任务。</translation>
+        </message>
+        <message>
+            <source>There is another program instance named %1.</source>
+            <translation>已有名为 %1 的程序实例。</translation>
+        </message>
+        <message>
+            <source>There is no program called %1.</source>
+            <translation>没有名为 %1 的程序。</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::editors::TextEditorWidget</name>
         <message>
             <source>Online: %1, cycle %2</source>
@@ -1731,6 +2621,22 @@ Autosaved: %2</source>
         <message>
             <source>no instance</source>
             <translation>无实例</translation>
+        </message>
+        <message>
+            <source>&amp;Operator...</source>
+            <translation>运算符(&amp;O)...</translation>
+        </message>
+        <message>
+            <source>O&amp;perand...</source>
+            <translation>操作数(&amp;P)...</translation>
+        </message>
+        <message>
+            <source>&amp;Function...</source>
+            <translation>函数(&amp;F)...</translation>
+        </message>
+        <message>
+            <source>Function &amp;Block...</source>
+            <translation>功能块(&amp;B)...</translation>
         </message>
     </context>
     <context>
