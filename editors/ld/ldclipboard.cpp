@@ -1,5 +1,6 @@
 // Copy and paste of networks and of ranges of rung elements (seed 002 §1: "cut, copy and paste of
 // elements and of whole networks"; CoDeSys 2.3: paste after, below or above the cursor).
+#include "editors/common/diagramclipboard.h"
 #include "editors/ld/ldedits.h"
 #include "editors/ld/ldgraph.h"
 #include "editors/ld/ldtree.h"
@@ -75,22 +76,14 @@ void startsOf(const RungNode &node, std::vector<quint64> &starts)
     }
 }
 
-// Gives every element a localId from `next` on; wires between them follow, wires to anything
-// else are dropped.
-void renumber(std::vector<Element> &elements, const std::function<quint64()> &next, std::unordered_map<quint64, quint64> &map)
+// Gives the pasted elements the document's next free localIds (the shared clipboard's
+// renumbering: wires between them follow, wires to anything else are dropped).
+std::unordered_map<quint64, quint64> renumberInto(LadderDocument &document, std::vector<Element> &elements)
 {
-    for (Element &e : elements) {
-        const quint64 id = next();
-        map[header(e).localId] = id;
-        header(e).localId = id;
-    }
-    for (Element &e : elements) {
-        for (ConnectionPointIn *point : inputPoints(e)) {
-            std::erase_if(point->connections, [&](const Connection &c) { return !map.contains(c.refLocalId); });
-            for (Connection &c : point->connections)
-                c.refLocalId = map[c.refLocalId];
-        }
-    }
+    const quint64 first = document.idFloor + 1;
+    std::unordered_map<quint64, quint64> map = renumberElements(elements, first);
+    document.idFloor += elements.size();
+    return map;
 }
 
 quint64 mapped(const std::unordered_map<quint64, quint64> &map, quint64 id)
@@ -120,8 +113,7 @@ int fileIndexAfter(const LadderDocument &document, int network)
 LdEditResult pasteNetworks(LadderDocument &document, const LdCursor &cursor, LadderDocument pasted)
 {
     const int after = document.networks.empty() ? -1 : std::clamp(cursor.network, 0, int(document.networks.size()) - 1);
-    std::unordered_map<quint64, quint64> map;
-    renumber(pasted.elements, [&] { return document.allocateId(); }, map);
+    const std::unordered_map<quint64, quint64> map = renumberInto(document, pasted.elements);
     int fileIndex = fileIndexAfter(document, after);
     for (Element &e : pasted.elements)
         document.elements.insert(document.elements.begin() + fileIndex++, std::move(e));
@@ -155,8 +147,7 @@ LdEditResult pasteRange(LadderDocument &document, const LdCursor &cursor, Ladder
         const quint64 id = header(e).localId;
         return id == source.leftRail || id == source.rightRail;
     });
-    std::unordered_map<quint64, quint64> map;
-    renumber(pasted.elements, [&] { return document.allocateId(); }, map);
+    const std::unordered_map<quint64, quint64> map = renumberInto(document, pasted.elements);
     RungNode nodes = source.rung;
     renumberNode(nodes, map);
     int fileIndex = fileIndexAfter(document, cursor.network);

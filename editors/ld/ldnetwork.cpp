@@ -26,9 +26,7 @@ int LadderDocument::indexOf(quint64 localId) const
 
 quint64 LadderDocument::allocateId()
 {
-    for (const Element &e : elements)
-        idFloor = std::max(idFloor, header(e).localId);
-    return ++idFloor;
+    return ++idFloor; // reindex() keeps the floor at or above every id the document holds
 }
 
 quint64 LadderDocument::add(Element element, int index)
@@ -45,8 +43,6 @@ quint64 LadderDocument::add(Element element, int index)
 
 void LadderDocument::remove(const std::vector<quint64> &localIds)
 {
-    for (const Element &e : elements)
-        idFloor = std::max(idFloor, header(e).localId);
     std::erase_if(elements, [&](const Element &e) { return std::ranges::find(localIds, header(e).localId) != localIds.end(); });
     // Wires from the removed elements go with them.
     for (Element &e : elements) {
@@ -80,8 +76,10 @@ void LadderDocument::reindex()
 {
     m_index.clear();
     m_index.reserve(elements.size());
-    for (std::size_t i = 0; i < elements.size(); ++i)
+    for (std::size_t i = 0; i < elements.size(); ++i) {
         m_index.emplace(header(elements[i]).localId, i);
+        idFloor = std::max(idFloor, header(elements[i]).localId);
+    }
 }
 
 RungRole rungRole(const Element &element)

@@ -61,7 +61,7 @@ struct RungPins {
 struct LadderDocument {
     std::vector<model::Element> elements;
     std::vector<LdNetwork> networks;
-    // Never below the largest localId this document has held, so an edit that removes an element
+    // Never below the largest localId this document has held (reindex() raises it), so an edit that removes an element
     // and adds another does not hand out the removed one's id (undo relies on ids being distinct).
     quint64 idFloor = 0;
 

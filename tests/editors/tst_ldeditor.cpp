@@ -120,17 +120,6 @@ private:
         if (!errors.isEmpty())
             m_problems << what + QStringLiteral(": ") + errors;
         m_after.push_back(m_model.project());
-        if (qEnvironmentVariableIsSet("IEC_DUMP")) {
-            const LdCursor c = m_editor->cursor();
-            QStringList networks;
-            for (const LdNetwork &n : m_editor->document().networks) {
-                QStringList ids;
-                for (quint64 id : n.members)
-                    ids << QString::number(id);
-                networks << ids.join(QLatin1Char(' '));
-            }
-            qInfo().noquote() << what << m_editor->lastMessage() << "cursor" << int(c.kind) << c.network << c.element() << "|" << networks.join(QStringLiteral(" | "));
-        }
     }
 
     bool trigger(const char *id)
@@ -233,8 +222,6 @@ private Q_SLOTS:
         QCOMPARE(m_editor->document().networks.size(), std::size_t(5));
         // Reloaded from the file, the model is the same.
         const QByteArray bytes = saved(m_model.project());
-        if (qEnvironmentVariableIsSet("IEC_DUMP"))
-            qInfo().noquote() << bytes;
         model::plcopen::ReadResult reread = model::plcopen::readProject(bytes);
         QVERIFY(reread.ok);
         QCOMPARE(saved(reread.project), bytes);
