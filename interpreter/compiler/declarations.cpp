@@ -579,7 +579,9 @@ void Codegen::writeInitial(std::uint32_t offset, const Type *type, const Initial
     }
     case TypeKind::Pointer:
     case TypeKind::Reference:
-        // Addresses are known when the program runs: a pointer starts at 0, a reference unset.
+    case TypeKind::Interface:
+        // Addresses are known when the program runs: a pointer starts at 0, a reference unset,
+        // an interface variable without an instance.
         if (init) {
             const auto value = init->kind == Initializer::Kind::Expression ? evalConst(*init->value, false) : std::nullopt;
             if (value && value->constant.kind == ConstValue::Kind::Int && value->constant.i == 0)
@@ -734,6 +736,8 @@ std::optional<ConstValue> Codegen::literalValue(const Expr &expr, const Type **t
         *type = prefixType(Elem::LReal);
         v.kind = ConstValue::Kind::Real;
         v.r = negated ? -*value : *value;
+        if ((*type)->elem == Elem::Real) // REAL#0.1 is the float nearest 0.1, folded or not
+            v.r = static_cast<float>(v.r);
         return v;
     }
     case TokenKind::TimeLiteral: {

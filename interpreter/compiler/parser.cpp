@@ -173,7 +173,7 @@ private:
         return (isIlOperator(word) && !inList(word, kStOperatorWords)) || inList(word, kSoftKeywords);
     }
 
-    // CODESYS pragmas: {warning 'text'} is shown as a warning; attributes and the other pragmas
+    // CODESYS pragmas: {warning 'text'} is shown as a warning, {error 'text'} as an error; attributes and the other pragmas
     // CODESYS writes are kept in the text and have no effect; anything else is ignored with a note.
     void pragma(const Token &t)
     {
@@ -186,8 +186,11 @@ private:
         const SourceLocation at = locationOf(t.offset);
         if (body.startsWith(QLatin1String("__")) || body.contains(QLatin1String("data__")))
             return; // Beremiz's inline C (its standard blocks read the clock so): nothing to do here
+        const QString message = body.section(QLatin1Char(' '), 1).trimmed().remove(QLatin1Char('\''));
         if (word == QLatin1String("warning")) {
-            m_diagnostics.warning(m_pou, at, body.section(QLatin1Char(' '), 1).trimmed().remove(QLatin1Char('\'')));
+            m_diagnostics.warning(m_pou, at, message);
+        } else if (word == QLatin1String("error")) {
+            m_diagnostics.error(m_pou, at, message);
         } else if (!known.contains(word)) {
             m_diagnostics.warning(m_pou, at, QCoreApplication::translate("iec::interp::Compiler", "The pragma {%1} means nothing to IEC Studio; it is ignored.").arg(body.left(40)));
         }

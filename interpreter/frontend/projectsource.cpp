@@ -99,6 +99,16 @@ ast::Pou declarationOf(const model::plcopen::CodesysMember &m, const QString &ow
     return result;
 }
 
+ast::Method::Role roleOf(const model::plcopen::CodesysMember &m)
+{
+    switch (m.kind) {
+    case model::plcopen::CodesysMember::Kind::Getter: return ast::Method::Role::Getter;
+    case model::plcopen::CodesysMember::Kind::Setter: return ast::Method::Role::Setter;
+    case model::plcopen::CodesysMember::Kind::Method: break;
+    }
+    return ast::Method::Role::Method;
+}
+
 // CODESYS's methods, properties, EXTENDS and IMPLEMENTS of a block, from its addData.
 void addCodesysClass(const model::Pou &pou, ast::Pou &result, Diagnostics &diagnostics)
 {
@@ -108,9 +118,7 @@ void addCodesysClass(const model::Pou &pou, ast::Pou &result, Diagnostics &diagn
     for (const model::plcopen::CodesysMember &m : oop.members) {
         ast::Method method;
         method.name = m.name;
-        method.role = m.kind == model::plcopen::CodesysMember::Kind::Getter ? ast::Method::Role::Getter
-            : m.kind == model::plcopen::CodesysMember::Kind::Setter         ? ast::Method::Role::Setter
-                                                                              : ast::Method::Role::Method;
+        method.role = roleOf(m);
         method.access = m.qualifiers.contains(QLatin1String("PRIVATE")) ? ast::Access::Private
             : m.qualifiers.contains(QLatin1String("PROTECTED"))          ? ast::Access::Protected
             : m.qualifiers.contains(QLatin1String("INTERNAL"))           ? ast::Access::Internal
@@ -197,9 +205,7 @@ ast::CompilationUnit parseProjectText(const model::Project &project, Diagnostics
         for (const model::plcopen::CodesysMember &m : itf.definition.members) {
             ast::Method prototype;
             prototype.name = m.name;
-            prototype.role = m.kind == model::plcopen::CodesysMember::Kind::Getter ? ast::Method::Role::Getter
-                : m.kind == model::plcopen::CodesysMember::Kind::Setter         ? ast::Method::Role::Setter
-                                                                                  : ast::Method::Role::Method;
+            prototype.role = roleOf(m);
             prototype.hasBody = false;
             ast::Pou declared = declarationOf(m, itf.name, diagnostics);
             prototype.sections = std::move(declared.sections);

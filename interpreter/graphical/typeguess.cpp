@@ -120,7 +120,8 @@ std::optional<ast::TypeSpec> byStandardRule(const model::Block &block, const std
         return firstKnown(inputs, 0);
     if (name.endsWith(QLatin1String("_TIME")) && (name.startsWith(QLatin1String("ADD")) || name.startsWith(QLatin1String("SUB"))))
         return inputs.empty() ? std::nullopt : inputs.front().type;
-    // The difference of two dates or times of day is a TIME (IEC 61131-3 table 30).
+    // The difference of two dates or times of day is a TIME (IEC 61131-3 table 30); a date is only
+    // ever subtracted from a date, so a date as IN2 is enough to know it (IN1 may be a connector).
     const auto isDate = [&](size_t i) {
         static const QSet<QString> dates {QStringLiteral("DT"), QStringLiteral("DATE_AND_TIME"), QStringLiteral("TOD"),
             QStringLiteral("TIME_OF_DAY"), QStringLiteral("DATE"), QStringLiteral("D")};
@@ -128,7 +129,7 @@ std::optional<ast::TypeSpec> byStandardRule(const model::Block &block, const std
             && dates.contains(inputs[i].type->name.toUpper());
     };
     if (name == QLatin1String("SUB_DT_DT") || name == QLatin1String("SUB_TOD_TOD") || name == QLatin1String("SUB_DATE_DATE")
-        || (name == QLatin1String("SUB") && isDate(0) && isDate(1)))
+        || (name == QLatin1String("SUB") && isDate(1)))
         return namedType(QStringLiteral("TIME"));
     static const QSet<QString> sameAsInputs {QStringLiteral("ADD"), QStringLiteral("MUL"), QStringLiteral("SUB"),
         QStringLiteral("DIV"), QStringLiteral("MOD"), QStringLiteral("AND"), QStringLiteral("OR"), QStringLiteral("XOR"),

@@ -680,8 +680,11 @@ private:
             text += QStringLiteral("%1 := FALSE; %2 := FALSE; %3 := FALSE; %4 := FALSE; %5 := FALSE; %6 := FALSE;\n")
                         .arg(hidden("a", j, "q"), hidden("a", j, "qm"), hidden("a", j, "sff"), hidden("a", j, "sdff"),
                             hidden("a", j, "dsff"), hidden("a", j, "slff"));
-            if (!m_pouActions.contains(key(m_actions[j])) && !m_actions[j].startsWith(QLatin1String("__sfc_inline")))
-                text += QStringLiteral("%1 := FALSE;\n").arg(m_actions[j]);
+            if (!m_pouActions.contains(key(m_actions[j])) && !m_actions[j].startsWith(QLatin1String("__sfc_inline"))) {
+                const QString type = m_declared.value(key(m_actions[j]));
+                const bool boolean = type.isEmpty() || type == QLatin1String("BOOL"); // else a number used as an action
+                text += QStringLiteral("%1 := %2;\n").arg(m_actions[j], boolean ? QStringLiteral("FALSE") : QStringLiteral("0"));
+            }
         }
         return text;
     }

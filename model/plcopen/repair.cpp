@@ -21,9 +21,13 @@ quint64 largestLocalId(pugi::xml_node root)
     return largest;
 }
 
-void repairAction(pugi::xml_node action, quint64 &nextId, ReadContext &context)
+// nextId: 0 until a fresh localId is first needed (most files need none, so the whole document
+// is not searched for the largest one).
+void repairAction(pugi::xml_node action, pugi::xml_node root, quint64 &nextId, ReadContext &context)
 {
     if (!action.attribute("localId")) {
+        if (nextId == 0)
+            nextId = largestLocalId(root);
         const quint64 id = ++nextId;
         action.append_attribute("localId").set_value(std::to_string(id).c_str());
         context.report(Diagnostic::Severity::Warning, action,
@@ -71,12 +75,12 @@ void repairDateTime(pugi::xml_node header, ReadContext &context)
 
 void repairOldForms(pugi::xml_node root, ReadContext &context)
 {
-    quint64 nextId = largestLocalId(root);
+    quint64 nextId = 0;
     walkDescendants(root, [&](pugi::xml_node node) {
         if (node.type() != pugi::node_element)
             return false;
         if (hasLocalName(node, "action") && hasLocalName(node.parent(), "actionBlock"))
-            repairAction(node, nextId, context);
+            repairAction(node, root, nextId, context);
         else if (hasLocalName(node, "pouInstance"))
             repairPouInstance(node, context);
         else if (hasLocalName(node, "fileHeader"))

@@ -6,7 +6,7 @@
 //   - ST with the inputs as VAR CONSTANT (the compiler folds what it can),
 //   - IL with the inputs as variables (jumps over code, labels whose code reads the current
 //     result, brackets, functions with the current result as first argument).
-// "Well-defined": no integer division by zero (divisors are x MOD 7 + 8), no loop without an end,
+// "Well-defined": no integer division by zero (divisors are x MOD m + 8, m in 2..8), no loop without an end,
 // untyped literals only where a typed operand or the target gives them their type and where they
 // fit it. Everything else, including wraparound, REAL to integer conversions and NaN, is what
 // the three forms must agree on.
@@ -198,11 +198,12 @@ private:
                           leaf(QString(), QString::number(count), true));
     }
 
-    // A divisor that is never zero: x MOD 7 + 8 lies in 2..14.
+    // A divisor that is never zero: x MOD m + 8 with m in 2..8 lies in 1..15.
     NodePtr divisor(const QString &type, int depth)
     {
         return binaryNode(type, QStringLiteral("+"), QStringLiteral("ADD"),
-                          binaryNode(type, QStringLiteral("MOD"), QStringLiteral("MOD"), expression(type, depth + 1), untypedLiteral(type, true)),
+                          binaryNode(type, QStringLiteral("MOD"), QStringLiteral("MOD"), expression(type, depth + 1),
+                                     leaf(QString(), QString::number(2 + pick(7)), true)),
                           leaf(QString(), QStringLiteral("8"), true));
     }
 

@@ -81,6 +81,12 @@ void TestDialect::conversionWarnings_data()
     QTest::newRow("widening is silent") << "i : INT; d : DINT; r : LREAL;" << "d := i; r := d;" << "";
     QTest::newRow("trunc is silent") << "i : INT; r : REAL;" << "i := TRUNC(r);" << "";
     QTest::newRow("literals are silent") << "b : BYTE; s : SINT;" << "b := 255; s := -128;" << "";
+    // Pragmas: the attributes CODESYS writes are kept without a word, {warning} is shown, an
+    // unknown one gets a note.
+    QTest::newRow("attribute pragma") << "i : INT;" << "{attribute 'qualified_only'}\ni := 1;" << "";
+    QTest::newRow("warning pragma") << "i : INT;" << "{warning 'calibrate first'}\ni := 1;" << "3:1: calibrate first";
+    QTest::newRow("unknown pragma") << "i : INT;" << "{frobnicate 7}\ni := 1;"
+                                    << "3:1: The pragma {frobnicate 7} means nothing to IEC Studio; it is ignored.";
 }
 
 void TestDialect::conversionWarnings()
