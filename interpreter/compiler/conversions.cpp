@@ -347,7 +347,11 @@ Value Codegen::convertExplicit(Value v, const Type *to, SourceLocation at, bool 
     if (v.kind == Value::Kind::Constant) {
         ConstValue c = v.constant;
         if (isReal(to)) {
-            const double r = asReal(c);
+            // A ULINT or LWORD above 2^63 is held as a negative int64 once folded (a wrapped
+            // product): its type, not the flag of the literal it came from, says it is unsigned.
+            const bool unsigned64 = from->kind == TypeKind::Elementary && from->size == 8 && info(from->elem).isUnsigned
+                && c.kind == ConstValue::Kind::Int;
+            const double r = unsigned64 ? static_cast<double>(static_cast<std::uint64_t>(c.i)) : asReal(c);
             c = {};
             c.kind = ConstValue::Kind::Real;
             c.r = to->elem == Elem::Real ? static_cast<float>(r) : r;

@@ -69,6 +69,8 @@ Value mathFunction(Codegen &g, const MathEntry &m, Value v, SourceLocation at)
         ConstValue c;
         c.kind = ConstValue::Kind::Real;
         c.r = m.fold(v.constant.kind == ConstValue::Kind::Real ? v.constant.r : double(v.constant.i));
+        if (type->elem == Elem::Real) // stored as a REAL, as the VM stores it, before it is used further
+            c.r = static_cast<float>(c.r);
         return g.constantValue(type, c, v.untyped);
     }
     const std::uint32_t out = g.temp(type);

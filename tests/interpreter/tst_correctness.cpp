@@ -23,6 +23,8 @@ private Q_SLOTS:
     void caseWithConstantSelector() { check(); }
     void literalsTypedByTheirUse_data();
     void literalsTypedByTheirUse() { check(); }
+    void foldedLikeAtRunTime_data();
+    void foldedLikeAtRunTime() { check(); }
 };
 
 void TestCorrectness::ilJumpKeepsCurrentResult_data()
@@ -82,6 +84,22 @@ void TestCorrectness::literalsTypedByTheirUse_data()
     expr("mux of literals by its destination", "s : SINT; i : INT := 1;", "s := MUX(i, 10, -99);", "s=-99");
     expr("selection of literals in arithmetic", "i : INT := 300; b : BOOL := TRUE; r : INT;", "r := SEL(b, 1, 2) + i;", "r=302");
     expr("not of a literal compared with a word", "w : WORD := 16#FFFE; c : BOOL;", "c := w = NOT 16#0001;", "c=TRUE");
+}
+
+// Found by tst_differential: constants folded by the compiler give what the running program
+// computes. (2^63 - 1) * 2 wraps to 2^64 - 2 as a ULINT, a large positive LREAL; folded, it was
+// taken for -2.
+void TestCorrectness::foldedLikeAtRunTime_data()
+{
+    columns();
+    expr("wrapped ulint to lreal", "b : BOOL; c : BOOL; u : ULINT := 2;",
+         "b := ULINT_TO_LREAL(ULINT#9223372036854775807 * ULINT#2) > 0.0; c := ULINT_TO_LREAL(ULINT#9223372036854775807 * u) > 0.0;",
+         "b=TRUE; c=TRUE");
+    // REAL#0.1 is the float nearest 0.1, folded or not: SIN of it as the VM computes it.
+    expr("sin of a real constant", "a : REAL; b : REAL; x : REAL := 0.1; e : BOOL;", "a := SIN(REAL#0.1); b := SIN(x); e := a = b;", "a=0.09983342; b=0.09983342; e=TRUE");
+    // COS of a REAL is a REAL before it is divided: folded, it was divided with double precision.
+    expr("cos of a real constant divided", "a : REAL; b : REAL; x : REAL := 1.5; y : REAL := 1.2247449; e : BOOL;",
+         "a := COS(REAL#1.5) / REAL#1.2247449; b := COS(x) / y; e := a = b;", "a=0.057756677; b=0.057756677; e=TRUE");
 }
 
 QTEST_GUILESS_MAIN(TestCorrectness)
