@@ -90,6 +90,13 @@ void reportFault(const QString &file, const interp::RuntimeFault &fault, QTextSt
         << fault.message << "\n";
 }
 
+// What the program logged (Beremiz LOGGER): "FILE: INFO: text (cycle 3)" on stderr.
+void reportLog(const QString &file, interp::Runtime &runtime, QTextStream &err)
+{
+    for (const interp::Runtime::LogEntry &entry : runtime.takeLog())
+        err << file << ": " << entry.toString() << "\n";
+}
+
 // Runs the cycles; the exit status.
 int runCycles(const RunOptions &options, interp::Runtime &runtime, Trace *trace, Io io)
 {
@@ -98,7 +105,9 @@ int runCycles(const RunOptions &options, interp::Runtime &runtime, Trace *trace,
     for (int cycle = 1; cycle <= options.cycles; ++cycle) {
         if (!applyWrites(options, cycle, runtime, io))
             return ExitUsage;
-        if (!runtime.runCycle()) {
+        const bool ran = runtime.runCycle();
+        reportLog(options.file, runtime, io.err);
+        if (!ran) {
             reportFault(options.file, *runtime.fault(), io.err);
             return ExitFailed;
         }

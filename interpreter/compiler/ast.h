@@ -28,6 +28,7 @@ enum class ExprKind {
     Unary,         // text = "-", "NOT", "+"
     Binary,        // text = operator: "**" "*" "/" "MOD" "+" "-" "<" ... "=" "<>" "AND" "XOR" "OR"
     Call,          // text = function name; callArgs
+    Deref,         // operands[0]^ (a pointer or REF_TO dereferenced)
     Error,         // a place where parsing failed; already diagnosed
 };
 
@@ -61,14 +62,14 @@ struct Range {
 };
 
 struct TypeSpec {
-    enum class Kind { Named, String, Array, Subrange, Enum, Struct };
+    enum class Kind { Named, String, Array, Subrange, Enum, Struct, Pointer, Reference };
     Kind kind = Kind::Named;
     SourceLocation location;
     QString name;                       // Named: INT, TON, MyType; Subrange/Enum: base type (may be empty)
     bool wide = false;                  // String: WSTRING
     std::optional<Expr> length;         // String: [n]
     std::vector<Range> ranges;          // Array dimensions; Subrange: one
-    std::vector<TypeSpec> element;      // Array: the element type (one)
+    std::vector<TypeSpec> element;      // Array: the element type (one); Pointer, Reference: the type pointed to
     QStringList enumValues;             // Enum
     std::vector<std::optional<Expr>> enumExplicit; // Enum: := value per item
     std::vector<VarDecl> members;       // Struct
@@ -117,7 +118,9 @@ struct TypeDecl {
 
 // ---- statements ------------------------------------------------------------------------------
 
-enum class StmtKind { Assign, Call, If, Case, For, While, Repeat, Exit, Continue, Return, Empty };
+// Jump and Label: JMP name; and name: in ST (CODESYS), target.text is the label.
+// RefAssign: target REF= value (CODESYS REFERENCE TO).
+enum class StmtKind { Assign, Call, If, Case, For, While, Repeat, Exit, Continue, Return, Empty, Jump, Label, RefAssign };
 
 struct Stmt;
 
@@ -214,7 +217,26 @@ struct SfcAction {
     Body body;
 };
 
-enum class PouKind { Program, FunctionBlock, Function };
+// Interface: an INTERFACE (edition 3, CODESYS): methods and properties without bodies.
+enum class PouKind { Program, FunctionBlock, Function, Interface };
+
+enum class Access { Public, Private, Protected, Internal };
+
+// A METHOD of a function block or interface; a PROPERTY is a getter (a method named like the
+// property returning its value) and a setter (a method whose VAR_INPUT is named like the property).
+struct Method {
+    enum class Role { Method, Getter, Setter };
+    Role role = Role::Method;
+    QString name;                 // the method, or the property
+    SourceLocation location;
+    Access access = Access::Public;
+    bool isAbstract = false;
+    bool isFinal = false;
+    bool hasBody = true;          // false: a prototype (interfaces, ABSTRACT)
+    std::optional<TypeSpec> returnType;
+    std::vector<VarSection> sections;
+    Body body;
+};
 
 struct Pou {
     PouKind kind = PouKind::Program;
@@ -224,6 +246,12 @@ struct Pou {
     std::vector<VarSection> sections;
     Body body;
     std::vector<SfcAction> actions;     // ACTION ... END_ACTION inside the POU (CODESYS style)
+    // Object orientation (IEC 61131-3 ed.3 as CODESYS writes it).
+    bool isAbstract = false;
+    bool isFinal = false;
+    QString extends;                    // EXTENDS Base (function blocks)
+    QStringList implements;             // IMPLEMENTS I1, I2 (function blocks); EXTENDS of an interface
+    std::vector<Method> methods;        // methods and property accessors
 };
 
 struct TaskDecl {

@@ -56,6 +56,8 @@ QString dump(const Expr &e)
             + dump(e.operands[1]) + QLatin1Char(')');
     case ExprKind::Call:
         return dump(e.operands[0]) + QLatin1Char('(') + dumpArgs(e.callArgs) + QLatin1Char(')');
+    case ExprKind::Deref:
+        return dump(e.operands[0]) + QLatin1Char('^');
     case ExprKind::Error:
         return QStringLiteral("<error>");
     }
@@ -102,6 +104,9 @@ QString dump(const Stmt &s)
     case StmtKind::Continue: return QStringLiteral("(continue)");
     case StmtKind::Return: return QStringLiteral("(return)");
     case StmtKind::Empty: return QStringLiteral("(empty)");
+    case StmtKind::Jump: return QStringLiteral("(jmp ") + s.target.text + QLatin1Char(')');
+    case StmtKind::Label: return QStringLiteral("(label ") + s.target.text + QLatin1Char(')');
+    case StmtKind::RefAssign: return QStringLiteral("(ref= ") + dump(s.target) + QLatin1Char(' ') + dump(s.value) + QLatin1Char(')');
     }
     return {};
 }
@@ -154,6 +159,10 @@ QString dump(const TypeSpec &t)
         }
         return QLatin1Char('(') + values.join(QLatin1Char(',')) + QLatin1Char(')') + t.name;
     }
+    case TypeSpec::Kind::Pointer:
+        return QStringLiteral("POINTER TO ") + dump(t.element.front());
+    case TypeSpec::Kind::Reference:
+        return QStringLiteral("REFERENCE TO ") + dump(t.element.front());
     case TypeSpec::Kind::Struct: {
         QStringList members;
         for (const VarDecl &m : t.members)

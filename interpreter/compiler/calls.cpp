@@ -99,6 +99,11 @@ bool Codegen::sameInOutType(const Type *parameter, const Type *variable) const
         return sameStoredType(parameter->element, variable->element);
     case TypeKind::FunctionBlock:
         return parameter->pou == variable->pou;
+    case TypeKind::Pointer:
+    case TypeKind::Reference:
+        return true; // addresses: any pointer stands for any other (CODESYS)
+    case TypeKind::Interface:
+        return parameter->pou == variable->pou;
     case TypeKind::Struct:
         if (parameter->members.size() != variable->members.size())
             return false;
@@ -177,10 +182,28 @@ Value Codegen::compileCall(const Expr &call, bool asStatement, const Place *dest
               QCoreApplication::translate("iec::interp::Compiler", "write each argument as name := value"));
         return {};
     }
+    if (callee.kind == ExprKind::Name && !m_pouIndex.contains(key(callee.text))) {
+        if (auto intrinsic = pointerFunction(callee.text, call.callArgs, call.location))
+            return *intrinsic;
+    }
+    if (auto method = methodCall(callee, call.callArgs, call.location, asStatement, destination))
+        return *method;
+    // SUPER^(): the body of the block this one extends, on the same instance.
+    if (callee.kind == ExprKind::Deref && callee.operands.front().kind == ExprKind::Name
+        && callee.operands.front().text.compare(QLatin1String("SUPER"), Qt::CaseInsensitive) == 0 && !unusableVar(QStringLiteral("SUPER"))) {
+        const int base = baseOf(currentClass());
+        if (base < 0 || m_pou->methodOf >= 0) {
+            error(call.location, QCoreApplication::translate("iec::interp::Compiler", "SUPER^() calls the body of the block this one extends; it is only known in such a block's body."));
+            return {};
+        }
+        noteCall(base, call.location);
+        instr(op::CallFb, kInstanceRelative, 0, 0, 0, static_cast<std::uint16_t>(base));
+        return {};
+    }
     if (callAction(callee, call.callArgs, call.location, asStatement))
         return {};
     std::optional<Place> instance;
-    if (callee.kind == ExprKind::Member || callee.kind == ExprKind::Index) {
+    if (callee.kind == ExprKind::Member || callee.kind == ExprKind::Index || callee.kind == ExprKind::Deref) {
         instance = resolvePlace(callee);
         if (instance->kind == Place::Kind::Invalid)
             return {};
@@ -242,7 +265,8 @@ Value Codegen::callNamed(const QString &name, const Place *callee, std::vector<A
     if (callee) {
         if (callee->kind == Place::Kind::Invalid)
             return {};
-        if (callee->type->kind != TypeKind::FunctionBlock) {
+        const bool program = callee->fbPou >= 0 && m_pous[size_t(callee->fbPou)].kind == PouKind::Program; // CAL PRG1
+        if (callee->type->kind != TypeKind::FunctionBlock && !program) {
             error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 is a %2, not a function block; it cannot be called.").arg(callee->text, typeName(callee->type)));
             return {};
         }
@@ -258,8 +282,20 @@ Value Codegen::callNamed(const QString &name, const Place *callee, std::vector<A
         PouInfo &pou = m_pous[size_t(index)];
         if (pou.kind == PouKind::Function)
             return callUserFunction(pou, args, at, destination);
-        error(at, pou.kind == PouKind::Program ? QCoreApplication::translate("iec::interp::Compiler", "A program cannot be called from another POU; it runs in a task.")
-                                               : QCoreApplication::translate("iec::interp::Compiler", "%1 is a function block type; declare an instance (e.g. inst : %1;) and call that.").arg(name));
+        if (pou.kind == PouKind::Program) {
+            // CODESYS: PRG1(); runs the program's one instance, like a function block's.
+            const Place instance = programPlace(pou, name, at);
+            if (instance.kind == Place::Kind::Invalid)
+                return {};
+            if (!asStatement) {
+                error(at, QCoreApplication::translate("iec::interp::Compiler", "A program call is a statement of its own."),
+                      QCoreApplication::translate("iec::interp::Compiler", "call %1(...); then read its outputs, e.g. %1.Out").arg(name));
+                return {};
+            }
+            callFunctionBlock(instance, args, at);
+            return {};
+        }
+        error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 is a function block type; declare an instance (e.g. inst : %1;) and call that.").arg(name));
         return {};
     }
     // Standard functions take their arguments as values.
@@ -277,6 +313,10 @@ Value Codegen::callNamed(const QString &name, const Place *callee, std::vector<A
     }
     if (auto result = standardFunction(name.toUpper(), values, names, at, destination))
         return *result;
+    if (const QString library = vendorLibraryOf(name.toUpper()); !library.isEmpty()) {
+        missingVendorLibrary(name, library, at);
+        return {};
+    }
     error(at, QCoreApplication::translate("iec::interp::Compiler", "Unknown function '%1'.").arg(name));
     return {};
 }
@@ -387,7 +427,25 @@ void Codegen::callFunctionBlock(const Place &instance, const std::vector<Argumen
     }
 }
 
-Value Codegen::callUserFunction(PouInfo &fn, const std::vector<Argument> &args, SourceLocation at, const Place *destination)
+// The one instance of a PROGRAM, for calls (PRG1();) and its variables (PRG1.Out).
+Place Codegen::programPlace(const PouInfo &pou, const QString &name, SourceLocation at)
+{
+    if (pou.programInstances != 1 || !pou.frame) {
+        error(at, QCoreApplication::translate("iec::interp::Compiler", "The program %1 runs in %2 instances; its name alone does not say which.").arg(name).arg(pou.programInstances),
+              QCoreApplication::translate("iec::interp::Compiler", "give each instance its own program, or reach the values through a global variable"));
+        return {};
+    }
+    Place p;
+    p.kind = Place::Kind::Direct;
+    p.type = pou.frame;
+    p.operand = pou.programBase;
+    p.text = name;
+    p.fbPou = pou.index;
+    return p;
+}
+
+Value Codegen::callUserFunction(PouInfo &fn, const std::vector<Argument> &args, SourceLocation at, const Place *destination,
+                                const Place *instance)
 {
     if (!layoutPou(fn))
         return {};
@@ -420,7 +478,7 @@ Value Codegen::callUserFunction(PouInfo &fn, const std::vector<Argument> &args, 
         } else {
             m = fn.frame->member(a.name);
             if (!m || (m->kind != VarKind::Input && m->kind != VarKind::InOut && m->kind != VarKind::Output)
-                || m->name.compare(fn.name, Qt::CaseInsensitive) == 0) {
+                || (fn.result && m->name.compare(fn.ast->name, Qt::CaseInsensitive) == 0)) {
                 error(a.location, QCoreApplication::translate("iec::interp::Compiler", "%1 has no parameter called %2.").arg(fn.name, a.name));
                 continue;
             }
@@ -458,7 +516,10 @@ Value Codegen::callUserFunction(PouInfo &fn, const std::vector<Argument> &args, 
         }
         emitMove(fn.frameBase + m->offset, fn.templateOffset + m->offset, m->type);
     }
-    instr(op::CallFn, 0, 0, 0, 0, static_cast<std::uint16_t>(fn.index));
+    if (instance) // a method runs on its instance
+        instr(instance->kind == Place::Kind::Direct ? op::CallFb : op::CallFbPtr, instance->operand, 0, 0, 0, static_cast<std::uint16_t>(fn.index));
+    else
+        instr(op::CallFn, 0, 0, 0, 0, static_cast<std::uint16_t>(fn.index));
     checkInOutAfter(inOutChecks);
     for (const auto &[m, a] : outputs) {
         Value value = operandValue(fn.frameBase + m->offset, m->type);
@@ -469,7 +530,7 @@ Value Codegen::callUserFunction(PouInfo &fn, const std::vector<Argument> &args, 
     }
     if (!fn.result)
         return {};
-    const Member *result = fn.frame->member(fn.name);
+    const Member *result = fn.frame->member(fn.ast->name); // a method's result is named like the method
     // The result is copied out at once: a second call of the same function reuses its variables.
     const std::uint32_t out = destination && destination->kind == Place::Kind::Direct && destination->type == fn.result
         ? destination->operand

@@ -14,6 +14,8 @@
 #include <QSet>
 #include <QString>
 
+#include <deque>
+#include <functional>
 #include <map>
 #include <optional>
 #include <vector>
@@ -43,6 +45,16 @@ struct Value {
     // An integer or real literal without a type prefix: it takes the type its use needs (type is
     // then LINT or LREAL, standing for ANY_INT / ANY_REAL).
     bool untyped = false;
+    // An untyped constant standing for a bit pattern (NOT 16#0159, SHL(507, 9)): in a narrower
+    // type it is cut to that type's width instead of refused.
+    bool bitPattern = false;
+    // An untyped Operand: computed from literals alone (SEL(b, 0, 8) with b known only at run
+    // time), held as LINT or LREAL and converted to the type its use needs. When every literal it
+    // may be is known, their smallest and largest value.
+    std::optional<std::pair<std::int64_t, std::int64_t>> literalRange;
+    // A function block instance reached through an address (an array element, p^): operand holds
+    // that address; the instance is not copied (an interface is made from it).
+    bool instanceAddress = false;
     std::uint32_t operand = 0;
     ConstValue constant;
 
@@ -77,7 +89,26 @@ struct PouInfo {
     bool layoutInProgress = false;
     bool laidOut = false;
     bool fromLibrary = false;
+    // A PROGRAM called or read from other POUs (PRG1(); PRG1.Out, CODESYS): its one instance in
+    // the image (0 when it has several instances, which makes the name ambiguous).
+    std::uint32_t programBase = 0;
+    int programInstances = 0;
+    // Object orientation (oop.cpp): a method or property accessor is a Function owned by a
+    // function block (methodOf); a block's methods by "NAME", "GET:NAME", "SET:NAME".
+    int methodOf = -1;
+    const ast::Method *method = nullptr;
+    bool hasClassId = false; // the instance starts with __CLASS (inheritance, interfaces)
+    QHash<QString, int> methods;
 };
+
+// A %-address of the process image: %QX4.1 is area Q, byte 4, bit 1; %QW2 is bytes 4 and 5.
+struct ImageAddress {
+    char area = 'I';
+    std::uint32_t byte = 0;
+    int bit = -1;           // -1: not a bit address
+    std::uint32_t size = 1; // bytes (1 for a bit)
+};
+std::optional<ImageAddress> parseImageAddress(const QString &address);
 
 struct GlobalVar {
     const Type *type = nullptr;
@@ -85,6 +116,7 @@ struct GlobalVar {
     bool constant = false;
     std::optional<ConstValue> value; // CONSTANT with a constant initial value
     QString name;
+    std::optional<ImageAddress> located; // AT %QW2 (or %QW2 in code): lives in the process image
 };
 
 struct EnumValue {
@@ -113,11 +145,23 @@ public:
     std::optional<std::int64_t> evalConstInt(const ast::Expr &expr);
     std::optional<ConstValue> literalValue(const ast::Expr &expr, const Type **type, bool *untyped);
     void locate(const QString &address, std::uint32_t offset, const Type *type, SourceLocation at);
+    // ---- vendorlibraries.cpp ----
+    void missingVendorLibrary(const QString &block, const QString &library, SourceLocation at);
+    void checkVendorLibrariesReachable();
+    QHash<int, QString> m_needsVendorLibrary; // POU index -> the library it needs
+    QSet<QString> m_reportedLibraries;
+    // ---- processimage.cpp ----
+    void reserveProcessImage(const std::vector<const ast::CompilationUnit *> &units);
+    Place imagePlace(const ImageAddress &address, const Type *type, const QString &text);
+    void initialiseImage(const ImageAddress &address, std::uint32_t slot, const Type *type);
     const GlobalVar *directAddressVar(const QString &address, SourceLocation at);
 
     // ---- expressions.cpp ----
     Value compileExpr(const ast::Expr &expr, const Place *destination = nullptr);
-    Place resolvePlace(const ast::Expr &expr, bool reportUnknown = true);
+    // A REFERENCE TO variable stands for what it refers to unless derefReferences is false
+    // (REF=, __ISVALIDREF).
+    Place resolvePlace(const ast::Expr &expr, bool reportUnknown = true, bool derefReferences = true);
+    Place resolvePlaceRaw(const ast::Expr &expr, bool reportUnknown);
     // mayFuse: an element's address computed just before may be folded into the load (then the
     // place's address operand is never written; false when it is needed again).
     Value read(const Place &place, bool mayFuse = true);
@@ -126,14 +170,19 @@ public:
     // A value assigned to a subrange type: a constant is checked now, anything else at run time.
     bool checkSubrange(const Value &value, const Type *type, SourceLocation at);
     Value coerce(Value value, const Type *to, SourceLocation at, const QString &context = {});
+    bool warnImplicit(const Type *from, const Type *to, SourceLocation at);
+    Value coerceUntypedOperand(Value value, const Type *to, SourceLocation at, const std::function<Value()> &mismatch);
     Value convertExplicit(Value value, const Type *to, SourceLocation at, bool truncate = false);
     std::uint32_t materialize(const Value &value);
     std::uint32_t constantOperand(const Type *type, const ConstValue &value);
     std::uint32_t temp(const Type *type);
     void emitMove(std::uint32_t to, std::uint32_t from, const Type *type);
     Value binary(const QString &op, Value left, Value right, SourceLocation at, const Place *destination = nullptr);
+    Value binaryTyped(const QString &op, Value left, Value right, SourceLocation at, const Place *destination);
     Value unary(const QString &op, Value operand, SourceLocation at, const Place *destination = nullptr);
+    Value shortCircuit(const ast::Expr &expr);
     const Type *commonType(const Type *a, const Type *b) const;
+    const Type *integerCommonType(const Type *a, const Type *b) const;
     Value operandValue(std::uint32_t operand, const Type *type) const;
     Value constantValue(const Type *type, const ConstValue &value, bool untyped = false) const;
     const Type *boolType() const { return m_types->elementary(Elem::Bool); }
@@ -156,7 +205,10 @@ public:
     Value callNamed(const QString &name, const Place *callee, std::vector<Argument> args, SourceLocation at,
                     bool asStatement, const Place *destination);
     void callFunctionBlock(const Place &instance, const std::vector<Argument> &args, SourceLocation at);
-    Value callUserFunction(PouInfo &fn, const std::vector<Argument> &args, SourceLocation at, const Place *destination);
+    Place programPlace(const PouInfo &pou, const QString &name, SourceLocation at);
+    // A method is called on `instance` (CallFb); a plain function has none.
+    Value callUserFunction(PouInfo &fn, const std::vector<Argument> &args, SourceLocation at, const Place *destination,
+                           const Place *instance = nullptr);
     void noteCall(int callee, SourceLocation at);
     // VAR_IN_OUT passes the variable itself, so its type must be the parameter's (a subrange and
     // its base type count as one; their values are checked where they cross). Invalid after a
@@ -178,6 +230,37 @@ public:
     bool callAction(const ast::Expr &callee, const std::vector<ast::CallArg> &args, SourceLocation at, bool asStatement);
     std::optional<NativeBlock> nativeBlock(const Type *fbType) const;
 
+    // ---- pointers.cpp ----
+    Place checkedTarget(std::uint32_t address, const Type *type, const QString &text);
+    Place dereferenced(const Place &slot);
+    Place pointee(const ast::Expr &expr, bool reportUnknown);
+    Value addressOf(const ast::Expr &expr, const QString &function);
+    std::optional<Value> pointerFunction(const QString &name, const std::vector<ast::CallArg> &args, SourceLocation at);
+    void referenceAssignment(const ast::Stmt &s);
+    std::optional<Value> pointerArithmetic(const QString &op, Value left, Value right, SourceLocation at);
+    std::optional<Value> coercePointer(Value v, const Type *to, SourceLocation at);
+
+    // ---- oop.cpp ----
+    void registerMethods();
+    int baseOf(int pou) const;
+    int findMethod(int pou, const QString &name, ast::Method::Role role) const;
+    int findInterfaceMethod(int pou, const QString &name, ast::Method::Role role, int depth = 0) const;
+    bool isA(int pou, int of) const;
+    int currentClass() const;
+    bool mayCall(const PouInfo &method, SourceLocation at);
+    Place selfPointer(bool super, SourceLocation at);
+    Value dynamicCall(int cls, const QString &name, ast::Method::Role role, std::uint32_t address, const std::vector<Argument> &args,
+                      SourceLocation at, const Place *destination, bool statement);
+    std::optional<Value> methodCall(const ast::Expr &callee, const std::vector<ast::CallArg> &args, SourceLocation at, bool asStatement,
+                                    const Place *destination);
+    std::optional<Value> propertyRead(const ast::Expr &expr);
+    bool propertyWrite(const ast::Expr &target, const ast::Expr &value, SourceLocation at);
+    std::optional<Value> propertyAccess(const ast::Expr &expr, const Argument *assigned);
+    Place probeType(const ast::Expr &expr);
+    std::optional<Value> interfaceOf(const Value &v, const Type *to, SourceLocation at);
+    std::deque<ast::Pou> m_methodAsts; // methods as functions (PouInfo::ast points here)
+    bool m_superCall = false;          // the place just resolved was reached through SUPER
+
     // ---- stdfunctions.cpp ----
     // Standard functions and conversions; nullopt when `name` is none of them.
     std::optional<Value> standardFunction(const QString &name, std::vector<Value> args,
@@ -191,8 +274,13 @@ public:
     // A FOR loop whose counter cannot pass a constant end value (wraparound or subrange).
     void warnForLoopEnd(const ast::Stmt &s, const Place &counter, const Value &start, const ConstValue &end, const ConstValue &step, bool up);
 
+    QHash<QString, std::uint32_t> m_stLabels; // the ST body's labels (upper case) -> pc
+    std::vector<std::pair<std::uint32_t, const ast::Stmt *>> m_stJumps;
+    void resolveStJumps();
+
     // ---- il.cpp ----
     void compileIl(const std::vector<ast::IlInstruction> &list);
+    const Type *ilJoinType(const std::vector<Value> &arriving);
 
     // ---- emission helpers (compiler.cpp) ----
     std::uint32_t instr(std::uint16_t opcode, std::uint32_t a = 0, std::uint32_t b = 0, std::uint32_t c = 0,
@@ -269,6 +357,9 @@ public:
     QSet<QString> m_unusableVars;
     bool unusableVar(const QString &name) const;
 };
+
+// The vendor library a block of that (upper-case) name comes from; empty for none we know.
+QString vendorLibraryOf(const QString &upperName);
 
 // Upper-case key for case-insensitive IEC names.
 inline QString key(const QString &name)

@@ -251,8 +251,10 @@ void Codegen::beginBody(PouInfo &pou, int moduleIndex, SourceLocation at)
 
 void Codegen::endBody(const Body &body)
 {
-    if (body.language == Language::ST)
+    if (body.language == Language::ST) {
         compileStatements(body.statements);
+        resolveStJumps();
+    }
     else if (body.language == Language::IL)
         compileIl(body.il);
     instr(op::Ret);
@@ -278,12 +280,19 @@ void Codegen::compileActionBody(PouInfo &pou, const SfcAction &action, int modul
 std::shared_ptr<Module> Codegen::run(const std::vector<const CompilationUnit *> &units)
 {
     const CompilationUnit &library = standardLibrary();
+    const bool util = utilNamesUsed(units);
     for (const CompilationUnit *u : units)
         collectTypes(*u, false);
+    if (util)
+        collectTypes(utilLibrary(), true);
     for (const CompilationUnit *u : units)
         collectPous(*u, false);
     collectPous(library, true);
+    if (util)
+        collectPous(utilLibrary(), true);
+    registerMethods();
     allocate(8, 8); // offset 0 is never a variable
+    reserveProcessImage(units);
 
     for (PouInfo &p : m_pous)
         layoutPou(p);
@@ -419,12 +428,19 @@ std::shared_ptr<Module> Codegen::run(const std::vector<const CompilationUnit *> 
     // Programs without a task run every cycle in a task of their own (lowest priority).
     bool needsDefaultTask = false;
     for (const PlannedProgram &p : planned)
-        needsDefaultTask = needsDefaultTask || p.task < 0;
+        needsDefaultTask = needsDefaultTask || p.task == -1;
     if (needsDefaultTask) {
         TaskInfo task;
         task.name = QStringLiteral("DefaultTask");
         task.priority = 1000;
         m_module->tasks.push_back(task);
+    }
+    // Every other PROGRAM exists once too (CODESYS), so that other POUs may call it (PRG1();) and
+    // read its variables (PRG1.Out); no task runs it unless it is called.
+    for (const PouInfo &p : m_pous) {
+        const bool inTask = std::any_of(planned.begin(), planned.end(), [&](const PlannedProgram &pp) { return pp.pou == p.index; });
+        if (p.kind == PouKind::Program && !p.fromLibrary && p.frame && !inTask)
+            planned.push_back({p.name, p.index, -2, nullptr});
     }
     for (const PlannedProgram &p : planned) {
         PouInfo &pou = m_pous[size_t(p.pou)];
@@ -454,17 +470,23 @@ std::shared_ptr<Module> Codegen::run(const std::vector<const CompilationUnit *> 
         retain(instance.base, pou.frame, false);
         m_pouName = pou.name;
         for (const Member &m : pou.frame->members) {
-            if (!m.address.isEmpty())
-                locate(m.address, instance.base + m.offset, m.type, m.location);
+            if (m.address.isEmpty())
+                continue;
+            locate(m.address, instance.base + m.offset, m.type, m.location);
+            if (const auto address = parseImageAddress(m.address))
+                initialiseImage(*address, instance.base + m.offset, m.type);
         }
         m_module->symbols.push_back({instance.name, pou.frame, instance.base});
-        const int taskIndex = p.task >= 0 ? p.task : static_cast<int>(m_module->tasks.size()) - 1;
-        m_module->tasks[size_t(taskIndex)].programs.push_back(static_cast<int>(m_module->programs.size()));
+        pou.programBase = ++pou.programInstances == 1 ? instance.base : 0;
+        if (p.task != -2) {
+            const int taskIndex = p.task >= 0 ? p.task : static_cast<int>(m_module->tasks.size()) - 1;
+            m_module->tasks[size_t(taskIndex)].programs.push_back(static_cast<int>(m_module->programs.size()));
+        }
         m_module->programs.push_back(instance);
     }
 
     for (PouInfo &p : m_pous) {
-        if (p.frame)
+        if (p.frame && !(p.method && !p.method->hasBody)) // prototypes (interfaces, ABSTRACT) have no code
             compilePouBody(p);
     }
     for (PouInfo &p : m_pous) {
@@ -504,6 +526,8 @@ std::shared_ptr<Module> Codegen::run(const std::vector<const CompilationUnit *> 
         if (state[i] == 0)
             visit(static_cast<int>(i));
     }
+
+    checkVendorLibrariesReachable();
 
     // Task code: call each program in order, then halt. Program parameters from the
     // configuration are passed like a function block's.

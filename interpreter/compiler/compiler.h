@@ -34,6 +34,12 @@ std::shared_ptr<const Module> compileText(QStringView source, Diagnostics &diagn
 // The standard function blocks (SR, RS, R_TRIG, F_TRIG, CTU..., TP, TON, TOF), written in ST.
 const ast::CompilationUnit &standardLibrary();
 
+// The CoDeSys 2.3 Util blocks (BLINK, PID, ...) and Beremiz's RTC and LOGGER, written in ST; a
+// project gets them when it names one (utilNamesUsed).
+const ast::CompilationUnit &utilLibrary();
+bool isUtilName(const QString &name);
+bool utilNamesUsed(const std::vector<const ast::CompilationUnit *> &units);
+
 // Whether `name` (any case) is a standard function the compiler knows: one of its table or a
 // type conversion such as INT_TO_REAL or BCD_TO_WORD. Graphical blocks of these are called
 // with positional arguments, as vendors name their pins differently.

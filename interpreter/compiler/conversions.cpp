@@ -4,11 +4,65 @@
 
 #include <QCoreApplication>
 #include <cmath>
+#include <functional>
 
 namespace iec::interp::detail {
 
 using namespace ast;
 
+
+// A value computed from literals alone at run time takes the type its use needs: an integer
+// or bit string (each literal it may be must fit, as a literal must) or a real.
+Value Codegen::coerceUntypedOperand(Value v, const Type *to, SourceLocation at, const std::function<Value()> &mismatch)
+{
+    const bool real = isReal(v.type);
+    const bool toInteger = (isIntegral(to) || isBits(to)) && to->elem != Elem::Bool;
+    if ((real && !isReal(to)) || (!real && !toInteger && !isReal(to)))
+        return mismatch();
+    if (v.literalRange && toInteger) {
+        for (const std::int64_t end : {v.literalRange->first, v.literalRange->second}) {
+            ConstValue c;
+            c.kind = ConstValue::Kind::Int;
+            c.i = end;
+            if (!fits(c, to->elem)) {
+                const IntRange r = rangeOf(to->elem);
+                error(at, QCoreApplication::translate("iec::interp::Compiler", "The value %1 does not fit into %2 (%3 to %4).")
+                              .arg(end).arg(typeName(to)).arg(r.low).arg(r.high));
+                return {};
+            }
+        }
+    }
+    if (vtOf(*v.type) == vtOf(*to))
+        return operandValue(v.operand, to);
+    const std::uint32_t out = temp(to);
+    instr(convertOp(vtOf(*v.type), vtOf(*to)), out, v.operand);
+    return operandValue(out, to);
+}
+
+// A conversion CODESYS makes implicitly: true (with its warning, when CODESYS gives one), or
+// false when it is refused.
+bool Codegen::warnImplicit(const Type *from, const Type *to, SourceLocation at)
+{
+    const QString f = typeName(from), t = typeName(to);
+    const QString hint = conversionHint(from, to);
+    switch (implicitConversion(from->elem, to->elem)) {
+    case ImplicitConversion::Widening:
+    case ImplicitConversion::Silent:
+        return true;
+    case ImplicitConversion::LossOfInformation:
+        warning(at, QCoreApplication::translate("iec::interp::Compiler", "Implicit conversion from %1 to %2: possible loss of information.").arg(f, t), hint);
+        return true;
+    case ImplicitConversion::SignedToUnsigned:
+        warning(at, QCoreApplication::translate("iec::interp::Compiler", "Implicit conversion from signed type %1 to unsigned type %2: possible change of sign.").arg(f, t), hint);
+        return true;
+    case ImplicitConversion::UnsignedToSigned:
+        warning(at, QCoreApplication::translate("iec::interp::Compiler", "Implicit conversion from unsigned type %1 to signed type %2: possible change of sign.").arg(f, t), hint);
+        return true;
+    case ImplicitConversion::Refused:
+        break;
+    }
+    return false;
+}
 
 Value Codegen::coerce(Value v, const Type *to, SourceLocation at, const QString &context)
 {
@@ -16,14 +70,20 @@ Value Codegen::coerce(Value v, const Type *to, SourceLocation at, const QString 
         return {};
     const Type *from = v.type;
     const QString where = context.isEmpty() ? QString() : QStringLiteral(" ") + context;
-    const auto mismatch = [&]() {
+    const std::function<Value()> mismatch = [&]() {
         error(at, QCoreApplication::translate("iec::interp::Compiler", "A value of type %1 cannot be used as %2%3 without a conversion.")
                       .arg(v.untyped ? (isReal(from) ? QStringLiteral("ANY_REAL") : QStringLiteral("ANY_INT")) : typeName(from), typeName(to), where),
               v.untyped ? QString() : conversionHint(from, to));
         return Value{};
     };
+    if (v.untyped && v.kind == Value::Kind::Operand && to->kind == TypeKind::Elementary)
+        return coerceUntypedOperand(v, to, at, mismatch);
     if (from == to)
         return v;
+    if (const auto address = coercePointer(v, to, at))
+        return *address;
+    if (const auto object = interfaceOf(v, to, at))
+        return *object;
     if (to->kind == TypeKind::Elementary && from->kind == TypeKind::Elementary && from->elem == to->elem && !v.untyped) {
         v.type = to; // an alias or subrange of the same elementary type
         return v;
@@ -31,6 +91,12 @@ Value Codegen::coerce(Value v, const Type *to, SourceLocation at, const QString 
     if (v.kind == Value::Kind::Constant) {
         if (v.untyped && to->kind == TypeKind::Elementary) {
             if (v.constant.kind == ConstValue::Kind::Int && (isIntegral(to) || isBits(to))) {
+                if (v.bitPattern && !fits(v.constant, to->elem)) {
+                    ConstValue cut = v.constant;
+                    cut.i = wrapTo(cut.i, to->elem);
+                    cut.bigUnsigned = to->size == 8 && info(to->elem).isUnsigned && cut.i < 0;
+                    return constantValue(to, cut);
+                }
                 if (!fits(v.constant, to->elem)) {
                     const IntRange r = rangeOf(to->elem);
                     error(at, QCoreApplication::translate("iec::interp::Compiler", "The value %1 does not fit into %2 (%3 to %4).")
@@ -70,6 +136,9 @@ Value Codegen::coerce(Value v, const Type *to, SourceLocation at, const QString 
             }
             return constantValue(to, v.constant);
         }
+        if (from->kind == TypeKind::Elementary && to->kind == TypeKind::Elementary && !implicitlyConvertible(from->elem, to->elem)
+            && warnImplicit(from, to, at))
+            return convertExplicit(v, to, at);
         if (from->kind == TypeKind::Elementary && to->kind == TypeKind::Elementary && implicitlyConvertible(from->elem, to->elem)) {
             ConstValue c = v.constant;
             if (isReal(to) && c.kind == ConstValue::Kind::Int) {
@@ -85,7 +154,7 @@ Value Codegen::coerce(Value v, const Type *to, SourceLocation at, const QString 
     // A value in memory.
     if (from->kind == TypeKind::Elementary && to->kind == TypeKind::Elementary) {
         if (!implicitlyConvertible(from->elem, to->elem))
-            return mismatch();
+            return warnImplicit(from, to, at) ? convertExplicit(v, to, at) : mismatch();
         if (vtOf(*from) == vtOf(*to) && from->elem != Elem::Bool) {
             v.type = to; // same machine representation: TIME to LTIME, BYTE to ... (none differ)
             return v;
@@ -278,7 +347,11 @@ Value Codegen::convertExplicit(Value v, const Type *to, SourceLocation at, bool 
     if (v.kind == Value::Kind::Constant) {
         ConstValue c = v.constant;
         if (isReal(to)) {
-            const double r = asReal(c);
+            // A ULINT or LWORD above 2^63 is held as a negative int64 once folded (a wrapped
+            // product): its type, not the flag of the literal it came from, says it is unsigned.
+            const bool unsigned64 = from->kind == TypeKind::Elementary && from->size == 8 && info(from->elem).isUnsigned
+                && c.kind == ConstValue::Kind::Int;
+            const double r = unsigned64 ? static_cast<double>(static_cast<std::uint64_t>(c.i)) : asReal(c);
             c = {};
             c.kind = ConstValue::Kind::Real;
             c.r = to->elem == Elem::Real ? static_cast<float>(r) : r;

@@ -123,9 +123,15 @@ const Type *Codegen::namedType(const QString &name, SourceLocation at, bool repo
                 return nullptr;
             return pou.frame;
         }
+        if (pou.kind == PouKind::Interface)
+            return m_types->interfaceType(pou.index, pou.name);
         if (report)
             error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 is a %2, not a type; only function blocks can be instantiated.")
                           .arg(name, pou.kind == PouKind::Program ? QStringLiteral("program") : QStringLiteral("function")));
+        return nullptr;
+    }
+    if (const QString library = vendorLibraryOf(k); report && !library.isEmpty()) {
+        missingVendorLibrary(name, library, at);
         return nullptr;
     }
     if (report && isSvgHmiType(k))
@@ -183,6 +189,11 @@ const Type *Codegen::resolveType(const TypeSpec &spec, const QString &name)
         }
         TypeTable::finishArray(*t);
         return t;
+    }
+    case TypeSpec::Kind::Pointer:
+    case TypeSpec::Kind::Reference: {
+        const Type *element = resolveType(spec.element.front());
+        return element ? m_types->pointer(element, spec.kind == TypeSpec::Kind::Reference) : nullptr;
     }
     case TypeSpec::Kind::Subrange: {
         const Type *base = namedType(spec.name, spec.location);
@@ -263,11 +274,43 @@ bool Codegen::layoutPou(PouInfo &pou)
         m_pouName = savedPou;
         return false;
     }
+    if (pou.kind == PouKind::Interface) {
+        pou.laidOut = true; // methods only: no variables of its own
+        m_pouName = savedPou;
+        return true;
+    }
     pou.layoutInProgress = true;
     const PouInfo *savedDeclaring = m_declaring;
     m_declaring = &pou; // its CONSTANTs may size its arrays
     Type *frame = m_types->create(pou.kind == PouKind::FunctionBlock ? TypeKind::FunctionBlock : TypeKind::Struct, pou.name);
     frame->pou = pou.index;
+    bool ok = true;
+    QSet<QString> declared; // upper-case names, for "declared twice" without a quadratic search
+    // EXTENDS: the base's variables first, at the offsets its own code uses; a class starts with
+    // __CLASS, which tells its methods' callers which class an object is.
+    std::uint32_t ownFrom = 0;
+    if (const int base = baseOf(pou.index); base >= 0) {
+        if (!layoutPou(m_pous[size_t(base)]) || !m_pous[size_t(base)].frame) {
+            ok = false;
+        } else {
+            if (m_pous[size_t(base)].ast->isFinal)
+                error(pou.ast->location, QCoreApplication::translate("iec::interp::Compiler", "%1 is FINAL; no function block can extend it.").arg(m_pous[size_t(base)].name));
+            for (const Member &m : m_pous[size_t(base)].frame->members) {
+                frame->members.push_back(m);
+                declared.insert(key(m.name));
+            }
+            ownFrom = static_cast<std::uint32_t>(frame->members.size());
+        }
+    } else if (pou.ast && !pou.ast->extends.isEmpty()) {
+        error(pou.ast->location, QCoreApplication::translate("iec::interp::Compiler", "%1 extends %2, which is no function block.").arg(pou.name, pou.ast->extends));
+    } else if (pou.hasClassId) {
+        Member classId;
+        classId.name = QStringLiteral("__CLASS");
+        classId.type = elem(Elem::UDInt);
+        frame->members.push_back(classId);
+        declared.insert(key(classId.name));
+        ownFrom = 1;
+    }
     // Functions: parameters first, so the rest can be reset in one copy on every call.
     // Programs and FBs: VAR_TEMP last, for the same reason.
     const auto rank = [&](VarKind kind) {
@@ -275,8 +318,6 @@ bool Codegen::layoutPou(PouInfo &pou)
             return kind == VarKind::Input || kind == VarKind::InOut ? 0 : 1;
         return kind == VarKind::Temp ? 1 : 0;
     };
-    bool ok = true;
-    QSet<QString> declared; // upper-case names, for "declared twice" without a quadratic search
     for (int pass = 0; pass < 2; ++pass) {
         for (const VarSection &section : pou.ast->sections) {
             if (section.kind == VarKind::External || section.kind == VarKind::Global || section.kind == VarKind::Access
@@ -307,7 +348,13 @@ bool Codegen::layoutPou(PouInfo &pou)
                     ok = false;
                     continue;
                 }
-                if (m.type->kind == TypeKind::FunctionBlock && pou.kind == PouKind::Function) {
+                if (m.type->kind == TypeKind::FunctionBlock && m.type->pou >= 0 && m_pous[size_t(m.type->pou)].ast
+                    && m_pous[size_t(m.type->pou)].ast->isAbstract && section.kind != VarKind::InOut) {
+                    error(v.location, QCoreApplication::translate("iec::interp::Compiler", "%1 is ABSTRACT; declare an instance of a function block that extends it.").arg(typeName(m.type)));
+                    ok = false;
+                    continue;
+                }
+                if (m.type->kind == TypeKind::FunctionBlock && pou.kind == PouKind::Function && pou.methodOf < 0) {
                     error(v.location, QCoreApplication::translate("iec::interp::Compiler", "A function cannot hold a function block instance (%1); use a function block instead.").arg(v.name));
                     ok = false;
                     continue;
@@ -319,7 +366,7 @@ bool Codegen::layoutPou(PouInfo &pou)
             pou.result = resolveType(*pou.ast->returnType);
             if (pou.result) {
                 Member r;
-                r.name = pou.name;
+                r.name = pou.ast->name; // a method's result is named like the method, not Block.Method
                 r.kind = VarKind::Output;
                 r.type = pou.result;
                 r.location = pou.ast->location;
@@ -329,7 +376,8 @@ bool Codegen::layoutPou(PouInfo &pou)
     }
     TypeTable::layout(*frame);
     pou.reinitFrom = frame->size;
-    for (const Member &m : frame->members) {
+    for (size_t i = ownFrom; i < frame->members.size(); ++i) { // the base's VAR_TEMP is the base's to reset
+        const Member &m = frame->members[i];
         if (pou.kind == PouKind::Function ? !(m.kind == VarKind::Input || m.kind == VarKind::InOut) : m.kind == VarKind::Temp) {
             pou.reinitFrom = m.offset;
             break;
@@ -411,8 +459,12 @@ void Codegen::declareGlobals(const std::vector<VarSection> &sections)
             }
             if (section.retain)
                 m_module->retain.push_back({g.offset, type->size});
-            if (!v.address.isEmpty())
+            if (!v.address.isEmpty()) {
                 locate(v.address, g.offset, type, v.location);
+                g.located = parseImageAddress(v.address);
+                if (g.located)
+                    initialiseImage(*g.located, g.offset, type);
+            }
             m_globals.insert(k, g);
             m_module->symbols.push_back({v.name, type, g.offset});
         }
@@ -421,41 +473,21 @@ void Codegen::declareGlobals(const std::vector<VarSection> &sections)
 
 void Codegen::locate(const QString &address, std::uint32_t offset, const Type *type, SourceLocation at)
 {
-    LocatedVar located;
-    located.address = address.toUpper();
-    const QString body = located.address.mid(1);
-    if (body.size() < 2 || body.endsWith(QLatin1Char('*')))
+    const QString text = address.toUpper();
+    if (text.size() < 3 || text.endsWith(QLatin1Char('*')))
         return; // %I* is assigned in the configuration; nothing to map
-    located.area = body[0].toLatin1();
-    int pos = 1;
-    char size = 'X';
-    if (body[pos].isLetter())
-        size = body[pos++].toLatin1();
-    const QStringList parts = body.mid(pos).split(QLatin1Char('.'));
-    bool ok = !parts.isEmpty();
-    std::uint32_t byteIndex = 0;
-    int bit = -1;
-    if (size == 'X') {
-        byteIndex = parts[0].toUInt(&ok);
-        if (ok && parts.size() > 1)
-            bit = parts[1].toInt(&ok);
-        else
-            bit = 0;
-        located.size = 1;
-    } else {
-        const std::uint32_t bytes = size == 'B' ? 1 : size == 'W' ? 2 : size == 'D' ? 4 : 8;
-        byteIndex = parts[0].toUInt(&ok) * bytes; // %QW3 is the 4th word: bytes 6 and 7 (CODESYS numbering)
-        located.size = bytes;
-    }
-    if (!ok || bit > 7 || (bit >= 0 && type->size != 1) || (bit < 0 && type->size != located.size && type->isElementary())) {
+    const auto a = parseImageAddress(text);
+    if (!a || (a->bit >= 0 && type->size != 1) || (a->bit < 0 && type->size != a->size && type->isElementary())) {
         error(at, QCoreApplication::translate("iec::interp::Compiler", "The address %1 does not fit a variable of type %2.").arg(address, typeName(type)));
         return;
     }
-    located.byte = byteIndex;
-    located.bit = bit;
+    LocatedVar located;
+    located.address = text;
+    located.area = a->area;
+    located.byte = a->byte;
+    located.bit = a->bit;
+    located.size = a->size;
     located.offset = offset;
-    const int area = located.area == 'I' ? 0 : located.area == 'Q' ? 1 : 2;
-    m_module->imageSizes[area] = std::max(m_module->imageSizes[area], byteIndex + located.size);
     m_module->located.push_back(located);
 }
 
@@ -476,6 +508,7 @@ const GlobalVar *Codegen::directAddressVar(const QString &address, SourceLocatio
     g.type = type;
     g.offset = allocate(type->size, type->align);
     locate(k, g.offset, type, at);
+    g.located = parseImageAddress(k);
     m_module->symbols.push_back({k, type, g.offset});
     return &*m_globals.insert(k, g);
 }
@@ -544,6 +577,18 @@ void Codegen::writeInitial(std::uint32_t offset, const Type *type, const Initial
             writeInitial(offset + index * type->element->size, type->element, nullptr);
         return;
     }
+    case TypeKind::Pointer:
+    case TypeKind::Reference:
+    case TypeKind::Interface:
+        // Addresses are known when the program runs: a pointer starts at 0, a reference unset,
+        // an interface variable without an instance.
+        if (init) {
+            const auto value = init->kind == Initializer::Kind::Expression ? evalConst(*init->value, false) : std::nullopt;
+            if (value && value->constant.kind == ConstValue::Kind::Int && value->constant.i == 0)
+                return;
+            error(init->location, QCoreApplication::translate("iec::interp::Compiler", "A %1 starts at 0; set it in the code instead (p := ADR(x); or r REF= x;).").arg(typeName(type)));
+        }
+        return;
     case TypeKind::Struct:
     case TypeKind::FunctionBlock:
         for (const Member &m : type->members) {
@@ -566,6 +611,10 @@ void Codegen::writeInitial(std::uint32_t offset, const Type *type, const Initial
             } else {
                 writeInitial(offset + m.offset, m.type, memberInit, m.name);
             }
+        }
+        if (type->kind == TypeKind::FunctionBlock && type->pou >= 0 && !type->members.empty() && type->members.front().name == QLatin1String("__CLASS")) {
+            const std::uint32_t classId = static_cast<std::uint32_t>(type->pou + 1); // which class this instance is
+            std::memcpy(m_module->initialImage.data() + offset, &classId, 4);
         }
         if (init && init->kind == Initializer::Kind::Struct) {
             for (qsizetype i = 0; i < init->memberNames.size(); ++i) {
@@ -687,6 +736,8 @@ std::optional<ConstValue> Codegen::literalValue(const Expr &expr, const Type **t
         *type = prefixType(Elem::LReal);
         v.kind = ConstValue::Kind::Real;
         v.r = negated ? -*value : *value;
+        if ((*type)->elem == Elem::Real) // REAL#0.1 is the float nearest 0.1, folded or not
+            v.r = static_cast<float>(v.r);
         return v;
     }
     case TokenKind::TimeLiteral: {

@@ -143,6 +143,15 @@ void Codegen::emitMove(std::uint32_t to, std::uint32_t from, const Type *type)
 
 Place Codegen::memberPlace(const Place &base, const Member &member, const QString &text)
 {
+    // A located variable (x AT %QX0.1) is the process image's, whichever instance names it.
+    if (!member.address.isEmpty() && !member.byReference) {
+        if (const auto address = parseImageAddress(member.address)) {
+            Place p = imagePlace(*address, member.type, text);
+            p.readOnly = member.constant;
+            p.readOnlyReason = QCoreApplication::translate("iec::interp::Compiler", "%1 is a constant and cannot be changed.").arg(text);
+            return p;
+        }
+    }
     Place p;
     p.type = member.type;
     p.text = text;
@@ -203,6 +212,8 @@ bool Codegen::typedLiteralFits(const ConstValue &value, const Type *type, const 
 // A global variable by its declaration (also reached as List.Variable through a global list).
 Place Codegen::globalPlace(const GlobalVar &global, const QString &name)
 {
+    if (global.located && !global.constant)
+        return imagePlace(*global.located, global.type, name);
     Place p;
     p.text = name;
     p.type = global.type;
@@ -262,6 +273,19 @@ Place Codegen::namePlace(const Expr &expr, bool reportUnknown)
             return result;
         }
     }
+    if (m_pou && m_pou->methodOf >= 0) {
+        // In a method: after its own variables, those of its function block (on the instance).
+        const PouInfo &owner = m_pous[size_t(m_pou->methodOf)];
+        if (const Member *m = owner.frame ? owner.frame->member(name) : nullptr) {
+            Place frame;
+            frame.kind = Place::Kind::Direct;
+            frame.operand = kInstanceRelative;
+            return memberPlace(frame, *m, name);
+        }
+    }
+    if ((name.compare(QLatin1String("THIS"), Qt::CaseInsensitive) == 0 || name.compare(QLatin1String("SUPER"), Qt::CaseInsensitive) == 0)
+        && currentClass() >= 0)
+        return selfPointer(name.compare(QLatin1String("SUPER"), Qt::CaseInsensitive) == 0, expr.location);
     if (m_declaring && m_declaring->ast) {
         // While a POU's variables are laid out, its own CONSTANTs are known by their values.
         for (const VarSection &section : m_declaring->ast->sections) {
@@ -297,6 +321,8 @@ Place Codegen::namePlace(const Expr &expr, bool reportUnknown)
         p.constant.i = it->value;
         return p;
     }
+    if (const int pou = m_pouIndex.value(key(name), -1); pou >= 0 && m_pous[size_t(pou)].kind == PouKind::Program && m_pous[size_t(pou)].programInstances == 1)
+        return programPlace(m_pous[size_t(pou)], name, expr.location); // PRG1.Out (CODESYS)
     if (reportUnknown && !unusableVar(name)) {
         if (m_pouIndex.contains(key(name)))
             error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "%1 is a POU, not a variable.").arg(name));
@@ -313,20 +339,21 @@ bool Codegen::unusableVar(const QString &name) const
         || (m_pou && m_unusableVars.contains(QString::number(m_pou->index) + QLatin1Char(':') + key(name)));
 }
 
-Place Codegen::resolvePlace(const Expr &expr, bool reportUnknown)
+Place Codegen::resolvePlace(const Expr &expr, bool reportUnknown, bool derefReferences)
+{
+    const Place p = resolvePlaceRaw(expr, reportUnknown);
+    return derefReferences ? dereferenced(p) : p;
+}
+
+Place Codegen::resolvePlaceRaw(const Expr &expr, bool reportUnknown)
 {
     switch (expr.kind) {
     case ExprKind::Name:
         return namePlace(expr, reportUnknown);
-    case ExprKind::DirectAddress: {
-        const GlobalVar *g = directAddressVar(expr.text, expr.location);
-        Place p;
-        p.kind = Place::Kind::Direct;
-        p.type = g->type;
-        p.operand = g->offset;
-        p.text = expr.text;
-        return p;
-    }
+    case ExprKind::Deref:
+        return pointee(expr, reportUnknown);
+    case ExprKind::DirectAddress:
+        return globalPlace(*directAddressVar(expr.text, expr.location), expr.text);
     case ExprKind::Member: {
         if (const Expr &b = expr.operands[0]; b.kind == ExprKind::Name && namePlace(b, false).kind == Place::Kind::Invalid) {
             // Color.Red, the CODESYS spelling of Color#Red, when Color is an enumeration and no variable.
@@ -646,10 +673,42 @@ const Type *Codegen::commonType(const Type *a, const Type *b) const
     return nullptr;
 }
 
+// Two integers or bit strings IEC gives no common type (WORD and INT, LINT and ULINT): CODESYS
+// computes bit strings as the unsigned integer of their width, then in the wider type.
+const Type *Codegen::integerCommonType(const Type *a, const Type *b) const
+{
+    const auto integerLike = [](const Type *t) { return t && t->kind == TypeKind::Elementary && t->elem != Elem::Bool && (info(t->elem).isInt || info(t->elem).isBit); };
+    if (!integerLike(a) || !integerLike(b))
+        return nullptr;
+    const auto asInteger = [this](const Type *t) -> const Type * {
+        if (!isBits(t))
+            return t;
+        static constexpr Elem unsignedOfSize[] = {Elem::USInt, Elem::USInt, Elem::UInt, Elem::UInt, Elem::UDInt, Elem::UDInt, Elem::UDInt, Elem::UDInt, Elem::ULInt};
+        return elem(unsignedOfSize[t->size]);
+    };
+    if (const Type *t = commonType(asInteger(a), asInteger(b)))
+        return t;
+    return a->size >= b->size ? (a->size == b->size && info(b->elem).isUnsigned ? a : a->size > b->size ? a : b) : b;
+}
+
 Value Codegen::binary(const QString &opText, Value left, Value right, SourceLocation at, const Place *destination)
+{
+    // Two values from literals alone give one too (computed as LINT or LREAL).
+    const bool fromLiterals = left.untyped && right.untyped;
+    Value result = binaryTyped(opText, left, right, at, destination);
+    if (fromLiterals && result.kind == Value::Kind::Operand && result.type != boolType())
+        result.untyped = true;
+    if (fromLiterals && result.kind == Value::Kind::Constant && result.untyped)
+        result.bitPattern = left.bitPattern || right.bitPattern;
+    return result;
+}
+
+Value Codegen::binaryTyped(const QString &opText, Value left, Value right, SourceLocation at, const Place *destination)
 {
     if (!left.valid() || !right.valid())
         return {};
+    if (const auto addresses = pointerArithmetic(opText, left, right, at))
+        return *addresses;
     // Exponentiation: the result is REAL or LREAL, the exponent any number.
     if (opText == QLatin1String("**")) {
         if (!isNumeric(left.type) || !isNumeric(right.type)) {
@@ -720,16 +779,18 @@ Value Codegen::binary(const QString &opText, Value left, Value right, SourceLoca
     // The type both operands are brought to.
     const Type *type = nullptr;
     if (left.untyped && right.untyped) {
-        const bool real = left.constant.kind == ConstValue::Kind::Real || right.constant.kind == ConstValue::Kind::Real;
+        const bool real = realLiteral(left) || realLiteral(right);
         type = real ? elem(Elem::LReal) : elem(Elem::LInt);
     } else if (left.untyped || right.untyped) {
         const Value &literal = left.untyped ? left : right;
         const Type *other = left.untyped ? right.type : left.type;
         type = other;
-        if (literal.constant.kind == ConstValue::Kind::Real && isIntegral(other))
+        if (realLiteral(literal) && isIntegral(other))
             type = implicitlyConvertible(other->elem, Elem::Real) ? elem(Elem::Real) : elem(Elem::LReal);
     } else {
         type = commonType(left.type, right.type);
+        if (!type)
+            type = integerCommonType(left.type, right.type);
     }
     if (!type) {
         error(at, QCoreApplication::translate("iec::interp::Compiler", "'%1' cannot combine %2 and %3.").arg(opText, typeName(left.type), typeName(right.type)),
@@ -740,13 +801,16 @@ Value Codegen::binary(const QString &opText, Value left, Value right, SourceLoca
     const bool arithmetic = oi->family == op::Add || oi->family == op::Sub || oi->family == op::Mul || oi->family == op::Div;
     const bool logic = oi->family == op::And || oi->family == op::Or || oi->family == op::Xor;
     const bool ordering = oi->family == op::Lt || oi->family == op::Le || oi->family == op::Gt || oi->family == op::Ge;
+    // CODESYS also computes with bit strings (w + 1, as the unsigned integer of their width)
+    // and combines integers bit by bit (i AND 16#FF).
+    const bool bitString = isBits(type) && type->elem != Elem::Bool;
     bool allowed = true;
     if (arithmetic)
-        allowed = isNumeric(type);
+        allowed = isNumeric(type) || bitString;
     else if (oi->family == op::Mod)
-        allowed = isIntegral(type);
+        allowed = isIntegral(type) || bitString;
     else if (logic)
-        allowed = isBits(type) || (left.untyped && right.untyped);
+        allowed = isBits(type) || isIntegral(type) || (left.untyped && right.untyped);
     else if (ordering)
         allowed = type->kind != TypeKind::Enum && (type->isElementary() || isString(type));
     else
@@ -923,22 +987,34 @@ Value Codegen::unary(const QString &opText, Value v, SourceLocation at, const Pl
             c.bigUnsigned = false;
             return constantValue(t, c, v.untyped);
         }
-        const std::uint32_t out = destination && destination->kind == Place::Kind::Direct && destination->type == t ? destination->operand : temp(t);
+        const std::uint32_t out = destination && destination->kind == Place::Kind::Direct && destination->type == t && !v.untyped ? destination->operand : temp(t);
         instr(typedOp(op::Neg, vtOf(*t)), out, v.operand);
-        return operandValue(out, t);
+        Value negated = operandValue(out, t);
+        negated.untyped = v.untyped;
+        if (v.literalRange && v.literalRange->first > INT64_MIN)
+            negated.literalRange = std::make_pair(-v.literalRange->second, -v.literalRange->first);
+        return negated;
     }
     // NOT
     // NOT 16#0F into a BYTE: an untyped literal takes the bit string type it is assigned to, or
     // DWORD, the type CODESYS gives such a constant.
-    if (v.untyped && v.kind == Value::Kind::Constant && v.constant.kind == ConstValue::Kind::Int && v.constant.i >= 0) {
-        const Type *bits = destination && destination->type && isBits(destination->type) && destination->type->elem != Elem::Bool
-            ? destination->type
-            : elem(Elem::DWord);
+    // Elsewhere it stays a literal, a bit pattern that takes the width of the bit string it is
+    // combined with: w OR NOT 16#0159 with w : WORD is w OR 16#FEA6.
+    if (v.untyped && v.kind == Value::Kind::Constant && v.constant.kind == ConstValue::Kind::Int && (v.constant.i >= 0 || v.bitPattern)) {
+        const bool toBits = destination && destination->type && isBits(destination->type) && destination->type->elem != Elem::Bool;
+        if (!toBits && !v.constant.bigUnsigned) {
+            ConstValue c = v.constant;
+            c.i = ~c.i;
+            Value pattern = constantValue(elem(Elem::LInt), c, true);
+            pattern.bitPattern = true;
+            return pattern;
+        }
+        const Type *bits = toBits ? destination->type : elem(Elem::DWord);
         const ElemInfo &e = info(bits->elem);
-        if (e.size >= 8 || v.constant.i < (std::int64_t(1) << (e.size * 8)))
+        if (e.size >= 8 || v.bitPattern || v.constant.i < (std::int64_t(1) << (e.size * 8)))
             t = bits;
     }
-    if (!isBits(t)) {
+    if (!isBits(t) && !isIntegral(t)) { // CODESYS: NOT of an integer inverts its bits
         error(at, QCoreApplication::translate("iec::interp::Compiler", "NOT needs BOOL or a bit string (BYTE, WORD, ...), not %1.").arg(v.untyped ? QCoreApplication::translate("iec::interp::Compiler", "an integer literal") : typeName(t)));
         return {};
     }
@@ -956,6 +1032,38 @@ Value Codegen::unary(const QString &opText, Value v, SourceLocation at, const Pl
 }
 
 // ---------------------------------------------------------------------------- expressions
+
+// a AND_THEN b, a OR_ELSE b (CODESYS): b is evaluated only when a does not decide the result.
+Value Codegen::shortCircuit(const Expr &expr)
+{
+    const bool andThen = expr.text == QLatin1String("AND_THEN");
+    const QString name = andThen ? QStringLiteral("AND_THEN") : QStringLiteral("OR_ELSE");
+    const auto operand = [&](const Expr &e) {
+        const Value v = compileExpr(e);
+        if (v.valid() && v.type != boolType()) {
+            error(e.location, QCoreApplication::translate("iec::interp::Compiler", "%1 combines BOOL values, not %2.").arg(name, typeName(v.type)));
+            return Value{};
+        }
+        return v;
+    };
+    const Value left = operand(expr.operands[0]);
+    if (!left.valid())
+        return {};
+    if (left.kind == Value::Kind::Constant) {
+        if ((left.constant.i != 0) != andThen)
+            return left; // FALSE AND_THEN ..., TRUE OR_ELSE ...
+        return operand(expr.operands[1]);
+    }
+    const std::uint32_t out = temp(boolType());
+    emitMove(out, left.operand, boolType());
+    const std::uint32_t decided = instr(andThen ? op::Jz : op::Jnz, 0, out);
+    const Value right = operand(expr.operands[1]);
+    if (!right.valid())
+        return {};
+    emitMove(out, materialize(right), boolType());
+    patchJump(decided, here());
+    return operandValue(out, boolType());
+}
 
 Value Codegen::compileExpr(const Expr &expr, const Place *destination)
 {
@@ -976,15 +1084,28 @@ Value Codegen::compileExpr(const Expr &expr, const Place *destination)
     case ExprKind::Member:
     case ExprKind::Index:
     case ExprKind::BitAccess:
+    case ExprKind::Deref:
     case ExprKind::DirectAddress: {
+        if (expr.kind == ExprKind::Member || (expr.kind == ExprKind::Name && currentClass() >= 0)) {
+            if (auto property = propertyRead(expr)) // obj.P, or P inside its block
+                return *property;
+        }
         const Place p = resolvePlace(expr);
         if (p.kind == Place::Kind::Invalid)
             return {};
+        if (p.kind == Place::Kind::Indirect && p.type->kind == TypeKind::FunctionBlock) {
+            // An instance behind an address stays where it is (only an interface is made of it).
+            Value v = operandValue(p.operand, p.type);
+            v.instanceAddress = true;
+            return v;
+        }
         return read(p);
     }
     case ExprKind::Unary:
         return unary(expr.text, compileExpr(expr.operands[0]), expr.location, destination);
     case ExprKind::Binary: {
+        if (expr.text == QLatin1String("AND_THEN") || expr.text == QLatin1String("OR_ELSE"))
+            return shortCircuit(expr);
         const Value left = compileExpr(expr.operands[0]);
         const Value right = compileExpr(expr.operands[1]);
         return binary(expr.text, left, right, expr.location, destination);

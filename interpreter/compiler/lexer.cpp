@@ -15,6 +15,7 @@ namespace {
 constexpr std::string_view kKeywords[] = {
     "ACTION",
     "AND",
+    "AND_THEN",
     "ARRAY",
     "AT",
     "BY",
@@ -57,6 +58,7 @@ constexpr std::string_view kKeywords[] = {
     "OF",
     "ON",
     "OR",
+    "OR_ELSE",
     "PERSISTENT",
     "PRIORITY",
     "PROGRAM",
@@ -219,7 +221,7 @@ bool isSpace(QChar c)
 }
 
 // Operators, longest first so ":=" wins over ":".
-constexpr std::array<std::u16string_view, 23> kOperators {{
+constexpr std::array<std::u16string_view, 24> kOperators {{
     u":=",
     u"=>",
     u"**",
@@ -243,6 +245,7 @@ constexpr std::array<std::u16string_view, 23> kOperators {{
     u";",
     u":",
     u".",
+    u"^", // dereference (CODESYS pointers, IEC REF_TO)
 }};
 
 class Lexer

@@ -45,7 +45,7 @@ struct BinaryOperator {
     const char *canonical;
 };
 constexpr BinaryOperator kBinaryOperators[] = {
-    {"OR", 1, "OR"}, {"XOR", 2, "XOR"}, {"AND", 3, "AND"}, {"&", 3, "AND"},  {"=", 4, "="},
+    {"OR", 1, "OR"}, {"OR_ELSE", 1, "OR_ELSE"}, {"XOR", 2, "XOR"}, {"AND", 3, "AND"}, {"AND_THEN", 3, "AND_THEN"}, {"&", 3, "AND"}, {"=", 4, "="},
     {"<>", 4, "<>"}, {"<", 5, "<"},     {">", 5, ">"},     {"<=", 5, "<="},  {">=", 5, ">="},
     {"+", 6, "+"},   {"-", 6, "-"},     {"*", 7, "*"},     {"/", 7, "/"},    {"MOD", 7, "MOD"},
     {"**", 8, "**"},
@@ -60,8 +60,11 @@ public:
         , m_pou(std::move(pou))
         , m_firstLine(firstLine)
     {
+        std::vector<Token> pragmas;
         for (const Token &t : tokenize(text)) {
-            if (t.kind != TokenKind::Comment && t.kind != TokenKind::Pragma)
+            if (t.kind == TokenKind::Pragma)
+                pragmas.push_back(t);
+            else if (t.kind != TokenKind::Comment)
                 m_tokens.push_back(t);
         }
         m_lineStarts.push_back(0);
@@ -69,6 +72,8 @@ public:
             if (text[i] == QLatin1Char('\n'))
                 m_lineStarts.push_back(static_cast<int>(i + 1));
         }
+        for (const Token &t : pragmas)
+            pragma(t);
     }
 
     CompilationUnit unit();
@@ -166,6 +171,29 @@ private:
             return false;
         const QStringView word = text(t);
         return (isIlOperator(word) && !inList(word, kStOperatorWords)) || inList(word, kSoftKeywords);
+    }
+
+    // CODESYS pragmas: {warning 'text'} is shown as a warning, {error 'text'} as an error; attributes and the other pragmas
+    // CODESYS writes are kept in the text and have no effect; anything else is ignored with a note.
+    void pragma(const Token &t)
+    {
+        const QString raw = text(t).toString();
+        const QString body = raw.mid(1, raw.size() - (raw.endsWith(QLatin1Char('}')) ? 2 : 1)).trimmed();
+        const QString word = body.section(QLatin1Char(' '), 0, 0).toLower();
+        static const QStringList known {QStringLiteral("attribute"), QStringLiteral("region"), QStringLiteral("endregion"),
+                                        QStringLiteral("library"), QStringLiteral("info"), QStringLiteral("text"),
+                                        QStringLiteral("messageguid"), QStringLiteral("implicit"), QStringLiteral("flag")};
+        const SourceLocation at = locationOf(t.offset);
+        if (body.startsWith(QLatin1String("__")) || body.contains(QLatin1String("data__")))
+            return; // Beremiz's inline C (its standard blocks read the clock so): nothing to do here
+        const QString message = body.section(QLatin1Char(' '), 1).trimmed().remove(QLatin1Char('\''));
+        if (word == QLatin1String("warning")) {
+            m_diagnostics.warning(m_pou, at, message);
+        } else if (word == QLatin1String("error")) {
+            m_diagnostics.error(m_pou, at, message);
+        } else if (!known.contains(word)) {
+            m_diagnostics.warning(m_pou, at, QCoreApplication::translate("iec::interp::Compiler", "The pragma {%1} means nothing to IEC Studio; it is ignored.").arg(body.left(40)));
+        }
     }
 
     // ---- diagnostics ----
@@ -292,11 +320,23 @@ private:
     bool isPouStart() const
     {
         return isWord("PROGRAM") || isWord("FUNCTION") || isWord("FUNCTION_BLOCK") || isWord("TYPE")
-            || isWord("CONFIGURATION");
+            || isWord("CONFIGURATION") || (isWord("INTERFACE") && isName(1));
+    }
+    // METHOD or PROPERTY of a function block (CODESYS, edition 3): a name, perhaps after
+    // qualifiers, follows; "Method := 1;" is a statement.
+    bool startsMember() const
+    {
+        return (isWord("METHOD") || isWord("PROPERTY")) && !atEnd(1) && isWordToken(tok(1)) && !isOp(u":=", 1) && !isOp(u".", 1)
+            && !isOp(u"(", 1) && !isOp(u"[", 1);
     }
 
     // ---- units ----
     void pou(CompilationUnit &unit);
+    void pouHeader(Pou &p);
+    void members(Pou &p);
+    Method method(bool prototype);
+    void property(Pou &p, bool prototype);
+    Access qualifiers(bool &isAbstract, bool &isFinal);
     void typeBlock(CompilationUnit &unit);
     void configuration(CompilationUnit &unit);
     void resourceContents(ResourceDecl &resource, std::string_view end);
@@ -378,7 +418,7 @@ CompilationUnit Parser::unit()
     CompilationUnit unit;
     while (!atEnd()) {
         m_pou.clear();
-        if (isWord("PROGRAM") || isWord("FUNCTION") || isWord("FUNCTION_BLOCK")) {
+        if (isWord("PROGRAM") || isWord("FUNCTION") || isWord("FUNCTION_BLOCK") || (isWord("INTERFACE") && isName(1))) {
             pou(unit);
         } else if (isWord("TYPE")) {
             typeBlock(unit);
@@ -408,12 +448,15 @@ void Parser::pou(CompilationUnit &unit)
     } else if (acceptWord("FUNCTION_BLOCK")) {
         p.kind = PouKind::FunctionBlock;
         end = "END_FUNCTION_BLOCK";
+    } else if (acceptWord("INTERFACE")) {
+        p.kind = PouKind::Interface;
+        end = "END_INTERFACE";
     } else {
         acceptWord("FUNCTION");
         p.kind = PouKind::Function;
         end = "END_FUNCTION";
     }
-    p.name = expectName(QCoreApplication::translate("iec::interp::Compiler", "the name of the POU"));
+    pouHeader(p);
     m_pou = p.name;
     if (p.kind == PouKind::Function) {
         if (acceptOp(u":"))
@@ -424,8 +467,11 @@ void Parser::pou(CompilationUnit &unit)
     }
     while (isVarSectionStart())
         p.sections.push_back(varSection());
-    p.body = body({end, "ACTION"});
-    // Actions after the body, as CODESYS exports them.
+    members(p);
+    if (p.kind != PouKind::Interface)
+        p.body = body({end, "ACTION"});
+    // Actions (and methods, properties) after the body, as CODESYS exports them.
+    members(p);
     while (isWord("ACTION") && startsSfcElement()) {
         SfcAction action;
         action.location = here();
@@ -436,6 +482,7 @@ void Parser::pou(CompilationUnit &unit)
         expectWord("END_ACTION");
         p.actions.push_back(std::move(action));
     }
+    members(p);
     if (p.body.language == Language::SFC) { // in a chart, actions belong to the chart
         for (SfcAction &action : p.actions)
             p.body.sfc->actions.push_back(std::move(action));
@@ -455,6 +502,151 @@ void Parser::pou(CompilationUnit &unit)
         m_recovering = false;
     }
     unit.pous.push_back(std::move(p));
+}
+
+// The name and, for function blocks and interfaces, ABSTRACT/FINAL, EXTENDS and IMPLEMENTS.
+void Parser::pouHeader(Pou &p)
+{
+    while ((isWord("ABSTRACT") || isWord("FINAL") || isWord("PUBLIC") || isWord("INTERNAL")) && isName(1)) {
+        p.isAbstract = p.isAbstract || isWord("ABSTRACT");
+        p.isFinal = p.isFinal || isWord("FINAL");
+        ++m_pos;
+    }
+    p.name = expectName(QCoreApplication::translate("iec::interp::Compiler", "the name of the POU"));
+    if (p.kind != PouKind::FunctionBlock && p.kind != PouKind::Interface)
+        return;
+    if (acceptWord("EXTENDS")) {
+        // An interface may extend several interfaces.
+        do {
+            const QString base = expectName(QCoreApplication::translate("iec::interp::Compiler", "the name it extends"));
+            if (p.kind == PouKind::Interface)
+                p.implements << base;
+            else
+                p.extends = base;
+        } while (p.kind == PouKind::Interface && acceptOp(u","));
+    }
+    if (p.kind == PouKind::FunctionBlock && acceptWord("IMPLEMENTS")) {
+        do
+            p.implements << expectName(QCoreApplication::translate("iec::interp::Compiler", "the name of an interface"));
+        while (acceptOp(u","));
+    }
+}
+
+// PUBLIC, PRIVATE, PROTECTED, INTERNAL, ABSTRACT, FINAL before a method's or property's name.
+Access Parser::qualifiers(bool &isAbstract, bool &isFinal)
+{
+    Access access = Access::Public;
+    for (;;) {
+        if (!isName(1) && !(!atEnd(1) && isWordToken(tok(1)) && !isOp(u":", 1) && !isOp(u";", 1)))
+            break;
+        if (acceptWord("PUBLIC"))
+            access = Access::Public;
+        else if (acceptWord("PRIVATE"))
+            access = Access::Private;
+        else if (acceptWord("PROTECTED"))
+            access = Access::Protected;
+        else if (acceptWord("INTERNAL"))
+            access = Access::Internal;
+        else if (acceptWord("ABSTRACT"))
+            isAbstract = true;
+        else if (acceptWord("FINAL"))
+            isFinal = true;
+        else
+            break;
+    }
+    return access;
+}
+
+// The METHODs and PROPERTYs of a function block or interface, where they stand.
+void Parser::members(Pou &p)
+{
+    while (startsMember()) {
+        const size_t before = m_pos;
+        if (isWord("METHOD"))
+            p.methods.push_back(method(p.kind == PouKind::Interface));
+        else
+            property(p, p.kind == PouKind::Interface);
+        skipIfStuck(before);
+    }
+}
+
+Method Parser::method(bool prototype)
+{
+    Method m;
+    m.location = here();
+    ++m_pos; // METHOD
+    m.access = qualifiers(m.isAbstract, m.isFinal);
+    m.name = expectName(QCoreApplication::translate("iec::interp::Compiler", "the name of the method"));
+    if (acceptOp(u":"))
+        m.returnType = typeSpec();
+    acceptOp(u";");
+    while (isVarSectionStart())
+        m.sections.push_back(varSection());
+    m.hasBody = !prototype && !m.isAbstract;
+    m.body = body({"END_METHOD"});
+    if (!acceptWord("END_METHOD")) {
+        error(m.location, QCoreApplication::translate("iec::interp::Compiler", "The method %1 has no END_METHOD.").arg(m.name));
+        while (!atEnd() && !isWord("END_METHOD") && !isPouStart())
+            ++m_pos;
+        acceptWord("END_METHOD");
+        m_recovering = false;
+    }
+    acceptOp(u";");
+    return m;
+}
+
+// PROPERTY name : type, with GET ... END_GET and SET ... END_SET: a getter returning the value
+// and a setter taking it, both named like the property.
+void Parser::property(Pou &p, bool prototype)
+{
+    const SourceLocation at = here();
+    ++m_pos; // PROPERTY
+    Method getter;
+    getter.location = at;
+    getter.access = qualifiers(getter.isAbstract, getter.isFinal);
+    getter.name = expectName(QCoreApplication::translate("iec::interp::Compiler", "the name of the property"));
+    if (expectOp(u":", QCoreApplication::translate("iec::interp::Compiler", "':' and the type of the property")))
+        getter.returnType = typeSpec();
+    acceptOp(u";");
+    bool hasGet = false, hasSet = false;
+    Method setter = getter;
+    setter.returnType.reset();
+    getter.role = Method::Role::Getter;
+    setter.role = Method::Role::Setter;
+    while ((isWord("GET") || isWord("SET")) && !isOp(u":=", 1)) {
+        const bool get = isWord("GET");
+        Method &accessor = get ? getter : setter;
+        (get ? hasGet : hasSet) = true;
+        accessor.location = here();
+        ++m_pos;
+        while (isVarSectionStart())
+            accessor.sections.push_back(varSection());
+        accessor.hasBody = !prototype && !accessor.isAbstract;
+        accessor.body = body({get ? "END_GET" : "END_SET"});
+        expectWord(get ? "END_GET" : "END_SET");
+        acceptOp(u";");
+    }
+    if (!acceptWord("END_PROPERTY")) {
+        error(at, QCoreApplication::translate("iec::interp::Compiler", "The property %1 has no END_PROPERTY.").arg(getter.name));
+        while (!atEnd() && !isWord("END_PROPERTY") && !isPouStart())
+            ++m_pos;
+        acceptWord("END_PROPERTY");
+        m_recovering = false;
+    }
+    acceptOp(u";");
+    if (hasSet && getter.returnType) {
+        VarSection input;
+        input.kind = VarKind::Input;
+        VarDecl value;
+        value.name = setter.name;
+        value.location = setter.location;
+        value.type = *getter.returnType;
+        input.vars.push_back(std::move(value));
+        setter.sections.insert(setter.sections.begin(), std::move(input));
+        p.methods.push_back(std::move(setter));
+    }
+    if (hasGet || !hasSet)
+        p.methods.push_back(std::move(getter));
 }
 
 void Parser::typeBlock(CompilationUnit &unit)
@@ -691,6 +883,19 @@ TypeSpec Parser::typeSpec()
             spec.name = takeName(); // CODESYS: (a, b) INT
         return spec;
     }
+    // CODESYS POINTER TO T and REFERENCE TO T, IEC 61131-3 ed.3 REF_TO T.
+    if ((isWord("POINTER") || isWord("REFERENCE")) && isWord("TO", 1)) {
+        spec.kind = isWord("POINTER") ? TypeSpec::Kind::Pointer : TypeSpec::Kind::Reference;
+        m_pos += 2;
+        spec.element.push_back(typeSpec());
+        return spec;
+    }
+    if (isWord("REF_TO")) {
+        spec.kind = TypeSpec::Kind::Pointer;
+        ++m_pos;
+        spec.element.push_back(typeSpec());
+        return spec;
+    }
     if (isWord("STRING") || isWord("WSTRING")) {
         spec.kind = TypeSpec::Kind::String;
         spec.wide = isWord("WSTRING");
@@ -781,7 +986,7 @@ Body Parser::body(std::initializer_list<std::string_view> ends)
             static constexpr std::string_view starts[] = {"PROGRAM", "FUNCTION", "FUNCTION_BLOCK", "TYPE", "CONFIGURATION", "ACTION"};
             return atEnd(ahead) || std::any_of(std::begin(starts), std::end(starts), [&](std::string_view w) { return equalsUpper(text(ahead), w); });
         };
-        if (!isEnd(ends) && !atEnd() && !(isMisspelledEnd() && pouStartsAt(1))) {
+        if (!isEnd(ends) && !atEnd() && !(isMisspelledEnd() && pouStartsAt(1)) && !startsMember()) {
             unexpected(QCoreApplication::translate("iec::interp::Compiler", "a statement"));
             while (!isEnd(ends) && !isPouStart())
                 ++m_pos;
@@ -800,13 +1005,17 @@ bool Parser::looksLikeIl() const
 {
     if (atEnd())
         return false;
-    // A label "Start:" only exists in IL.
-    if (isName() && isOp(u":", 1))
-        return true;
+    // A label "Start:" is IL unless an ST statement follows it (CODESYS has labels in ST too).
+    if (isName() && isOp(u":", 1)) {
+        const bool stFollows = (isName(2) && (isOp(u":=", 3) || isOp(u"(", 3) || isOp(u".", 3) || isOp(u"[", 3) || isOp(u"^", 3)))
+            || isWord("IF", 2) || isWord("FOR", 2) || isWord("WHILE", 2) || isWord("CASE", 2) || isWord("REPEAT", 2);
+        return !stFollows;
+    }
     if (tok().kind != TokenKind::Keyword || !isIlOperator(text()))
         return false;
-    // "R := TRUE;" and "ADD(...)" are ST; "LD x" is IL.
-    return !(isOp(u":=", 1) || isOp(u"(", 1) || isOp(u".", 1) || isOp(u"[", 1) || isOp(u"=>", 1));
+    // "R := TRUE;", "ADD(...)" and "R REF= x;" are ST; "LD x" is IL.
+    return !(isOp(u":=", 1) || isOp(u"(", 1) || isOp(u".", 1) || isOp(u"[", 1) || isOp(u"=>", 1) || isOp(u"^", 1)
+             || (isWord("REF", 1) && isOp(u"=", 2)));
 }
 
 // ============================================================================ SFC
@@ -931,7 +1140,7 @@ void Parser::sfcTransition(SfcChart &chart)
 
 bool Parser::isStatementListEnd() const
 {
-    return atEnd() || isBlockWord() || startsSfcElement() || isMisspelledEnd();
+    return atEnd() || isBlockWord() || startsSfcElement() || isMisspelledEnd() || startsMember();
 }
 
 std::vector<Stmt> Parser::statements()
@@ -990,6 +1199,20 @@ Stmt Parser::statement()
         s.kind = StmtKind::Continue;
     else if (acceptWord("RETURN"))
         s.kind = StmtKind::Return;
+    else if (isWord("JMP") && isName(1)) { // CODESYS: JMP label; in ST
+        ++m_pos;
+        s.kind = StmtKind::Jump;
+        s.target.kind = ExprKind::Name;
+        s.target.location = here();
+        s.target.text = takeName();
+    } else if (isName() && isOp(u":", 1)) { // label: in ST, before the statement it marks
+        s.kind = StmtKind::Label;
+        s.target.kind = ExprKind::Name;
+        s.target.location = here();
+        s.target.text = takeName();
+        ++m_pos;
+        return s;
+    }
     if (s.kind != StmtKind::Empty) {
         endStatement();
         return s;
@@ -1001,6 +1224,11 @@ Stmt Parser::statement()
     Expr target = postfix(primary());
     if (acceptOp(u":=")) {
         s.kind = StmtKind::Assign;
+        s.target = std::move(target);
+        s.value = expression();
+    } else if (isWord("REF") && isOp(u"=", 1)) { // CODESYS: r REF= x;
+        m_pos += 2;
+        s.kind = StmtKind::RefAssign;
         s.target = std::move(target);
         s.value = expression();
     } else if (target.kind == ExprKind::Call) {
@@ -1342,7 +1570,8 @@ Expr Parser::primary()
     }
     // Type names as conversion functions (INT(x)), AND(a, b) and MOD(a, b) as functions, and names.
     const bool operatorFunction = (isWord("AND") || isWord("OR") || isWord("XOR") || isWord("MOD")) && isOp(u"(", 1);
-    if (isName() || operatorFunction || (t.kind == TokenKind::TypeName && isOp(u"(", 1))) {
+    // A type name alone is an argument of SIZEOF(INT).
+    if (isName() || operatorFunction || (t.kind == TokenKind::TypeName && (isOp(u"(", 1) || isOp(u")", 1) || isOp(u",", 1)))) {
         e.kind = ExprKind::Name;
         e.text = takeName();
         return e;
@@ -1389,7 +1618,16 @@ Expr Parser::postfix(Expr base)
             while (acceptOp(u","));
             expectOp(u"]", QStringLiteral("']'"));
             base = std::move(e);
-        } else if (isOp(u"(") && (base.kind == ExprKind::Name || base.kind == ExprKind::Member || base.kind == ExprKind::Index)) {
+        } else if (isOp(u"^")) {
+            ++m_pos;
+            Expr e;
+            e.kind = ExprKind::Deref;
+            e.location = base.location;
+            e.text = base.text + QLatin1Char('^');
+            e.operands.push_back(std::move(base));
+            base = std::move(e);
+        } else if (isOp(u"(") && (base.kind == ExprKind::Name || base.kind == ExprKind::Member || base.kind == ExprKind::Index
+                                  || base.kind == ExprKind::Deref)) {
             ++m_pos;
             Expr e;
             e.kind = ExprKind::Call;
@@ -1440,7 +1678,7 @@ std::vector<IlInstruction> Parser::ilInstructions(std::initializer_list<std::str
     const auto atBodyEnd = [&] {
         return isEnd(ends) || (ends.size() == 0 && atEnd())
             || (!atEnd() && tok().kind == TokenKind::Keyword && text().startsWith(QLatin1String("END_"), Qt::CaseInsensitive))
-            || isWord("ACTION") || isPouStart();
+            || isWord("ACTION") || isPouStart() || startsMember();
     };
     while (!atEnd() && !atBodyEnd()) {
         IlInstruction ins;
@@ -1500,15 +1738,18 @@ std::vector<IlInstruction> Parser::ilInstructions(std::initializer_list<std::str
         if (ilOperandFollows(opToken) && acceptOp(u"(")) {
             ins.openParen = true;
         }
-        if (ilOperandFollows(opToken)) {
-            Expr operand;
+        // An operand: a variable, a literal (also a negative one: ADD -1, SEL G, -5, 3) or a call.
+        const auto ilOperand = [&] {
             if (isOp(u"-") && !atEnd(1) && (tok(1).kind == TokenKind::IntegerLiteral || tok(1).kind == TokenKind::RealLiteral)) {
                 ++m_pos;
-                operand = primary();
-                operand.text.prepend(QLatin1Char('-'));
-            } else {
-                operand = postfix(primary());
+                Expr negative = primary();
+                negative.text.prepend(QLatin1Char('-'));
+                return negative;
             }
+            return postfix(primary());
+        };
+        if (ilOperandFollows(opToken)) {
+            Expr operand = ilOperand();
             if (operand.kind == ExprKind::Call) {
                 ins.callArgs = std::move(operand.callArgs);
                 Expr callee = std::move(operand.operands.front());
@@ -1518,7 +1759,7 @@ std::vector<IlInstruction> Parser::ilInstructions(std::initializer_list<std::str
             // Further operands of a function call: SEL G, IN0, IN1 -> positional arguments.
             while (ilOperandFollows(opToken) && acceptOp(u",")) {
                 CallArg extra;
-                extra.value = postfix(primary());
+                extra.value = ilOperand();
                 ins.callArgs.push_back(std::move(extra));
             }
         }

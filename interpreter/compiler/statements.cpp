@@ -59,6 +59,20 @@ void Codegen::warnForLoopEnd(const Stmt &s, const Place &counter, const Value &s
                 QCoreApplication::translate("iec::interp::Compiler", "use a larger type than %1 for %2").arg(typeName(type), counter.text));
 }
 
+// JMP label; in ST goes to its label anywhere in the body (CODESYS).
+void Codegen::resolveStJumps()
+{
+    for (const auto &[at, jump] : m_stJumps) {
+        const auto it = m_stLabels.constFind(key(jump->target.text));
+        if (it == m_stLabels.constEnd())
+            error(jump->location, QCoreApplication::translate("iec::interp::Compiler", "There is no label %1 to jump to.").arg(jump->target.text));
+        else
+            patchJump(at, *it);
+    }
+    m_stJumps.clear();
+    m_stLabels.clear();
+}
+
 void Codegen::compileStatements(const std::vector<Stmt> &list)
 {
     for (const Stmt &s : list)
@@ -74,6 +88,9 @@ void Codegen::compileStatement(const Stmt &s)
     case StmtKind::Empty:
         break;
     case StmtKind::Assign: {
+        if ((s.target.kind == ExprKind::Member || (s.target.kind == ExprKind::Name && currentClass() >= 0))
+            && propertyWrite(s.target, s.value, s.location))
+            break; // obj.P := value, through P's setter
         if (s.target.kind == ExprKind::Index) {
             // An element: the value first, so that the element's address and the store can
             // become one instruction.
@@ -87,8 +104,11 @@ void Codegen::compileStatement(const Stmt &s)
         if (target.kind == Place::Kind::Invalid)
             break;
         // The last operation of the expression may write straight into the variable.
-        // Not for a subrange: the value is checked before it is stored.
-        const Place *destination = target.kind == Place::Kind::Direct && !target.readOnly && !target.type->subrange ? &target : nullptr;
+        // Not for a subrange: the value is checked before it is stored. Otherwise the target
+        // still gives literals and generic functions their type (a place that is never written).
+        Place typeOnly;
+        typeOnly.type = target.kind == Place::Kind::Bit || target.kind == Place::Kind::IndirectBit ? boolType() : target.type;
+        const Place *destination = target.kind == Place::Kind::Direct && !target.readOnly && !target.type->subrange ? &target : &typeOnly;
         const Value value = compileExpr(s.value, destination);
         store(target, value, s.location);
         break;
@@ -155,17 +175,19 @@ void Codegen::compileStatement(const Stmt &s)
                     }
                     seen.push_back({low.constant.i, high.constant.i, label.low.location.line});
                 }
+                Value matches;
                 if (!label.high) {
-                    const Value eq = binary(QStringLiteral("="), selector, low, label.low.location);
-                    if (eq.kind == Value::Kind::Operand)
-                        toBody.push_back(branchIf(eq, true));
-                    continue;
+                    matches = binary(QStringLiteral("="), selector, low, label.low.location);
+                } else {
+                    const Value ge = binary(QStringLiteral(">="), selector, low, label.low.location);
+                    const Value le = binary(QStringLiteral("<="), selector, high, label.high->location);
+                    matches = binary(QStringLiteral("AND"), ge, le, label.low.location);
                 }
-                const Value ge = binary(QStringLiteral(">="), selector, low, label.low.location);
-                const Value le = binary(QStringLiteral("<="), selector, high, label.high->location);
-                const Value both = binary(QStringLiteral("AND"), ge, le, label.low.location);
-                if (both.kind == Value::Kind::Operand)
-                    toBody.push_back(instr(op::Jnz, 0, both.operand));
+                // A constant selector (CASE 2 OF, CASE INT#-2 OF) matches or not at compile time.
+                if (matches.kind == Value::Kind::Operand)
+                    toBody.push_back(branchIf(matches, true));
+                else if (matches.kind == Value::Kind::Constant && matches.constant.i != 0)
+                    toBody.push_back(instr(op::Jmp));
             }
             const std::uint32_t skip = instr(op::Jmp);
             for (const std::uint32_t j : toBody)
@@ -337,6 +359,18 @@ void Codegen::compileStatement(const Stmt &s)
         break;
     case StmtKind::Return:
         instr(op::Ret);
+        break;
+    case StmtKind::RefAssign:
+        referenceAssignment(s);
+        break;
+    case StmtKind::Label:
+        if (m_stLabels.contains(key(s.target.text)))
+            error(s.location, QCoreApplication::translate("iec::interp::Compiler", "The label %1 is defined twice.").arg(s.target.text));
+        m_stLabels.insert(key(s.target.text), here());
+        markTarget(here());
+        break;
+    case StmtKind::Jump:
+        m_stJumps.push_back({instr(op::Jmp), &s});
         break;
     }
     m_tempTop = tempMark;

@@ -69,6 +69,8 @@ Value mathFunction(Codegen &g, const MathEntry &m, Value v, SourceLocation at)
         ConstValue c;
         c.kind = ConstValue::Kind::Real;
         c.r = m.fold(v.constant.kind == ConstValue::Kind::Real ? v.constant.r : double(v.constant.i));
+        if (type->elem == Elem::Real) // stored as a REAL, as the VM stores it, before it is used further
+            c.r = static_cast<float>(c.r);
         return g.constantValue(type, c, v.untyped);
     }
     const std::uint32_t out = g.temp(type);
@@ -97,13 +99,19 @@ const Type *commonOf(Codegen &g, const std::vector<Value> &values, size_t from, 
         bool real = false, fitsInt = true, fitsDint = true, fitsFloat = true;
         for (size_t i = from; i < values.size(); ++i) {
             const ConstValue &c = values[i].constant;
-            if (c.kind == ConstValue::Kind::Real) {
+            if (realLiteral(values[i])) {
                 real = true;
-                fitsFloat = fitsFloat && double(float(c.r)) == c.r;
+                fitsFloat = fitsFloat && c.kind == ConstValue::Kind::Real && double(float(c.r)) == c.r;
                 continue;
             }
-            fitsInt = fitsInt && !c.bigUnsigned && c.i >= -32768 && c.i <= 32767;
-            fitsDint = fitsDint && !c.bigUnsigned && c.i >= INT32_MIN && c.i <= INT32_MAX;
+            // Computed from literals at run time: the literals it may be, when known.
+            std::int64_t low = c.i, high = c.i;
+            if (values[i].kind == Value::Kind::Operand) {
+                low = values[i].literalRange ? values[i].literalRange->first : INT64_MIN;
+                high = values[i].literalRange ? values[i].literalRange->second : INT64_MAX;
+            }
+            fitsInt = fitsInt && !c.bigUnsigned && low >= -32768 && high <= 32767;
+            fitsDint = fitsDint && !c.bigUnsigned && low >= INT32_MIN && high <= INT32_MAX;
         }
         if (real)
             return g.elem(fitsFloat ? Elem::Real : Elem::LReal);
@@ -138,16 +146,23 @@ bool allLiterals(const std::vector<Value> &values)
     return std::all_of(values.begin(), values.end(), [](const Value &v) { return v.untyped && v.kind == Value::Kind::Constant; });
 }
 
+bool allUntyped(const std::vector<Value> &values)
+{
+    return std::all_of(values.begin(), values.end(), [](const Value &v) { return v.untyped; });
+}
+
 // A literal's type from where it goes: s := MUX(k, 1, 2) with s : SINT makes the literals SINT
 // (commonOf would make them INT, which a SINT cannot take). nullptr when that does not apply.
 const Type *literalsTypeFrom(const std::vector<Value> &values, const Place *destination)
 {
     const Type *to = destination ? destination->type : nullptr;
-    if (!to || to->kind != TypeKind::Elementary || !(isIntegral(to) || isReal(to) || (isBits(to) && to->elem != Elem::Bool)) || !allLiterals(values))
+    if (!to || to->kind != TypeKind::Elementary || !(isIntegral(to) || isReal(to) || (isBits(to) && to->elem != Elem::Bool)) || !allUntyped(values))
         return nullptr;
     for (const Value &v : values) {
-        const bool integer = v.constant.kind == ConstValue::Kind::Int;
-        if ((integer && !isReal(to) && !fits(v.constant, to->elem)) || (!integer && !isReal(to)))
+        const bool integer = !realLiteral(v);
+        if (!integer && !isReal(to))
+            return nullptr;
+        if (integer && !isReal(to) && v.kind == Value::Kind::Constant && !fits(v.constant, to->elem) && !v.bitPattern)
             return nullptr;
     }
     return to;
@@ -202,9 +217,26 @@ Value select(Codegen &g, const Value &selector, std::vector<Value> inputs, const
             return inputs[size_t(k)];
     }
     const Type *fromDestination = literalsTypeFrom(inputs, destination);
-    const Type *type = fromDestination ? fromDestination : commonOf(g, inputs, 0, name, at);
+    // Literals alone with a selector known only at run time: the result is computed as LINT (or
+    // LREAL) and takes the type its use needs, as the literals would (ROR(SEL(b, 0, 16#08), 3)).
+    const bool fromLiterals = !fromDestination && selector.kind != Value::Kind::Constant && allUntyped(inputs);
+    const Type *type = fromDestination ? fromDestination
+        : fromLiterals ? g.elem(std::any_of(inputs.begin(), inputs.end(), realLiteral) ? Elem::LReal : Elem::LInt)
+                       : commonOf(g, inputs, 0, name, at);
     if (!type)
         return {};
+    std::optional<std::pair<std::int64_t, std::int64_t>> range;
+    if (fromLiterals && !isReal(type)) {
+        range = std::make_pair(INT64_MAX, INT64_MIN);
+        for (const Value &v : inputs) {
+            const auto r = v.kind == Value::Kind::Constant && !v.constant.bigUnsigned ? std::make_optional(std::make_pair(v.constant.i, v.constant.i)) : v.literalRange;
+            if (!r) {
+                range.reset();
+                break;
+            }
+            range = std::make_pair(std::min(range->first, r->first), std::max(range->second, r->second));
+        }
+    }
     for (Value &v : inputs) {
         v = g.coerce(v, type, at);
         if (!v.valid())
@@ -232,7 +264,10 @@ Value select(Codegen &g, const Value &selector, std::vector<Value> inputs, const
         g.emitMove(out, g.materialize(inputs[k]), type);
         g.patchJump(skip, g.here());
     }
-    return g.operandValue(out, type);
+    Value result = g.operandValue(out, type);
+    result.untyped = fromLiterals;
+    result.literalRange = range;
+    return result;
 }
 
 // SHL(1, 3) of literals is a literal (8), which then fits any bit string it is given to.
@@ -249,7 +284,9 @@ std::optional<Value> foldLiteralShift(Codegen &g, std::uint16_t family, const Va
     c.kind = ConstValue::Kind::Int;
     c.i = static_cast<std::int64_t>(result);
     c.bigUnsigned = result > std::uint64_t(INT64_MAX);
-    return g.constantValue(g.elem(Elem::LInt), c, true);
+    Value shifted = g.constantValue(g.elem(Elem::LInt), c, true);
+    shifted.bitPattern = true; // w := SHL(507, 9) keeps the low 16 bits of 259584 in a WORD
+    return shifted;
 }
 
 Value shift(Codegen &g, std::uint16_t family, const char *name, std::vector<Value> &args, SourceLocation at, const Place *destination)
@@ -262,7 +299,7 @@ Value shift(Codegen &g, std::uint16_t family, const char *name, std::vector<Valu
         // a BYTE), else a DWORD.
         const Type *destinationType = destination ? destination->type : nullptr;
         const bool toBits = destinationType && destinationType->kind == TypeKind::Elementary && isBits(destinationType)
-            && destinationType->elem != Elem::Bool && in.kind == Value::Kind::Constant && fits(in.constant, destinationType->elem);
+            && destinationType->elem != Elem::Bool && (in.kind != Value::Kind::Constant || fits(in.constant, destinationType->elem));
         in = g.coerce(in, toBits ? destinationType : g.elem(Elem::DWord), at);
     }
     if (!in.valid())
@@ -351,12 +388,15 @@ const std::vector<StdFunction> &table()
                          g.instr(typedOp(op::Abs, vtOf(*v.type)), out, v.operand);
                          return g.operandValue(out, v.type);
                      }});
-        t.push_back({"TRUNC", {"IN"}, false, [](Codegen &g, std::vector<Value> &a, SourceLocation at, const Place *) {
+        t.push_back({"TRUNC", {"IN"}, false, [](Codegen &g, std::vector<Value> &a, SourceLocation at, const Place *d) {
                          if (!a[0].untyped && !isReal(a[0].type)) {
                              g.error(at, QCoreApplication::translate("iec::interp::Compiler", "TRUNC needs a REAL or LREAL, not %1.").arg(typeName(a[0].type)));
                              return Value{};
                          }
-                         return g.convertExplicit(a[0], g.elem(Elem::DInt), at, true);
+                         // ANY_INT: the integer type it is assigned to (i := TRUNC(r) with i : INT), else
+                         // DINT as in CODESYS 3.5 (CoDeSys 2.3's TRUNC gave INT).
+                         const Type *to = d && d->type && d->type->kind == TypeKind::Elementary && isIntegral(d->type) ? d->type : g.elem(Elem::DInt);
+                         return g.convertExplicit(a[0], to, at, true);
                      }});
         t.push_back({"EXPT", {"IN1", "IN2"}, false, [](Codegen &g, std::vector<Value> &a, SourceLocation at, const Place *d) {
                          return g.binary(QStringLiteral("**"), a[0], a[1], at, d);
@@ -531,6 +571,15 @@ const std::vector<StdFunction> &table()
                          g.instr(op::Now, out);
                          return g.operandValue(out, g.elem(Elem::Time));
                      }});
+        // Beremiz LOGGER's message (utillib.cpp): a statement, no value.
+        t.push_back({"__LOG", {"LEVEL", "MSG"}, false, [](Codegen &g, std::vector<Value> &a, SourceLocation at, const Place *) {
+                         const Value level = a[0].type->kind == TypeKind::Enum ? g.convertExplicit(a[0], g.elem(Elem::Int), at)
+                                                                               : g.coerce(a[0], g.elem(Elem::Int), at);
+                         if (!level.valid() || !needString(g, a[1], "__LOG", at))
+                             return Value{};
+                         g.instr(op::Log, g.materialize(level), g.materialize(a[1]));
+                         return Value{};
+                     }});
         t.push_back({"CONCAT_DATE_TOD", {"IN1", "IN2"}, false, [](Codegen &g, std::vector<Value> &a, SourceLocation at, const Place *) {
                          if (a[0].type->elem != Elem::Date || a[1].type->elem != Elem::Tod || a[0].type->kind != TypeKind::Elementary) {
                              g.error(at, QCoreApplication::translate("iec::interp::Compiler", "CONCAT_DATE_TOD needs a DATE and a TIME_OF_DAY."));
@@ -579,6 +628,31 @@ std::optional<Value> Codegen::standardFunction(const QString &name, std::vector<
         return toBinary ? convertExplicit(result, to, at) : result;
     };
     static constexpr Elem bitsOfSize[] = {Elem::Byte, Elem::Byte, Elem::Word, Elem::Word, Elem::DWord, Elem::DWord, Elem::DWord, Elem::DWord, Elem::LWord};
+    const auto constant = [&](Elem type, std::int64_t value) {
+        return constantValue(elem(type), ConstValue{ConstValue::Kind::Int, value, false, 0, {}, false});
+    };
+    if (name == QLatin1String("INT_TO_BCD") && single("INT_TO_BCD")) {
+        // CODESYS Util: INT_TO_BCD(I : INT) : BYTE, two BCD digits, 255 when I is not 0..99.
+        const Value v = coerce(args[0], elem(Elem::Int), at);
+        if (!v.valid())
+            return Value{};
+        const Value inRange = binary(QStringLiteral("AND"), binary(QStringLiteral(">="), v, constant(Elem::Int, 0), at),
+                                     binary(QStringLiteral("<="), v, constant(Elem::Int, 99), at), at);
+        return select(*this, inRange, {constant(Elem::Byte, 255), bcd(v, elem(Elem::Byte), false)}, "INT_TO_BCD", at, nullptr);
+    }
+    const bool byteArgument = args.size() == 1 && args[0].valid()
+        && ((args[0].type->kind == TypeKind::Elementary && args[0].type->elem == Elem::Byte)
+            || (args[0].untyped && args[0].kind == Value::Kind::Constant && args[0].constant.kind == ConstValue::Kind::Int && fits(args[0].constant, Elem::Byte)));
+    if (name == QLatin1String("BCD_TO_INT") && byteArgument) {
+        // CODESYS Util: BCD_TO_INT(B : BYTE) : INT, -1 when a digit is not 0..9 (wider bit
+        // strings take the generic conversion below).
+        const Value b = coerce(args[0], elem(Elem::Byte), at);
+        const Value low = binary(QStringLiteral("AND"), b, constant(Elem::Byte, 15), at);
+        const Value high = binary(QStringLiteral("AND"), b, constant(Elem::Byte, 240), at);
+        const Value valid = binary(QStringLiteral("AND"), binary(QStringLiteral("<="), low, constant(Elem::Byte, 9), at),
+                                   binary(QStringLiteral("<="), high, constant(Elem::Byte, 144), at), at);
+        return select(*this, valid, {constant(Elem::Int, -1), bcd(b, elem(Elem::Int), true)}, "BCD_TO_INT", at, nullptr);
+    }
     if (const auto m = legacyBcd.match(name); m.hasMatch() && !name.contains(QLatin1String("_TO_BCD_"))) {
         // INT_TO_BCD: the bit string of the same size holding the BCD digits.
         const Type *from = namedType(m.captured(1), at, false);

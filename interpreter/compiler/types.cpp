@@ -95,6 +95,29 @@ bool implicitlyConvertible(Elem from, Elem to)
     return false;
 }
 
+ImplicitConversion implicitConversion(Elem from, Elem to)
+{
+    if (implicitlyConvertible(from, to))
+        return ImplicitConversion::Widening;
+    const ElemInfo &f = info(from), &t = info(to);
+    const auto integerLike = [](Elem e, const ElemInfo &i) { return e != Elem::Bool && (i.isInt || i.isBit); };
+    if (integerLike(from, f) && integerLike(to, t)) {
+        if (t.size < f.size)
+            return ImplicitConversion::LossOfInformation;
+        const bool fromSigned = f.isInt && !f.isUnsigned, toSigned = t.isInt && !t.isUnsigned;
+        if (fromSigned && !toSigned)
+            return ImplicitConversion::SignedToUnsigned;
+        if (!fromSigned && toSigned && t.size == f.size)
+            return ImplicitConversion::UnsignedToSigned;
+        return ImplicitConversion::Silent; // WORD to UINT, BYTE to INT, UINT to DWORD
+    }
+    if (f.isReal && (integerLike(to, t) || t.isReal))
+        return ImplicitConversion::LossOfInformation; // REAL to INT rounds, LREAL to REAL
+    if (integerLike(from, f) && t.isReal) // DINT to REAL: more digits than a REAL holds
+        return f.size >= t.size ? ImplicitConversion::LossOfInformation : ImplicitConversion::Silent;
+    return ImplicitConversion::Refused;
+}
+
 const Member *Type::member(const QString &name) const
 {
     // A program with 40,000 variables is looked up 40,000 times: by hash once laid out.
@@ -142,6 +165,37 @@ const Type *TypeTable::string(bool wide, std::uint32_t capacity)
     t->size = (t->size + 1) & ~1u;
     t->align = 2;
     m_strings.push_back(t);
+    return t;
+}
+
+const Type *TypeTable::pointer(const Type *element, bool reference)
+{
+    const TypeKind kind = reference ? TypeKind::Reference : TypeKind::Pointer;
+    for (const Type *t : m_pointers) {
+        if (t->kind == kind && t->element == element)
+            return t;
+    }
+    Type *t = create(kind, QStringLiteral("%1 %2").arg(reference ? QStringLiteral("REFERENCE TO") : QStringLiteral("POINTER TO"), typeName(element)));
+    t->element = element;
+    t->elem = Elem::UDInt; // computed with as an address: a UDINT offset into the image
+    t->size = 4;
+    t->align = 4;
+    m_pointers.push_back(t);
+    return t;
+}
+
+const Type *TypeTable::interfaceType(int pou, const QString &name)
+{
+    for (const Type *t : m_pointers) {
+        if (t->kind == TypeKind::Interface && t->pou == pou)
+            return t;
+    }
+    Type *t = create(TypeKind::Interface, name);
+    t->pou = pou;
+    t->elem = Elem::UDInt;
+    t->size = 4;
+    t->align = 4;
+    m_pointers.push_back(t);
     return t;
 }
 

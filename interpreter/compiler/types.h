@@ -25,7 +25,12 @@ enum class Elem : std::uint8_t {
 enum class VT : std::uint8_t { I8, I16, I32, I64, U8, U16, U32, U64, F32, F64, Count };
 constexpr int kVtCount = static_cast<int>(VT::Count);
 
-enum class TypeKind : std::uint8_t { Elementary, String, Array, Struct, Enum, FunctionBlock };
+// Pointer (CODESYS POINTER TO, IEC REF_TO) and Reference (CODESYS REFERENCE TO) hold the image
+// address of what they point to (4 bytes, 0 = nowhere); `element` is that type. A reference is
+// read and written as what it refers to; a pointer through ^.
+// Interface: a variable of an INTERFACE type holds the address of a function block instance
+// that implements it (4 bytes, 0 = none); `pou` is the interface.
+enum class TypeKind : std::uint8_t { Elementary, String, Array, Struct, Enum, FunctionBlock, Pointer, Reference, Interface };
 
 struct Type;
 
@@ -85,6 +90,12 @@ std::optional<Elem> elemByName(QStringView name); // accepts the short forms T, 
 // (IEC 61131-3 ed.3 implicit conversions: widening within a family, integers to reals that hold them).
 bool implicitlyConvertible(Elem from, Elem to);
 
+// What CODESYS does with a conversion IEC 61131-3 does not make implicitly: accepts it silently
+// (WORD to UINT), accepts it with a warning (narrowing, REAL to an integer, a change of sign; the
+// value wraps or is rounded like the *_TO_* function), or refuses it (BOOL, TIME, CHAR ...).
+enum class ImplicitConversion { Widening, Silent, LossOfInformation, SignedToUnsigned, UnsignedToSigned, Refused };
+ImplicitConversion implicitConversion(Elem from, Elem to);
+
 // Owns every type of one compilation; pointers stay valid while it lives.
 class TypeTable
 {
@@ -92,6 +103,8 @@ public:
     TypeTable();
     const Type *elementary(Elem e) const { return m_elementary[static_cast<size_t>(e)]; }
     const Type *string(bool wide, std::uint32_t capacity);
+    const Type *pointer(const Type *element, bool reference = false);
+    const Type *interfaceType(int pou, const QString &name);
     Type *create(TypeKind kind, const QString &name);
     // Natural alignment layout of a struct/FB's members; sets size and align.
     static void layout(Type &type);
@@ -101,6 +114,7 @@ private:
     std::deque<Type> m_types;
     std::vector<const Type *> m_elementary;
     std::vector<const Type *> m_strings;
+    std::vector<const Type *> m_pointers;
 };
 
 QString typeName(const Type *t);

@@ -75,6 +75,12 @@ inline bool fits(const ConstValue &c, Elem e)
     return c.i < 0 || static_cast<std::uint64_t>(c.i) <= r.high;
 }
 
+// An untyped value that is a real literal (1.5) or was computed from real literals only.
+inline bool realLiteral(const Value &v)
+{
+    return v.untyped && (v.constant.kind == ConstValue::Kind::Real || (v.kind == Value::Kind::Operand && isReal(v.type)));
+}
+
 inline QString constText(const ConstValue &c)
 {
     switch (c.kind) {

@@ -2,6 +2,7 @@
 
 #include "interpreter/compiler/lexer.h"
 #include "interpreter/compiler/parser.h"
+#include "interpreter/frontend/iecprinter.h"
 #include "interpreter/sfc/sfctext.h"
 
 #include <QRegularExpression>
@@ -55,6 +56,8 @@ QString exprText(const ast::Expr &e, bool top)
     }
     case ast::ExprKind::Call:
         return e.text + QLatin1Char('(') + argsText(e.callArgs) + QLatin1Char(')');
+    case ast::ExprKind::Deref:
+        return exprText(e.operands[0], false) + QLatin1Char('^');
     }
     return e.text;
 }
@@ -120,6 +123,10 @@ model::DataType toModel(const ast::TypeSpec &spec)
         type.members = toModel(spec.members);
         return {type};
     }
+    case ast::TypeSpec::Kind::Pointer:
+        return {model::PointerType {model::Box<model::DataType>(toModel(spec.element.front()))}};
+    case ast::TypeSpec::Kind::Reference: // PLCopen has no reference type: CODESYS's own spelling
+        return {model::DerivedType {QStringLiteral("REFERENCE TO ") + printDataType(toModel(spec.element.front())), {}, {}}};
     }
     return namedType(spec.name);
 }
@@ -431,6 +438,8 @@ model::PouKind toModel(ast::PouKind kind)
         return model::PouKind::FunctionBlock;
     case ast::PouKind::Function:
         return model::PouKind::Function;
+    case ast::PouKind::Interface: // PLCopen has no interfaces: kept as a block (CODESYS keeps them in addData)
+        return model::PouKind::FunctionBlock;
     }
     return model::PouKind::Program;
 }

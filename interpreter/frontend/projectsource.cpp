@@ -4,6 +4,7 @@
 #include "interpreter/frontend/iecprinter.h"
 #include "interpreter/graphical/graphicallowering.h"
 #include "interpreter/sfc/sfclowering.h"
+#include "model/plcopen/codesysoop.h"
 
 namespace iec::interp::frontend {
 
@@ -66,6 +67,74 @@ ast::Body lowerBody(const model::Body &body, ast::Pou &pou, const QString &owner
     return result;
 }
 
+// The variables and return type of a CODESYS method or property accessor, as the parser reads a
+// FUNCTION's (so a PLCopen file and a .st file can never mean different things).
+ast::Pou declarationOf(const model::plcopen::CodesysMember &m, const QString &owner, Diagnostics &diagnostics)
+{
+    model::Pou function;
+    function.name = m.name;
+    function.kind = model::PouKind::Function;
+    model::Interface declared = m.interface;
+    declared.addData.clear();
+    if (m.kind == model::plcopen::CodesysMember::Kind::Getter)
+        declared.returnType = m.type;
+    if (m.kind == model::plcopen::CodesysMember::Kind::Setter && m.type) {
+        model::VarList input; // the value written, named like the property
+        input.kind = model::VarListKind::Input;
+        model::Variable value;
+        value.name = m.name;
+        value.type = *m.type;
+        input.variables.push_back(value);
+        declared.varLists.insert(declared.varLists.begin(), input);
+    }
+    if (!declared.returnType) // a method without a result: a function needs one to print
+        declared.returnType = model::DataType {model::ElementaryType {QStringLiteral("BOOL")}};
+    function.pouInterface = declared;
+    ast::CompilationUnit parsed = parseDeclarationsOf(printPouSkeleton(function), owner + QLatin1Char('.') + m.name, diagnostics);
+    if (parsed.pous.empty())
+        return {};
+    ast::Pou result = std::move(parsed.pous.front());
+    if (m.kind != model::plcopen::CodesysMember::Kind::Getter && !m.interface.returnType)
+        result.returnType.reset(); // a method without a result, or a setter
+    return result;
+}
+
+ast::Method::Role roleOf(const model::plcopen::CodesysMember &m)
+{
+    switch (m.kind) {
+    case model::plcopen::CodesysMember::Kind::Getter: return ast::Method::Role::Getter;
+    case model::plcopen::CodesysMember::Kind::Setter: return ast::Method::Role::Setter;
+    case model::plcopen::CodesysMember::Kind::Method: break;
+    }
+    return ast::Method::Role::Method;
+}
+
+// CODESYS's methods, properties, EXTENDS and IMPLEMENTS of a block, from its addData.
+void addCodesysClass(const model::Pou &pou, ast::Pou &result, Diagnostics &diagnostics)
+{
+    const model::plcopen::CodesysClass oop = model::plcopen::readCodesysClass(pou);
+    result.extends = oop.extends;
+    result.implements = oop.implements;
+    for (const model::plcopen::CodesysMember &m : oop.members) {
+        ast::Method method;
+        method.name = m.name;
+        method.role = roleOf(m);
+        method.access = m.qualifiers.contains(QLatin1String("PRIVATE")) ? ast::Access::Private
+            : m.qualifiers.contains(QLatin1String("PROTECTED"))          ? ast::Access::Protected
+            : m.qualifiers.contains(QLatin1String("INTERNAL"))           ? ast::Access::Internal
+                                                                          : ast::Access::Public;
+        method.isAbstract = m.qualifiers.contains(QLatin1String("ABSTRACT"));
+        method.isFinal = m.qualifiers.contains(QLatin1String("FINAL"));
+        ast::Pou declared = declarationOf(m, pou.name, diagnostics);
+        method.sections = std::move(declared.sections);
+        method.returnType = declared.returnType;
+        method.hasBody = m.body.has_value() && !method.isAbstract;
+        if (m.body)
+            method.body = lowerBody(*m.body, result, pou.name + QLatin1Char('.') + m.name, diagnostics);
+        result.methods.push_back(std::move(method));
+    }
+}
+
 void addPou(const model::Pou &pou, ast::CompilationUnit &unit, Diagnostics &diagnostics)
 {
     ast::CompilationUnit declared = parseDeclarationsOf(printPouSkeleton(pou), pou.name, diagnostics);
@@ -73,6 +142,8 @@ void addPou(const model::Pou &pou, ast::CompilationUnit &unit, Diagnostics &diag
         return; // the name itself could not be parsed; already reported
     ast::Pou result = std::move(declared.pous.front());
     result.name = pou.name;
+    if (pou.kind == model::PouKind::FunctionBlock)
+        addCodesysClass(pou, result, diagnostics);
     const model::Body *body = pou.body();
     if (body && body->language() == model::BodyLanguage::SFC) {
         // The chart's lowering runs its actions and transitions itself.
@@ -85,7 +156,12 @@ void addPou(const model::Pou &pou, ast::CompilationUnit &unit, Diagnostics &diag
             ast::SfcAction parsed;
             parsed.name = action.name;
             // Lines count in the action's own text, so its diagnostics name it: Main.Reset:2:5.
-            parsed.body = lowerBody(action.body, result, pou.name + QLatin1Char('.') + action.name, diagnostics);
+            if (action.body.language() == model::BodyLanguage::SFC) {
+                parsed.body.language = ast::Language::ST;
+                sfc::lowerActionChart(pou, action, result, parsed.body.statements, diagnostics);
+            } else {
+                parsed.body = lowerBody(action.body, result, pou.name + QLatin1Char('.') + action.name, diagnostics);
+            }
             result.actions.push_back(std::move(parsed));
         }
     }
@@ -121,6 +197,23 @@ ast::CompilationUnit parseProjectText(const model::Project &project, Diagnostics
     }
     for (const model::Pou &pou : project.types.pous)
         addPou(pou, unit, diagnostics);
+    for (const model::plcopen::CodesysInterface &itf : model::plcopen::readCodesysInterfaces(project)) {
+        ast::Pou interfacePou;
+        interfacePou.kind = ast::PouKind::Interface;
+        interfacePou.name = itf.name;
+        interfacePou.implements = itf.definition.implements;
+        for (const model::plcopen::CodesysMember &m : itf.definition.members) {
+            ast::Method prototype;
+            prototype.name = m.name;
+            prototype.role = roleOf(m);
+            prototype.hasBody = false;
+            ast::Pou declared = declarationOf(m, itf.name, diagnostics);
+            prototype.sections = std::move(declared.sections);
+            prototype.returnType = declared.returnType;
+            interfacePou.methods.push_back(std::move(prototype));
+        }
+        unit.pous.push_back(std::move(interfacePou));
+    }
     for (const model::Configuration &configuration : project.instances.configurations) {
         ast::CompilationUnit declared
             = parseDeclarationsOf(printConfiguration(configuration), configuration.name, diagnostics);
@@ -149,7 +242,10 @@ std::shared_ptr<const Module> compileUnit(
         return nullptr;
     Diagnostics compiling;
     const bool hasTextualCharts = std::any_of(unit.unit.pous.begin(), unit.unit.pous.end(),
-        [](const ast::Pou &pou) { return pou.body.language == ast::Language::SFC; });
+        [](const ast::Pou &pou) {
+            return pou.body.language == ast::Language::SFC
+                || std::any_of(pou.actions.begin(), pou.actions.end(), [](const ast::SfcAction &a) { return a.body.language == ast::Language::SFC; });
+        });
     if (hasTextualCharts) { // parsed straight from .st text: lower the charts here
         ast::CompilationUnit lowered = unit.unit;
         sfc::lowerTextualCharts(lowered, compiling);

@@ -522,10 +522,6 @@ void Evaluator::evaluateBlock(std::size_t n, const model::Block &block)
     const QString type = block.typeName.trimmed();
     const bool isInstance = block.instanceName && !block.instanceName->trimmed().isEmpty();
     const bool standard = !isInstance && isStandardFunction(type);
-    if (const auto library = vendorLibrary(type)) {
-        fail(n, QStringLiteral("The %1 block comes from the %2 library, which this version does not have.").arg(type, *library));
-        return;
-    }
     Signal enable;
     enable.expr = boolLiteral(true, at(n));
     enable.type = namedType(QStringLiteral("BOOL"));

@@ -94,21 +94,6 @@ std::optional<ast::TypeSpec> literalOrDeclaredType(const ast::Expr &expr, const 
     }
 }
 
-std::optional<QString> vendorLibrary(const QString &typeName)
-{
-    static const QHash<QString, QString> blocks {
-        {QStringLiteral("LOGGER"), QStringLiteral("Beremiz")}, {QStringLiteral("RTC"), QStringLiteral("Beremiz")},
-        {QStringLiteral("PYTHON_EVAL"), QStringLiteral("Beremiz")}, {QStringLiteral("PYTHON_POLL"), QStringLiteral("Beremiz")},
-        {QStringLiteral("PYTHON_GEAR"), QStringLiteral("Beremiz")}, {QStringLiteral("TCP_CONNECT"), QStringLiteral("OpenPLC")},
-        {QStringLiteral("TCP_SEND"), QStringLiteral("OpenPLC")}, {QStringLiteral("TCP_RECEIVE"), QStringLiteral("OpenPLC")},
-        {QStringLiteral("TCP_CLOSE"), QStringLiteral("OpenPLC")}, {QStringLiteral("UDP_CONNECT"), QStringLiteral("OpenPLC")},
-        {QStringLiteral("UDP_SEND"), QStringLiteral("OpenPLC")}, {QStringLiteral("UDP_RECEIVE"), QStringLiteral("OpenPLC")}};
-    const auto found = blocks.find(typeName.trimmed().toUpper());
-    if (found == blocks.end())
-        return std::nullopt;
-    return *found;
-}
-
 std::optional<ast::TypeSpec> guessResultType(const model::Block &block, const std::vector<Signal> &inputs)
 {
     if (auto type = byStandardRule(block, inputs))
@@ -133,8 +118,19 @@ std::optional<ast::TypeSpec> byStandardRule(const model::Block &block, const std
         return firstKnown(inputs, 1);
     if (name == QLatin1String("LIMIT"))
         return firstKnown(inputs, 0);
-    if (name.endsWith(QLatin1String("_TIME")) && name.startsWith(QLatin1String("ADD")))
+    if (name.endsWith(QLatin1String("_TIME")) && (name.startsWith(QLatin1String("ADD")) || name.startsWith(QLatin1String("SUB"))))
         return inputs.empty() ? std::nullopt : inputs.front().type;
+    // The difference of two dates or times of day is a TIME (IEC 61131-3 table 30); a date is only
+    // ever subtracted from a date, so a date as IN2 is enough to know it (IN1 may be a connector).
+    const auto isDate = [&](size_t i) {
+        static const QSet<QString> dates {QStringLiteral("DT"), QStringLiteral("DATE_AND_TIME"), QStringLiteral("TOD"),
+            QStringLiteral("TIME_OF_DAY"), QStringLiteral("DATE"), QStringLiteral("D")};
+        return i < inputs.size() && inputs[i].type && inputs[i].type->kind == ast::TypeSpec::Kind::Named
+            && dates.contains(inputs[i].type->name.toUpper());
+    };
+    if (name == QLatin1String("SUB_DT_DT") || name == QLatin1String("SUB_TOD_TOD") || name == QLatin1String("SUB_DATE_DATE")
+        || (name == QLatin1String("SUB") && isDate(1)))
+        return namedType(QStringLiteral("TIME"));
     static const QSet<QString> sameAsInputs {QStringLiteral("ADD"), QStringLiteral("MUL"), QStringLiteral("SUB"),
         QStringLiteral("DIV"), QStringLiteral("MOD"), QStringLiteral("AND"), QStringLiteral("OR"), QStringLiteral("XOR"),
         QStringLiteral("NOT"), QStringLiteral("MOVE"), QStringLiteral("ABS"), QStringLiteral("MAX"), QStringLiteral("MIN"),

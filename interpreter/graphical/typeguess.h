@@ -26,10 +26,6 @@ DeclaredTypes declaredTypes(const ast::Pou &pou);
 // The type of a declared variable, a typed literal (INT#5, T#1s, TRUE) or an address.
 std::optional<ast::TypeSpec> literalOrDeclaredType(const ast::Expr &expr, const DeclaredTypes &declared);
 
-// The library a vendor-specific block comes from (Beremiz LOGGER, OpenPLC TCP_SEND, ...), which
-// this version does not have.
-std::optional<QString> vendorLibrary(const QString &typeName);
-
 // The result type of a function's standard rule (comparisons give BOOL, ADD its inputs' type, ...).
 std::optional<ast::TypeSpec> byStandardRule(const model::Block &block, const std::vector<Signal> &inputs);
 

@@ -1,5 +1,6 @@
 #include "interpreter/runtime/runtime.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace iec::interp {
@@ -42,32 +43,19 @@ std::vector<std::uint8_t> &Runtime::image(char area)
     return m_images[area == 'I' ? 0 : area == 'Q' ? 1 : 2];
 }
 
+// The process image is part of the memory image (Module::imageBase): the input area is copied
+// in before the tasks run, the output and marker areas out after them.
 void Runtime::copyInputs()
 {
-    std::uint8_t *memory = m_vm.memory().data();
-    for (const LocatedVar &l : m_module->located) {
-        if (l.area != 'I')
-            continue;
-        const std::uint8_t *from = image('I').data() + l.byte;
-        if (l.bit >= 0)
-            memory[l.offset] = (*from >> l.bit) & 1u;
-        else
-            std::memcpy(memory + l.offset, from, l.size);
-    }
+    const std::vector<std::uint8_t> &inputs = image('I');
+    std::memcpy(m_vm.memory().data() + m_module->imageBase[0], inputs.data(), m_module->imageSizes[0]);
 }
 
 void Runtime::copyOutputs()
 {
     const std::uint8_t *memory = m_vm.memory().data();
-    for (const LocatedVar &l : m_module->located) {
-        if (l.area == 'I')
-            continue;
-        std::uint8_t *to = image(l.area).data() + l.byte;
-        if (l.bit >= 0)
-            *to = static_cast<std::uint8_t>(memory[l.offset] ? (*to | (1u << l.bit)) : (*to & ~(1u << l.bit)));
-        else
-            std::memcpy(to, memory + l.offset, l.size);
-    }
+    for (const int area : {1, 2})
+        std::memcpy(m_images[area].data(), memory + m_module->imageBase[area], m_module->imageSizes[area]);
 }
 
 void Runtime::applyForces()
@@ -112,11 +100,29 @@ bool Runtime::runCycle()
             return false;
         }
     }
+    for (Vm::LogMessage &message : m_vm.log) {
+        if (m_log.size() < Vm::kMaxLog)
+            m_log.push_back({m_cycle, message.level, std::move(message.text)});
+    }
+    m_vm.log.clear();
     applyForces();
     copyOutputs();
     applyForces(); // a forced %Q address wins over the variable mapped to it
     m_timeNs += m_cycleNs;
     return true;
+}
+
+std::vector<Runtime::LogEntry> Runtime::takeLog()
+{
+    std::vector<LogEntry> taken;
+    taken.swap(m_log);
+    return taken;
+}
+
+QString Runtime::LogEntry::toString() const
+{
+    static const char *const levels[] = {"CRITICAL", "WARNING", "INFO", "DEBUG"};
+    return QStringLiteral("%1: %2 (cycle %3)").arg(QLatin1String(levels[std::clamp(level, 0, 3)]), text).arg(cycle);
 }
 
 bool Runtime::runCycles(int count)

@@ -54,6 +54,16 @@ public:
     void unforce(const QString &name);
 
     std::vector<std::uint8_t> &image(char area); // 'I', 'Q', 'M'
+
+    // Messages the program logged (Beremiz LOGGER) since they were last taken.
+    struct LogEntry {
+        int cycle = 0;
+        int level = 2; // 0 critical, 1 warning, 2 info, 3 debug
+        QString text;
+        QString toString() const; // "INFO: text (cycle 3)"
+    };
+    std::vector<LogEntry> takeLog();
+
     Vm &vm() { return m_vm; }
     const Module &module() const { return *m_module; }
 
@@ -77,6 +87,7 @@ private:
     };
     std::vector<Force> m_forces;
     std::optional<RuntimeFault> m_fault;
+    std::vector<LogEntry> m_log;
 };
 
 } // namespace iec::interp

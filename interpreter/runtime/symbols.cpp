@@ -50,6 +50,12 @@ std::optional<VariableRef> resolveAddress(const Module &module, const QString &n
     const int area = ref.imageArea == 'I' ? 0 : ref.imageArea == 'Q' ? 1 : 2;
     if (ref.offset + (ref.bit >= 0 ? 1 : ref.type->size) > module.imageSizes[area])
         return std::nullopt;
+    // Outputs and markers are read and written where the program has them, in the memory image;
+    // inputs in the input image, which is copied in at the start of every cycle.
+    if (ref.imageArea != 'I') {
+        ref.offset += module.imageBase[area];
+        ref.imageArea = 0;
+    }
     return ref;
 }
 
@@ -106,6 +112,9 @@ QString formatAt(const Type *type, const std::uint8_t *p)
     switch (type->kind) {
     case TypeKind::Elementary:
     case TypeKind::Enum:
+    case TypeKind::Pointer:   // the address, a UDINT
+    case TypeKind::Reference:
+    case TypeKind::Interface:
         return formatElementary(type, p);
     case TypeKind::String: {
         const std::uint16_t length = load<std::uint16_t>(p + 2);
@@ -250,13 +259,15 @@ std::optional<VariableRef> resolveSymbol(const Module &module, const QString &na
     }
     if (first || pos != name.size())
         return std::nullopt;
-    // A variable located at an input (start AT %IX0.0) is copied from the input image at the start
-    // of every cycle, so it is read and written there: --set Main.start=TRUE then reaches the program.
+    // A located variable (q AT %QW2) is the process image's: the program reads and writes it there.
+    // At an input it is the input image (copied in at the start of every cycle), so --set
+    // Main.start=TRUE reaches the program.
     for (const LocatedVar &l : module.located) {
-        if (l.area == 'I' && l.offset == ref.offset && ref.bit < 0 && ref.type && ref.type->isElementary()
+        if (l.offset == ref.offset && ref.bit < 0 && ref.type && ref.type->isElementary()
             && (l.bit >= 0 ? ref.type->size == 1 : l.size == ref.type->size)) {
-            ref.imageArea = 'I';
-            ref.offset = l.byte;
+            const int area = l.area == 'I' ? 0 : l.area == 'Q' ? 1 : 2;
+            ref.imageArea = l.area == 'I' ? 'I' : 0;
+            ref.offset = l.byte + (l.area == 'I' ? 0 : module.imageBase[area]);
             ref.bit = l.bit;
             break;
         }

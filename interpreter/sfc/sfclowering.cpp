@@ -12,6 +12,7 @@
 #include "interpreter/sfc/sfcnames.h"
 #include "interpreter/sfc/sfctext.h"
 
+#include <QCoreApplication>
 #include <QHash>
 #include <QRegularExpression>
 #include <QSet>
@@ -132,8 +133,13 @@ std::optional<ast::Expr> ilToExpression(const std::vector<ast::IlInstruction> &i
 class Lowering
 {
 public:
-    Lowering(const model::Pou &pou, ast::Pou &result, Diagnostics &diagnostics, const std::vector<ast::SfcAction> *parsed)
-        : m_pou(pou), m_result(result), m_diagnostics(diagnostics), m_parsed(parsed)
+    // `hiddenPrefix` starts the names of the hidden variables ("__sfc_"; a chart in an action has
+    // its own, so that it runs beside the POU's chart). The statements go to `output`, by default
+    // the POU's body.
+    Lowering(const model::Pou &pou, ast::Pou &result, Diagnostics &diagnostics, const std::vector<ast::SfcAction> *parsed,
+        QString hiddenPrefix = QStringLiteral("__sfc_"), std::vector<ast::Stmt> *output = nullptr)
+        : m_pou(pou), m_result(result), m_diagnostics(diagnostics), m_parsed(parsed), m_hiddenPrefix(std::move(hiddenPrefix)),
+          m_output(output ? output : &result.body.statements)
     {
     }
 
@@ -173,10 +179,18 @@ private:
     bool hasFlag(const char *name) const { return declared(QLatin1String(name)); }
 
     // Generated ST, located on `localId`. `{Name}` placeholders are not used: callers build text.
+    // The generated text with this chart's own names for its hidden variables.
+    QString named(QString text) const
+    {
+        if (m_hiddenPrefix != QLatin1String("__sfc_"))
+            text.replace(QLatin1String("__sfc_"), m_hiddenPrefix);
+        return text;
+    }
+
     std::vector<ast::Stmt> code(const QString &text, quint64 localId = kNoElement)
     {
         Diagnostics local;
-        std::vector<ast::Stmt> statements = parseStBody(text, m_pou.name, local);
+        std::vector<ast::Stmt> statements = parseStBody(named(text), m_pou.name, local);
         if (local.hasErrors()) {
             // Only user text inside (a duration, a variable name) can make it fail.
             m_diagnostics.error(m_pou.name, at(localId),
@@ -303,7 +317,7 @@ private:
             declareAction(text, j);
         Diagnostics local;
         std::vector<ast::VarSection> sections
-            = parseDeclarations(QString(QStringLiteral("VAR\n") + text + QStringLiteral("END_VAR\n")), m_pou.name, local);
+            = parseDeclarations(named(QStringLiteral("VAR\n") + text + QStringLiteral("END_VAR\n")), m_pou.name, local);
         if (local.hasErrors()) {
             m_diagnostics.error(m_pou.name, {},
                 QStringLiteral("The chart's variables cannot be declared: %1").arg(local.all().front().message));
@@ -343,13 +357,14 @@ private:
     // POU (Main.Act) and the chart calls it: Act();
     bool isCalledAction(const QString &name) const
     {
+        // IL and charts: compiled apart and called.
         if (m_parsed) {
             for (const ast::SfcAction &action : *m_parsed)
                 if (key(action.name) == key(name))
-                    return action.body.language == ast::Language::IL;
+                    return action.body.language == ast::Language::IL || action.body.language == ast::Language::SFC;
         }
         const model::PouAction *action = m_pouActions.value(key(name));
-        return action && action->body.language() == model::BodyLanguage::IL;
+        return action && (action->body.language() == model::BodyLanguage::IL || action->body.language() == model::BodyLanguage::SFC);
     }
 
     std::vector<ast::Stmt> callAction(const QString &name, ast::Body body, quint64 localId)
@@ -376,9 +391,16 @@ private:
                     return action.body.statements;
                 if (action.body.language == ast::Language::IL)
                     return callAction(action.name, action.body, localId);
-                error(localId, QStringLiteral("%1 is itself an SFC chart; charts inside actions are not supported.").arg(owner),
-                    QStringLiteral("use a macro step, or move the chart into a function block"));
-                return std::nullopt;
+                if (m_calledActions.contains(key(name)))
+                    return code(name + QStringLiteral("();\n"), localId);
+                model::PouAction chartAction; // a chart in the action: see the SFC case below
+                chartAction.name = action.name;
+                chartAction.body = chartToModel(*action.body.sfc, m_pou.name, m_diagnostics);
+                ast::Body chart;
+                chart.language = ast::Language::ST;
+                if (!lowerNestedChart(chartAction, chart.statements))
+                    return std::nullopt;
+                return callAction(name, std::move(chart), localId);
             }
         }
         switch (body.language()) {
@@ -405,13 +427,47 @@ private:
             graphical::LoweringContext context {m_result, owner, m_diagnostics};
             return graphical::lowerBody(body, context);
         }
-        case model::BodyLanguage::SFC:
-            error(localId, QStringLiteral("%1 is itself an SFC chart; charts inside actions are not supported.").arg(owner),
-                QStringLiteral("use a macro step, or move the chart into a function block"));
-            return std::nullopt;
+        case model::BodyLanguage::SFC: {
+            // A chart in an action: lowered on its own (hidden variables named apart) and compiled
+            // as an action of the POU that the step calls, so its state lives in the instance.
+            const QString name = owner.section(QLatin1Char('.'), -1);
+            if (m_calledActions.contains(key(name)))
+                return code(name + QStringLiteral("();\n"), localId); // lowered already, or by the POU's own list
+            const model::PouAction *action = m_pouActions.value(key(name));
+            if (!action || owner == m_pou.name || m_hiddenPrefix.contains(QLatin1Char('_') + name + QLatin1Char('_'))) {
+                error(localId, QCoreApplication::translate("iec::interp::Compiler", "%1 is an SFC chart that contains itself.").arg(owner));
+                return std::nullopt;
+            }
+            ast::Body chart;
+            chart.language = ast::Language::ST;
+            if (!lowerNestedChart(*action, chart.statements))
+                return std::nullopt;
+            return callAction(name, std::move(chart), localId);
+        }
         }
         return std::nullopt;
     }
+
+public:
+    // An action of the POU whose body is a chart: its statements into `out`, its variables and the
+    // actions it calls into the POU.
+    bool lowerNestedChart(const model::PouAction &action, std::vector<ast::Stmt> &out)
+    {
+        model::Pou chartPou = m_pou;
+        chartPou.bodies.clear();
+        chartPou.bodies.push_back(action.body);
+        if (m_hiddenPrefix.contains(QLatin1Char('_') + action.name + QLatin1Char('_'))) {
+            error(kNoElement, QCoreApplication::translate("iec::interp::Compiler", "%1 is an SFC chart that contains itself.").arg(m_pou.name + QLatin1Char('.') + action.name));
+            return false;
+        }
+        Lowering nested(chartPou, m_result, m_diagnostics, m_parsed, m_hiddenPrefix + action.name + QLatin1Char('_'), &out);
+        nested.m_calledActions = m_calledActions;
+        nested.run();
+        m_calledActions.unite(nested.m_calledActions);
+        return !nested.m_failed;
+    }
+
+private:
 
     // A POU action by name (entry/exit/active actions of a step).
     QString stepActionText(const QString &name, const ChartStep &step)
@@ -591,7 +647,7 @@ private:
             for (const QString &name : m_conditionVariables)
                 decl += QStringLiteral("%1 : BOOL;\n").arg(name);
             Diagnostics local;
-            auto sections = parseDeclarations(QString(QStringLiteral("VAR\n") + decl + QStringLiteral("END_VAR\n")), m_pou.name, local);
+            auto sections = parseDeclarations(named(QStringLiteral("VAR\n") + decl + QStringLiteral("END_VAR\n")), m_pou.name, local);
             for (ast::VarSection &section : sections)
                 m_result.sections.push_back(std::move(section));
         }
@@ -600,7 +656,7 @@ private:
             return;
         expandSplices(statements);
         for (ast::Stmt &s : statements)
-            m_result.body.statements.push_back(std::move(s));
+            m_output->push_back(std::move(s));
     }
 
     // Located generated code goes through a splice so each element keeps its localId.
@@ -624,8 +680,11 @@ private:
             text += QStringLiteral("%1 := FALSE; %2 := FALSE; %3 := FALSE; %4 := FALSE; %5 := FALSE; %6 := FALSE;\n")
                         .arg(hidden("a", j, "q"), hidden("a", j, "qm"), hidden("a", j, "sff"), hidden("a", j, "sdff"),
                             hidden("a", j, "dsff"), hidden("a", j, "slff"));
-            if (!m_pouActions.contains(key(m_actions[j])) && !m_actions[j].startsWith(QLatin1String("__sfc_inline")))
-                text += QStringLiteral("%1 := FALSE;\n").arg(m_actions[j]);
+            if (!m_pouActions.contains(key(m_actions[j])) && !m_actions[j].startsWith(QLatin1String("__sfc_inline"))) {
+                const QString type = m_declared.value(key(m_actions[j]));
+                const bool boolean = type.isEmpty() || type == QLatin1String("BOOL"); // else a number used as an action
+                text += QStringLiteral("%1 := %2;\n").arg(m_actions[j], boolean ? QStringLiteral("FALSE") : QStringLiteral("0"));
+            }
         }
         return text;
     }
@@ -890,7 +949,12 @@ private:
             if (m_implicitActionFlags.contains(key(QLatin1Char('_') + name)))
                 text += QStringLiteral("_%1.x := %2; _%1._x := %3;\n").arg(name, runs, hidden("a", j, "q"));
         } else if (!name.startsWith(QLatin1String("__sfc_inline"))) {
-            text += QStringLiteral("%1 := %2 OR %3 OR %4;\n").arg(name, hidden("a", j, "q"), hidden("a", j, "p1q"), hidden("a", j, "p0q"));
+            const QString q = QStringLiteral("%1 OR %2 OR %3").arg(hidden("a", j, "q"), hidden("a", j, "p1q"), hidden("a", j, "p0q"));
+            const QString type = m_declared.value(key(name));
+            if (type.isEmpty() || type == QLatin1String("BOOL"))
+                text += QStringLiteral("%1 := %2;\n").arg(name, q);
+            else // a number used as an action (CODESYS accepts it): 1 while it is active, else 0
+                text += QStringLiteral("%1 := SEL(%2, 0, 1);\n").arg(name, q);
         }
         // Indicator variables are set by the action's own code (IEC 61131-3); the chart only checks
         // that they are Boolean variables.
@@ -914,8 +978,9 @@ private:
         } else {
             const QString type = m_declared.value(key(name));
             if (!type.isEmpty() && type != QLatin1String("BOOL"))
-                error(localId, QStringLiteral("The action %1 of step %2 is a variable of type %3; a variable used as an action must be BOOL.")
-                                   .arg(name, m_chart.steps[size_t(associations.front()->step)].name, type));
+                m_diagnostics.warning(m_pou.name, at(localId),
+                    QCoreApplication::translate("iec::interp::Compiler", "The action %1 of step %2 is a variable of type %3; it is 1 while the action is active and 0 otherwise.")
+                        .arg(name, m_chart.steps[size_t(associations.front()->step)].name, type));
             // A Boolean variable: the control above sets it (an unknown name is reported by the
             // compiler on the action); nothing to run.
             body = std::vector<ast::Stmt> {};
@@ -945,7 +1010,7 @@ private:
                 continue;
             const QString c = hidden("t", k, "c");
             const SourceLocation where = cond->location;
-            pre.push_back(graphical::assignStmt(graphical::nameExpr(c, where), std::move(*cond)));
+            pre.push_back(graphical::assignStmt(graphical::nameExpr(named(c), where), std::move(*cond)));
             QStringList enabled;
             for (int s : t.sources) {
                 const ChartStep &step = m_chart.steps[size_t(s)];
@@ -985,6 +1050,11 @@ private:
         return text;
     }
 
+public:
+    // An action the chart only calls by name: it is compiled as an action of the POU elsewhere.
+    void compiledApart(const QString &name) { m_calledActions.insert(key(name)); }
+
+private:
     const model::Pou &m_pou;
     ast::Pou &m_result;
     Diagnostics &m_diagnostics;
@@ -1000,6 +1070,8 @@ private:
     // The wired conditions' networks, built once per body that holds wired transitions.
     std::map<const model::Body *, std::unique_ptr<graphical::InputLowering>> m_wiredInputs;
     const std::vector<ast::SfcAction> *m_parsed = nullptr;
+    QString m_hiddenPrefix;
+    std::vector<ast::Stmt> *m_output;
     QSet<QString> m_calledActions; // keys of the actions already in m_result.actions
     bool m_failed = false;
 };
@@ -1015,6 +1087,15 @@ void lowerChart(const model::Pou &pou, ast::Pou &result, Diagnostics &diagnostic
         return;
     }
     Lowering(pou, result, diagnostics, parsedActions).run();
+}
+
+bool lowerActionChart(const model::Pou &pou, const model::PouAction &action, ast::Pou &result, std::vector<ast::Stmt> &out,
+    Diagnostics &diagnostics, const std::vector<ast::SfcAction> *parsedActions)
+{
+    Lowering outer(pou, result, diagnostics, parsedActions);
+    for (const model::PouAction &a : pou.actions) // each is compiled as an action of the POU already
+        outer.compiledApart(a.name);
+    return outer.lowerNestedChart(action, out);
 }
 
 void lowerTextualCharts(ast::CompilationUnit &unit, Diagnostics &diagnostics)
@@ -1037,6 +1118,29 @@ void lowerTextualCharts(ast::CompilationUnit &unit, Diagnostics &diagnostics)
         pou.body = {};
         pou.body.language = ast::Language::ST;
         lowerChart(chartPou, pou, diagnostics, &chart->actions);
+    }
+    // Charts in the actions of POUs written in ST or IL.
+    for (ast::Pou &pou : unit.pous) {
+        for (ast::SfcAction &action : pou.actions) {
+            if (action.body.language != ast::Language::SFC || !action.body.sfc)
+                continue;
+            model::Pou chartPou;
+            chartPou.name = pou.name;
+            chartPou.kind = pou.kind == ast::PouKind::FunctionBlock ? model::PouKind::FunctionBlock : model::PouKind::Program;
+            for (const ast::SfcAction &other : pou.actions) {
+                model::PouAction placeholder; // the parsed bodies stand in for them
+                placeholder.name = other.name;
+                if (&other == &action)
+                    placeholder.body = chartToModel(*action.body.sfc, pou.name, diagnostics);
+                chartPou.actions.push_back(std::move(placeholder));
+            }
+            const model::PouAction chartAction = chartPou.actions[size_t(&action - pou.actions.data())];
+            const std::vector<ast::SfcAction> others = pou.actions;
+            ast::Body lowered;
+            lowered.language = ast::Language::ST;
+            lowerActionChart(chartPou, chartAction, pou, lowered.statements, diagnostics, &others);
+            action.body = std::move(lowered);
+        }
     }
 }
 

@@ -18,6 +18,12 @@ namespace iec::interp::sfc {
 void lowerChart(const model::Pou &pou, ast::Pou &result, Diagnostics &diagnostics,
     const std::vector<ast::SfcAction> *parsedActions = nullptr);
 
+// An action of `pou` whose body is itself a chart (in a POU of any language): its statements go
+// to `out`, its hidden variables (named apart from the POU's own chart) to `result.sections`, and
+// the IL actions it calls to `result.actions`. False after an error.
+bool lowerActionChart(const model::Pou &pou, const model::PouAction &action, ast::Pou &result, std::vector<ast::Stmt> &out,
+    Diagnostics &diagnostics, const std::vector<ast::SfcAction> *parsedActions = nullptr);
+
 // Lowers every textual SFC chart of `unit` (parsed straight from .st text) in place.
 void lowerTextualCharts(ast::CompilationUnit &unit, Diagnostics &diagnostics);
 

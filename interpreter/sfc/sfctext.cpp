@@ -19,6 +19,8 @@ QString expressionText(const ast::Expr &e)
         return expressionText(e.operands[0]) + QLatin1Char('.') + e.text;
     case ast::ExprKind::BitAccess:
         return expressionText(e.operands[0]) + QLatin1Char('.') + e.text;
+    case ast::ExprKind::Deref:
+        return expressionText(e.operands[0]) + QLatin1Char('^');
     case ast::ExprKind::Index: {
         QStringList indices;
         for (size_t i = 1; i < e.operands.size(); ++i)

@@ -91,6 +91,11 @@ constexpr std::uint32_t kOffsetMask = 0x7fffffffu;
     X(Now)                                                /* a (LTIME) = the virtual clock */               \
     X(CheckRange)                                         /* fault unless b lies in descriptor aux's range \
                                                               (an assignment to a subrange type) */         \
+    X(Log)                                                /* message: the STRING b at level a (Beremiz LOGGER) \
+                                                              into Vm::log */                              \
+    X(CheckPtr)                                           /* fault unless the address in b lies in the   \
+                                                              image with d bytes after it (pointers and   \
+                                                              references: 0 is NullPointer) */             \
     X(Fault)                                              /* stop with the fault kind in aux */           \
     X(JitEnter)                                           /* run machine-code entry a (jit.h); only in the \
                                                               JIT's copy of the code */
@@ -162,6 +167,8 @@ enum class FaultKind : std::uint16_t {
     CallDepthExceeded,
     InvalidProgram,
     OutOfSubrange,
+    NullPointer,    // a pointer or reference that is 0 was dereferenced
+    InvalidAddress, // a pointer that points outside the program's memory was dereferenced
 };
 QString faultMessage(FaultKind kind);
 
@@ -195,7 +202,9 @@ struct TaskInfo {
     std::uint32_t entry = 0;          // code that runs the programs in order, then halts
 };
 
-// A variable with an address in the process image (AT %QX0.1 or a %QX0.1 used in code).
+// A variable with an address in the process image (AT %QX0.1 or a %QX0.1 used in code). The
+// program reads and writes the image itself; `offset` is the variable's own slot, which names
+// (Main.q) resolve to and the symbol table redirects to the image.
 struct LocatedVar {
     QString address;     // %QX0.1
     char area = 'I';     // I, Q, M
@@ -239,6 +248,7 @@ struct Module {
     std::vector<RetainRange> retain;
     std::vector<LineEntry> lines;
     std::uint32_t imageSizes[3] = {0, 0, 0}; // I, Q, M bytes
+    std::uint32_t imageBase[3] = {0, 0, 0};  // where the I, Q, M areas lie in the memory image
 
     // The POU and line of the instruction at pc.
     LineEntry lineAt(std::uint32_t pc) const;

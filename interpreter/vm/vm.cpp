@@ -31,6 +31,10 @@ QString faultMessage(FaultKind kind)
     case FaultKind::InvalidProgram: return QCoreApplication::translate("iec::interp::Runtime", "The program cannot run (it did not compile).");
     case FaultKind::OutOfSubrange:
         return QCoreApplication::translate("iec::interp::Runtime", "A value outside the subrange of its type was assigned.");
+    case FaultKind::NullPointer:
+        return QCoreApplication::translate("iec::interp::Runtime", "A pointer or reference that points nowhere (0) was used.");
+    case FaultKind::InvalidAddress:
+        return QCoreApplication::translate("iec::interp::Runtime", "A pointer that points outside the program's memory was used.");
     }
     return {};
 }
@@ -906,11 +910,30 @@ FaultKind Vm::run(std::uint32_t entry)
         L_Now:
             store<std::int64_t>(P(ip->a), clockNs);
             NEXT();
+        L_Log: {
+            if (log.size() < kMaxLog) {
+                const StringRef text = str(ip->b, false);
+                QString message;
+                for (int i = 0; i < text.length(); ++i)
+                    message += QChar(text.at(i));
+                log.push_back({load<std::int16_t>(P(ip->a)), message});
+            }
+            NEXT();
+        }
         L_CheckRange: {
             const IndexDescriptor &dsc = descriptors[ip->aux];
             const std::int64_t offset = readIndex(dsc, P(ip->b)) - dsc.low;
             if (offset < 0 || offset >= dsc.count)
                 FAULT(FaultKind::OutOfSubrange);
+            NEXT();
+        }
+        L_CheckPtr: {
+            // Offsets below 8 are never a variable (offset 0 is the null pointer).
+            const std::uint64_t address = load<std::uint32_t>(P(ip->b));
+            if (address < 8)
+                FAULT(FaultKind::NullPointer);
+            if (address + ip->d > m_memory.size())
+                FAULT(FaultKind::InvalidAddress);
             NEXT();
         }
         L_Fault:

@@ -2,6 +2,8 @@
 
 #include "interpreter/vm/bytecode.h"
 
+#include <QString>
+
 #include <memory>
 
 #include <cstdint>
@@ -33,6 +35,15 @@ public:
     // How many backward jumps and calls one run() may make before it stops with BudgetExceeded:
     // an endless loop stops the program instead of the host.
     std::uint64_t budgetPerRun = 50'000'000;
+
+    // Messages of op::Log (Beremiz LOGGER) since the runtime last took them: level (0 critical,
+    // 1 warning, 2 info, 3 debug) and text. Bounded: a program logging every cycle cannot fill memory.
+    struct LogMessage {
+        int level = 2;
+        QString text;
+    };
+    std::vector<LogMessage> log;
+    static constexpr std::size_t kMaxLog = 1000;
 
     // Runs from `entry` until Halt (or the outermost Ret). Returns FaultKind::None, or the fault
     // with faultPc() telling where.

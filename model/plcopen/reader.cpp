@@ -1,6 +1,7 @@
 #include "model/plcopen/reader.h"
 
 #include "model/layout.h"
+#include "model/plcopen/repair.h"
 #include "model/plcopen/schema_project.h"
 
 #include <QFile>
@@ -82,6 +83,7 @@ ReadResult readProject(const QByteArray &bytes)
         return result;
     }
     checkNamespace(root, context);
+    repairOldForms(root, context);
     result.isProject = true;
 
     XmlIn in(root, context);

@@ -134,9 +134,10 @@ void TestStdlibAudit::conversions_data()
     expr("times as numbers", "a : TIME; b : DINT; c : DATE; d : TOD;",
          "a := DINT_TO_TIME(1500); b := TIME_TO_DINT(T#2s); c := DT_TO_DATE(DT#2024-01-02-03:04:05); d := DT_TO_TOD(DT#2024-01-02-03:04:05);",
          "a=T#1s500ms; b=2000; c=D#2024-01-02; d=TOD#03:04:05");
+    // INT_TO_BCD is CODESYS Util's: two digits in a BYTE, 255 for a value outside 0..99 (1234).
     expr("BCD of integers", "a : WORD; b : INT; c : DWORD; d : WORD; e : INT; f : USINT;",
          "a := INT_TO_BCD(1234); b := WORD_BCD_TO_INT(WORD#16#1234); c := DINT_TO_BCD(12345678); d := INT_TO_BCD_WORD(99); e := WORD_BCD_TO_INT(WORD#16#0099); f := BYTE_BCD_TO_USINT(BYTE#16#12);",
-         "a=4660; b=1234; c=305419896; d=153; e=99; f=12");
+         "a=255; b=1234; c=305419896; d=153; e=99; f=12");
     // Generic BCD_TO_INT (any bit string in) and WORD_TO_BCD (a bit string's binary value as BCD).
     expr("generic BCD names", "w : WORD := 16#1234; a : INT; b : DINT; c : WORD; d : BYTE; e : INT;",
          "a := BCD_TO_INT(w); b := BCD_TO_DINT(DWORD#16#00987654); c := WORD_TO_BCD(WORD#99); d := BYTE_TO_BCD(BYTE#42); e := BCD_TO_INT(16#0042);",

@@ -99,7 +99,9 @@ void TestVm::conversions_data()
          "a='42'; b='16#2a'; c='16#ff'");
     expr("from string", "i : INT; r : REAL; b : BOOL; t : TIME;", "i := STRING_TO_INT('123'); r := STRING_TO_REAL('2.25'); b := STRING_TO_BOOL('TRUE'); t := STRING_TO_TIME('T#5s');",
          "i=123; r=2.25; b=TRUE; t=T#5s");
-    expr("bcd", "w : WORD; i : INT; b : BYTE;", "w := INT_TO_BCD(1234); i := WORD_BCD_TO_INT(16#0987); b := USINT_TO_BCD_BYTE(42);", "w=4660; i=987; b=66");
+    // INT_TO_BCD is CODESYS Util's (a BYTE, 255 outside 0..99); INT_TO_BCD_WORD gives four digits.
+    expr("bcd", "w : WORD; i : INT; b : BYTE; v : WORD;", "w := INT_TO_BCD(1234); i := WORD_BCD_TO_INT(16#0987); b := USINT_TO_BCD_BYTE(42); v := INT_TO_BCD_WORD(1234);",
+         "w=255; i=987; b=66; v=4660");
     expr("typed literals", "a : INT; b : BOOL; w : WORD; r : REAL;", "a := INT#-5; b := BOOL#1; w := WORD#16#FFFF; r := REAL#2;", "a=-5; b=TRUE; w=65535; r=2.0");
     expr("enum conversion", "TYPE_UNUSED : INT;", ";", "TYPE_UNUSED=0");
 }

@@ -72,6 +72,7 @@ private Q_SLOTS:
     void hostileInput_data();
     void hostileInput();
     void missingFileIsAFileError();
+    void oldFormsLoadWithWarningsAndAreWrittenValid();
 };
 
 void TestPlcopenRobustness::truncatedInputIsAnErrorWithALine()
@@ -281,6 +282,41 @@ void TestPlcopenRobustness::missingFileIsAFileError()
     QVERIFY(!result.ok);
     QCOMPARE(result.diagnostics.size(), std::size_t {1});
     QVERIFY(result.diagnostics.front().message.startsWith(QStringLiteral("Cannot open /nonexistent/project.xml: ")));
+}
+
+// Older exports that are not quite valid: an <action> without localId and relPosition, a
+// <pouInstance type=...>, a creationDateTime with a space. They load with one warning each and
+// are written back valid.
+void TestPlcopenRobustness::oldFormsLoadWithWarningsAndAreWrittenValid()
+{
+    QByteArray bytes = sample("fixture:every_element.xml");
+    const auto replaceOnce = [&](const QByteArray &from, const QByteArray &to) {
+        QVERIFY2(bytes.count(from) >= 1, from.constData());
+        const qsizetype at = bytes.indexOf(from);
+        bytes.replace(at, from.size(), to);
+    };
+    replaceOnce(R"(creationDateTime="2026-01-02T03:04:05")", R"(creationDateTime="2026-01-02 03:04:05")");
+    replaceOnce(R"(<action localId="0" qualifier="L")", R"(<action qualifier="L")");
+    replaceOnce("<relPosition x=\"0\" y=\"0\" />\n                <reference name=\"Reset\" />", "<reference name=\"Reset\" />");
+    replaceOnce(R"(<pouInstance name="ChartInstance" typeName="Chart" />)", R"(<pouInstance name="ChartInstance" type="Chart" />)");
+    const plcopen::ReadResult result = plcopen::readProject(bytes);
+    QVERIFY(result.ok);
+    QVERIFY(!hasError(result));
+    QStringList warnings;
+    for (const Diagnostic &d : result.diagnostics)
+        warnings << d.message;
+    QCOMPARE(warnings.size(), 4);
+    QVERIFY2(warnings.join(QLatin1Char('\n')).contains(QStringLiteral("creationDateTime '2026-01-02 03:04:05' has a space")), qPrintable(warnings.join(QLatin1Char('\n'))));
+    QVERIFY(warnings.join(QLatin1Char('\n')).contains(QStringLiteral("This <action> has no localId")));
+    QVERIFY(warnings.join(QLatin1Char('\n')).contains(QStringLiteral("This <action> has no position")));
+    QVERIFY(warnings.join(QLatin1Char('\n')).contains(QStringLiteral("names its POU with 'type'")));
+    const QByteArray written = plcopen::writeProject(result.project);
+    QCOMPARE(schemaErrors(written), QString());
+    QVERIFY(written.contains(R"(creationDateTime="2026-01-02T03:04:05")"));
+    QVERIFY(written.contains(R"(<pouInstance name="ChartInstance" typeName="Chart")"));
+    const plcopen::ReadResult again = plcopen::readProject(written);
+    QVERIFY(again.ok);
+    QVERIFY(again.diagnostics.empty());
 }
 
 QTEST_GUILESS_MAIN(TestPlcopenRobustness)

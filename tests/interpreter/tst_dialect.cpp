@@ -1,0 +1,180 @@
+// The CODESYS dialect of IEC 61131-3, scan by scan with the values CODESYS computes:
+// implicit conversions (accepted with CODESYS's warnings, the value wraps or is rounded like
+// the *_TO_* function), pointers and references, AND_THEN/OR_ELSE, CONTINUE and JMP in ST.
+#include "tracerunner.h"
+
+#include <QTest>
+
+using namespace iec::interp;
+using namespace iec::interp::testing;
+using namespace iec::interp::testing::table;
+
+namespace {
+
+// The warnings of a program as "line:column: message", joined by " | "; "does not compile: ..."
+// when it has errors.
+QString warningsOf(const QString &body, const QString &declarations)
+{
+    Diagnostics diagnostics;
+    compileText(QStringLiteral("PROGRAM Main\nVAR %1 END_VAR\n%2\nEND_PROGRAM\n").arg(declarations, body), diagnostics);
+    if (diagnostics.hasErrors())
+        return QStringLiteral("does not compile: ") + errorsOf(diagnostics);
+    QStringList lines;
+    for (const Diagnostic &d : diagnostics.all())
+        lines << QStringLiteral("%1:%2: %3").arg(d.location.line).arg(d.location.column).arg(d.message);
+    return lines.join(QStringLiteral(" | "));
+}
+
+} // namespace
+
+class TestDialect : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void implicitConversions_data();
+    void implicitConversions() { check(); }
+    void conversionWarnings_data();
+    void conversionWarnings();
+    void pointers_data();
+    void pointers() { check(); }
+    void pointerFaults_data();
+    void pointerFaults();
+    void references_data();
+    void references() { check(); }
+    void controlFlow_data();
+    void controlFlow() { check(); }
+};
+
+void TestDialect::implicitConversions_data()
+{
+    columns();
+    // DINT 70000 = 16#1_1170 into an INT keeps 16#1170 = 4464 (CODESYS on x86: the low word).
+    expr("narrowing wraps", "i : INT; d : DINT := 70000;", "i := d;", "i=4464");
+    expr("signed to unsigned", "u : UINT; i : INT := -1;", "u := i;", "u=65535");
+    expr("word to int", "i : INT; w : WORD := 16#FFFF;", "i := w;", "i=-1");
+    expr("byte to sint", "s : SINT; b : BYTE := 200;", "s := b;", "s=-56");
+    // REAL to an integer rounds as REAL_TO_INT does: 2.5 -> 3, -2.5 -> -3, 1.4 -> 1.
+    expr("real to int rounds", "i : INT; j : INT; k : INT; r : REAL := 2.5; q : REAL := -2.5; t : REAL := 1.4;", "i := r; j := q; k := t;", "i=3; j=-3; k=1");
+    expr("lreal to real", "r : REAL; l : LREAL := 0.1;", "r := l;", "r=0.1");
+    expr("dint to real", "r : REAL; d : DINT := 16777217;", "r := d;", "r=16777216.0");
+    // TRUNC gives the integer type it is assigned to (no warning), cutting towards zero.
+    expr("trunc into int", "i : INT; r : REAL := -2.7; s : SINT; q : REAL := 99.9;", "i := TRUNC(r); s := TRUNC(q);", "i=-2; s=99");
+    // CODESYS computes with bit strings and combines integers bit by bit.
+    expr("word arithmetic", "w : WORD := 16#00FF; b : BYTE := 255;", "w := w + 1; b := b + 1;", "w=256; b=0");
+    expr("integer and", "i : INT := -1; x : INT;", "x := i AND 16#0F0F;", "x=3855");
+    expr("not of an integer", "i : INT := 5; x : INT;", "x := NOT i;", "x=-6");
+    expr("word and int", "w : WORD := 16#8000; i : INT := 1; d : DINT;", "d := w + i;", "d=32769");
+    expr("function argument narrowed", "s : SINT; i : INT := 300;", "s := MAX(i, 0);", "s=44");
+}
+
+void TestDialect::conversionWarnings_data()
+{
+    QTest::addColumn<QString>("declarations");
+    QTest::addColumn<QString>("body");
+    QTest::addColumn<QString>("warnings");
+    QTest::newRow("narrowing") << "i : INT; d : DINT;" << "i := d;" << "3:1: Implicit conversion from DINT to INT: possible loss of information.";
+    QTest::newRow("sign") << "u : UINT; i : INT;" << "u := i;" << "3:1: Implicit conversion from signed type INT to unsigned type UINT: possible change of sign.";
+    QTest::newRow("unsigned to signed") << "u : UINT; i : INT;" << "i := u;" << "3:1: Implicit conversion from unsigned type UINT to signed type INT: possible change of sign.";
+    QTest::newRow("real to int") << "r : REAL; i : INT;" << "i := r;" << "3:1: Implicit conversion from REAL to INT: possible loss of information.";
+    QTest::newRow("word to uint is silent") << "u : UINT; w : WORD;" << "u := w; w := u;" << "";
+    QTest::newRow("widening is silent") << "i : INT; d : DINT; r : LREAL;" << "d := i; r := d;" << "";
+    QTest::newRow("trunc is silent") << "i : INT; r : REAL;" << "i := TRUNC(r);" << "";
+    QTest::newRow("literals are silent") << "b : BYTE; s : SINT;" << "b := 255; s := -128;" << "";
+    // Pragmas: the attributes CODESYS writes are kept without a word, {warning} is shown, an
+    // unknown one gets a note.
+    QTest::newRow("attribute pragma") << "i : INT;" << "{attribute 'qualified_only'}\ni := 1;" << "";
+    QTest::newRow("warning pragma") << "i : INT;" << "{warning 'calibrate first'}\ni := 1;" << "3:1: calibrate first";
+    QTest::newRow("unknown pragma") << "i : INT;" << "{frobnicate 7}\ni := 1;"
+                                    << "3:1: The pragma {frobnicate 7} means nothing to IEC Studio; it is ignored.";
+}
+
+void TestDialect::conversionWarnings()
+{
+    QFETCH(QString, declarations);
+    QFETCH(QString, body);
+    QFETCH(QString, warnings);
+    QCOMPARE(warningsOf(body, declarations), warnings);
+}
+
+void TestDialect::pointers_data()
+{
+    columns();
+    expr("read and write through a pointer", "p : POINTER TO INT; x : INT := 5; y : INT;", "p := ADR(x); y := p^; p^ := 7;", "x=7; y=5");
+    // Pointer arithmetic counts bytes: two INTs further is 4 bytes further.
+    expr("arithmetic in bytes", "arr : ARRAY[0..3] OF INT := [10, 20, 30, 40]; p : POINTER TO INT; y : INT;",
+         "p := ADR(arr[0]); p := p + 2 * SIZEOF(arr[0]); y := p^;", "y=30");
+    expr("sizeof", "d : DINT; arr : ARRAY[1..5] OF LREAL; s1 : DINT; s2 : DINT; s3 : DINT; s4 : DINT;",
+         "s1 := SIZEOF(d); s2 := SIZEOF(arr); s3 := SIZEOF(INT); s4 := SIZEOF(arr[2]);", "s1=4; s2=40; s3=2; s4=8");
+    // x86 stores the low byte first: DWORD 16#11223344 is 44 33 22 11 in memory.
+    expr("bytes of a dword", "d : DWORD := 16#11223344; pb : POINTER TO BYTE; b0 : BYTE; b1 : BYTE;",
+         "pb := ADR(d); b0 := pb^; pb := pb + 1; b1 := pb^;", "b0=68; b1=51");
+    expr("compare with 0", "p : POINTER TO INT; x : INT; none : BOOL; set : BOOL;", "none := p = 0; p := ADR(x); set := p <> 0;", "none=TRUE; set=TRUE");
+    expr("distance of two pointers", "arr : ARRAY[0..9] OF DINT; a : POINTER TO DINT; b : POINTER TO DINT; n : DINT;",
+         "a := ADR(arr[2]); b := ADR(arr[7]); n := b - a;", "n=20");
+    row("member through a pointer", "TYPE Pair : STRUCT a : INT; b : INT; END_STRUCT; END_TYPE\n"
+                                    "PROGRAM Main VAR s : Pair; p : POINTER TO Pair; y : INT; END_VAR\n"
+                                    "p := ADR(s); p^.b := 9; y := p^.b + s.b;\nEND_PROGRAM",
+        {"=> y=18"});
+    // A timer called through a pointer: Q after 20 ms at a 10 ms cycle (its third call).
+    row("function block through a pointer", "VAR t : TON; pt : POINTER TO TON; q : BOOL; END_VAR\n"
+                                            "pt := ADR(t); pt^(IN := TRUE, PT := T#20ms); q := pt^.Q;",
+        {"=> q=FALSE", "=> q=FALSE", "=> q=TRUE"});
+    row("pointer to an element chosen at run time", "VAR arr : ARRAY[1..3] OF INT := [1, 2, 3]; i : INT := 2; p : POINTER TO INT; END_VAR\n"
+                                                    "p := ADR(arr[i]); p^ := p^ * 10; i := i + 1;",
+        {"=> arr=[1, 20, 3]", "=> arr=[1, 20, 30]"});
+    expr("ref_to of edition 3", "r : REF_TO INT; x : INT := 4; y : INT;", "r := REF(x); y := r^ + 1;", "y=5");
+    expr("and_then skips a null pointer", "p : POINTER TO INT; ok : BOOL := TRUE; other : BOOL;", "ok := p <> 0 AND_THEN p^ > 0; other := p = 0 OR_ELSE p^ > 0;",
+         "ok=FALSE; other=TRUE");
+}
+
+void TestDialect::pointerFaults_data()
+{
+    QTest::addColumn<QString>("source");
+    QTest::addColumn<QString>("fault");
+    QTest::newRow("null pointer read") << "VAR p : POINTER TO INT; y : INT; END_VAR\ny := 1;\ny := p^;"
+                                       << "Main:4: A pointer or reference that points nowhere (0) was used. (cycle 1)";
+    QTest::newRow("null pointer write") << "VAR p : POINTER TO DINT; END_VAR\np^ := 1;"
+                                        << "Main:3: A pointer or reference that points nowhere (0) was used. (cycle 1)";
+    QTest::newRow("wild pointer") << "VAR p : POINTER TO INT; x : INT; END_VAR\np := ADR(x) + 100000000;\nx := p^;"
+                                  << "Main:4: A pointer that points outside the program's memory was used. (cycle 1)";
+    QTest::newRow("unset reference") << "VAR r : REFERENCE TO INT; y : INT; END_VAR\ny := r;"
+                                     << "Main:3: A pointer or reference that points nowhere (0) was used. (cycle 1)";
+}
+
+void TestDialect::pointerFaults()
+{
+    QFETCH(QString, source);
+    QFETCH(QString, fault);
+    Diagnostics diagnostics;
+    const QString program = QStringLiteral("PROGRAM Main\n") + source + QStringLiteral("\nEND_PROGRAM\n");
+    const auto module = compileText(program, diagnostics);
+    QVERIFY2(module, qPrintable(errorsOf(diagnostics)));
+    Runtime runtime(module);
+    QVERIFY(!runtime.runCycle());
+    QCOMPARE(runtime.fault()->toString(), fault);
+    QVERIFY(!runtime.runCycle()); // stopped, the host goes on
+}
+
+void TestDialect::references_data()
+{
+    columns();
+    expr("read and write through a reference", "r : REFERENCE TO INT; x : INT := 3; y : INT;", "r REF= x; r := r + 1; y := r * 2;", "x=4; y=8");
+    expr("isvalidref", "r : REFERENCE TO INT; x : INT; before : BOOL := TRUE; after : BOOL;",
+         "before := __ISVALIDREF(r); r REF= x; after := __ISVALIDREF(r);", "before=FALSE; after=TRUE");
+    expr("rebinding", "r : REFERENCE TO INT; a : INT; b : INT;", "r REF= a; r := 1; r REF= b; r := 2;", "a=1; b=2");
+    row("reference to a struct member", "TYPE Pair : STRUCT a : INT; b : INT; END_STRUCT; END_TYPE\n"
+                                        "PROGRAM Main VAR s : Pair; r : REFERENCE TO INT; END_VAR\nr REF= s.b; r := 5;\nEND_PROGRAM",
+        {"=> s=(a := 0, b := 5)"});
+}
+
+void TestDialect::controlFlow_data()
+{
+    columns();
+    expr("continue", "i : INT; s : INT;", "s := 0; FOR i := 1 TO 10 DO IF i MOD 2 = 0 THEN CONTINUE; END_IF; s := s + i; END_FOR;", "s=25");
+    row("jmp in st", "VAR i : INT; END_VAR\ni := 0;\nLoop:\ni := i + 1;\nIF i < 5 THEN\nJMP Loop;\nEND_IF;", {"=> i=5", "=> i=5"});
+    row("jmp forward in st", "VAR i : INT; j : INT; END_VAR\ni := i + 1;\nJMP Skip;\nj := 99;\nSkip: j := j + i;", {"=> i=1; j=1", "=> i=2; j=3"});
+}
+
+QTEST_GUILESS_MAIN(TestDialect)
+#include "tst_dialect.moc"
