@@ -87,6 +87,9 @@ bool BuildController::build(const interp::CompileOptions &options)
     // What the user typed in the last moments is part of what they asked to build.
     m_documents.flushEdits();
     interp::Diagnostics diagnostics;
+    // The compile runs on the compiler's own thread with a stack of known size and waits for it
+    // (interpreter/compiler/limits.h): the same nesting limits as iecstudio-cli, whatever this
+    // thread's stack.
     m_module = interp::frontend::compileProject(m_projectModel.project(), diagnostics, options);
     m_messages = messagesOf(diagnostics);
     m_messagesPane.model().setMessages(kBuildSource, m_messages);

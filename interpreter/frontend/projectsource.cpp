@@ -1,5 +1,6 @@
 #include "interpreter/frontend/projectsource.h"
 
+#include "interpreter/compiler/compilerstack.h"
 #include "interpreter/compiler/parser.h"
 #include "interpreter/frontend/iecprinter.h"
 #include "interpreter/graphical/graphicallowering.h"
@@ -136,7 +137,9 @@ ast::CompilationUnit parseProjectText(const model::Project &project, Diagnostics
 ProjectUnit buildUnit(const model::Project &project, Diagnostics &diagnostics)
 {
     Diagnostics parsing;
-    ProjectUnit result {parseProjectText(project, parsing), false};
+    ProjectUnit result;
+    // Parsing and lowering on the compiler's stack, like the compile (limits.h).
+    runOnCompilerStack([&] { result.unit = parseProjectText(project, parsing); });
     result.parseErrors = parsing.hasErrors();
     diagnostics.append(parsing);
     return result;
@@ -175,7 +178,10 @@ void dropConfigurations(ast::CompilationUnit &unit)
 std::shared_ptr<const Module> compileProject(
     const model::Project &project, Diagnostics &diagnostics, const CompileOptions &options)
 {
-    return compileUnit(buildUnit(project, diagnostics), diagnostics, options);
+    // Lowering and parsing run on the compiler's stack too (limits.h).
+    std::shared_ptr<const Module> module;
+    runOnCompilerStack([&] { module = compileUnit(buildUnit(project, diagnostics), diagnostics, options); });
+    return module;
 }
 
 } // namespace iec::interp::frontend
