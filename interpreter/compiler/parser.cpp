@@ -1,5 +1,6 @@
 #include "interpreter/compiler/parser.h"
 
+#include "interpreter/compiler/compilerstack.h"
 #include "interpreter/compiler/limits.h"
 
 #include <QCoreApplication>
@@ -1731,25 +1732,39 @@ int binaryPrecedence(QStringView op)
     return 0;
 }
 
+// The entry points parse on the compiler's stack (compilerstack.h): the nesting limits above are
+// safe there whatever thread asks (an editor's check while typing, the GUI thread).
+namespace {
+
+template<class Result, class Read>
+Result onCompilerStack(Read read)
+{
+    Result result;
+    runOnCompilerStack([&] { result = read(); });
+    return result;
+}
+
+} // namespace
+
 CompilationUnit parseUnit(QStringView text, Diagnostics &diagnostics)
 {
-    return Parser(text, diagnostics, QString(), 1).unit();
+    return onCompilerStack<CompilationUnit>([&] { return Parser(text, diagnostics, QString(), 1).unit(); });
 }
 
 std::vector<Stmt> parseStBody(QStringView text, const QString &pou, Diagnostics &diagnostics, int firstLine)
 {
-    return Parser(text, diagnostics, pou, firstLine).stBody();
+    return onCompilerStack<std::vector<Stmt>>([&] { return Parser(text, diagnostics, pou, firstLine).stBody(); });
 }
 
 std::vector<IlInstruction> parseIlBody(QStringView text, const QString &pou, Diagnostics &diagnostics, int firstLine)
 {
-    return Parser(text, diagnostics, pou, firstLine).ilBody();
+    return onCompilerStack<std::vector<IlInstruction>>([&] { return Parser(text, diagnostics, pou, firstLine).ilBody(); });
 }
 
 std::vector<VarSection> parseDeclarations(QStringView text, const QString &pou, Diagnostics &diagnostics,
                                           int firstLine)
 {
-    return Parser(text, diagnostics, pou, firstLine).declarations();
+    return onCompilerStack<std::vector<VarSection>>([&] { return Parser(text, diagnostics, pou, firstLine).declarations(); });
 }
 
 } // namespace iec::interp

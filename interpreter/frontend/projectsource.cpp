@@ -145,11 +145,11 @@ ProjectUnit buildUnit(const model::Project &project, Diagnostics &diagnostics)
     return result;
 }
 
-std::shared_ptr<const Module> compileUnit(
+namespace {
+
+std::shared_ptr<const Module> compileParsedUnit(
     const ProjectUnit &unit, Diagnostics &diagnostics, const CompileOptions &options)
 {
-    if (unit.parseErrors)
-        return nullptr;
     Diagnostics compiling;
     const bool hasTextualCharts = std::any_of(unit.unit.pous.begin(), unit.unit.pous.end(),
         [](const ast::Pou &pou) { return pou.body.language == ast::Language::SFC; });
@@ -163,6 +163,19 @@ std::shared_ptr<const Module> compileUnit(
     std::shared_ptr<const Module> module = compile({&unit.unit}, compiling, options);
     diagnostics.append(compiling);
     return diagnostics.hasErrors() ? nullptr : module;
+}
+
+} // namespace
+
+std::shared_ptr<const Module> compileUnit(
+    const ProjectUnit &unit, Diagnostics &diagnostics, const CompileOptions &options)
+{
+    if (unit.parseErrors)
+        return nullptr;
+    // The lowering of textual charts on the compiler's stack, like the compile (limits.h).
+    std::shared_ptr<const Module> module;
+    runOnCompilerStack([&] { module = compileParsedUnit(unit, diagnostics, options); });
+    return module;
 }
 
 void dropConfigurations(ast::CompilationUnit &unit)
