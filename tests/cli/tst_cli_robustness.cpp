@@ -4,6 +4,7 @@
 // written (a full disk: a file size limit on the process; a read-only folder, written by a user
 // who is not root) says why, exits with 3 and leaves the old file as it was.
 #include "../interpreter/deepinputs.h"
+#include "clirun.h"
 
 #include <QDir>
 #include <QFile>
@@ -33,33 +34,9 @@ private:
 
 namespace {
 
-struct Result {
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
-
-// `inChild` runs in the child between fork and exec (limits, rights).
-Result cli(const QStringList &arguments, const std::function<void()> &inChild = {})
-{
-    QProcess process;
-    if (inChild)
-        process.setChildProcessModifier(inChild);
-    process.start(QStringLiteral(IECSTUDIO_CLI), arguments);
-    if (!process.waitForFinished(300'000))
-        return {};
-    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2,
-        QString::fromUtf8(process.readAllStandardOutput()), QString::fromUtf8(process.readAllStandardError())};
-}
-
-QString writeFile(const QTemporaryDir &dir, const QString &name, const QString &text)
-{
-    const QString path = dir.filePath(name);
-    QFile file(path);
-    if (file.open(QIODevice::WriteOnly))
-        file.write(text.toUtf8());
-    return path;
-}
+using clirun::cli;
+using clirun::Result;
+using clirun::writeFile;
 
 } // namespace
 
