@@ -39,7 +39,8 @@ QMainWindow *mainWindow()
     return nullptr;
 }
 
-// The first item of the tree (breadth first) that shows `text`.
+// The first item of the tree (breadth first) named `text` (the name is the edit role: the display
+// adds the kind, "Main (PRG)").
 QModelIndex findItem(const QAbstractItemModel &model, const QString &text)
 {
     std::deque<QModelIndex> pending {QModelIndex()};
@@ -48,7 +49,7 @@ QModelIndex findItem(const QAbstractItemModel &model, const QString &text)
         pending.pop_front();
         for (int row = 0; row < model.rowCount(parent); ++row) {
             const QModelIndex index = model.index(row, 0, parent);
-            if (index.data().toString() == text)
+            if (index.data(Qt::EditRole).toString() == text)
                 return index;
             pending.push_back(index);
         }

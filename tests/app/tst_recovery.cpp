@@ -92,7 +92,7 @@ void TestRecovery::killedWhileEditingRecoversTheEdit()
     editing.setProcessChannelMode(QProcess::ForwardedErrorChannel);
     editing.start(QStringLiteral(IECSTUDIO), {project});
     QVERIFY2(editing.waitForStarted(), qPrintable(editing.errorString()));
-    QTRY_VERIFY_WITH_TIMEOUT(recoveryHolds(home.path(), kMarker) || editing.state() == QProcess::NotRunning, 180'000);
+    QTRY_VERIFY_WITH_TIMEOUT(recoveryHolds(home.path(), kMarker) || editing.state() == QProcess::NotRunning, 90'000);
     QVERIFY2(editing.state() == QProcess::Running, "iecstudio ended before its autosave");
     editing.kill(); // SIGKILL: nothing is cleaned up
     QVERIFY(editing.waitForFinished(30'000));
@@ -103,7 +103,7 @@ void TestRecovery::killedWhileEditingRecoversTheEdit()
     QProcess recovering;
     recovering.setProcessEnvironment(sessionEnvironment(home.path(), QStringLiteral("recover")));
     recovering.start(QStringLiteral(IECSTUDIO), {});
-    QVERIFY2(recovering.waitForFinished(180'000), "iecstudio did not recover, save and quit");
+    QVERIFY2(recovering.waitForFinished(120'000), "iecstudio did not recover, save and quit");
     const QString driver = QString::fromUtf8(recovering.readAllStandardError());
     QVERIFY2(recovering.exitStatus() == QProcess::NormalExit && recovering.exitCode() == 0, qPrintable(driver));
     QVERIFY2(driver.contains(QStringLiteral("driver: answered Recover")) && driver.contains(QStringLiteral("driver: saved")),

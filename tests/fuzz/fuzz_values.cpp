@@ -18,8 +18,8 @@ Runtime &runtime()
         const auto module = compileText(QStringLiteral(
             "TYPE Color : (Red, Green, Blue); Pt : STRUCT x : INT; y : LREAL; END_STRUCT; Pct : INT(0..100); END_TYPE\n"
             "PROGRAM Main\nVAR b : BOOL; si : SINT; i : INT; di : DINT; li : LINT; us : USINT; ui : UINT; ud : UDINT; "
-            "ul : ULINT; by : BYTE; w : WORD; dw : DWORD; lw : LWORD; r : REAL; lr : LREAL; t : TIME; lt : LTIME; "
-            "d : DATE; tod : TOD; dt : DT; s : STRING[12]; ws : WSTRING[12]; c : CHAR; wc : WCHAR; col : Color; "
+            "ul : ULINT; bt : BYTE; w : WORD; dw : DWORD; lw : LWORD; r : REAL; lr : LREAL; t : TIME; lt : LTIME; "
+            "dat : DATE; tday : TOD; dtm : DT; s : STRING[12]; ws : WSTRING[12]; c : CHAR; wc : WCHAR; col : Color; "
             "p : Pt; pct : Pct; a : ARRAY[1..3, 0..1] OF INT; ton1 : TON; END_VAR\n"
             "i := i;\nEND_PROGRAM\n"),
             diagnostics);
