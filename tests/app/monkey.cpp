@@ -27,6 +27,8 @@
 #include <QUndoStack>
 #include <QWheelEvent>
 
+#include <algorithm>
+
 namespace monkey {
 
 namespace {
@@ -143,15 +145,18 @@ QString Monkey::trigger(const QList<QAction *> &candidates, const QString &kind)
 QString Monkey::typeText()
 {
     QPlainTextEdit *editor = editableText(currentDocument());
-    if (!editor)
-        return selectItems();
+    if (!editor) // a diagram, or read-only while online
+        return QStringLiteral("type: nothing editable");
     const QString snippet = snippets()[pick(int(snippets().size()))];
     QTextCursor cursor(editor->document());
     cursor.setPosition(pick(editor->document()->characterCount()));
     editor->setTextCursor(cursor);
-    if (m_random.bounded(2) == 0) {
-        QTest::keyClicks(editor, snippet.left(12)); // through the editor's key handling
-        return QStringLiteral("keys %1").arg(snippet.left(12).toHtmlEscaped());
+    // Key clicks through the editor's key handling; QTest types printable ASCII only.
+    const QString keys = snippet.left(12);
+    const bool printable = std::all_of(keys.cbegin(), keys.cend(), [](QChar c) { return c.unicode() >= 0x20 && c.unicode() < 0x7f; });
+    if (printable && m_random.bounded(2) == 0) {
+        QTest::keyClicks(editor, keys);
+        return QStringLiteral("keys %1").arg(keys.toHtmlEscaped());
     }
     editor->textCursor().insertText(snippet);
     return QStringLiteral("type %1").arg(snippet.toHtmlEscaped());
@@ -194,7 +199,7 @@ QString Monkey::selectItems()
 {
     QGraphicsView *view = diagramView(currentDocument());
     if (!view)
-        return typeText();
+        return QStringLiteral("select: no diagram");
     QList<QGraphicsItem *> selectable;
     for (QGraphicsItem *item : view->scene()->items()) {
         if (item->flags() & QGraphicsItem::ItemIsSelectable)
@@ -232,7 +237,7 @@ QString Monkey::rename()
     if (!rename || !body || !tree)
         return QStringLiteral("rename: nothing");
     const iec::model::Pou *pou = m_window.projectModel().project().findPou(body->pou);
-    const QModelIndexList found = tree->model()->match(tree->model()->index(0, 0), Qt::DisplayRole, pou ? pou->name : QString(), 1,
+    const QModelIndexList found = tree->model()->match(tree->model()->index(0, 0), Qt::EditRole, pou ? pou->name : QString(), 1,
                                                        Qt::MatchExactly | Qt::MatchRecursive);
     if (found.isEmpty() || !rename->isEnabled())
         return QStringLiteral("rename: not found");
