@@ -7,6 +7,8 @@
 #   (tests/fuzz/regressions/TARGET). What fails is saved in build/fuzz/crashes/TARGET/: fix it and
 #   copy the input to tests/fuzz/regressions/TARGET/, and every ctest run replays it from then on.
 # scripts/fuzz.sh --list   prints the targets.
+# scripts/fuzz.sh --all [SECONDS]   runs every target for SECONDS each (default 8: what CI runs,
+#   under a minute in all) and fails when one of them fails.
 # IEC_FUZZ_JOBS=N runs N fuzzers at once (default 1); IEC_BUILD_WRAP is put before the build
 # command (e.g. "flock /tmp/build.lock" on a machine where builds take turns).
 set -euo pipefail
@@ -15,6 +17,12 @@ source "$(dirname "$0")/lib.sh"
 targets=$(sed -n 's/^iec_add_fuzz_target(\([a-z_]*\).*/\1/p' "$IEC_ROOT/tests/fuzz/CMakeLists.txt")
 if [ "${1:-}" = "--list" ]; then
   echo "$targets"
+  exit 0
+fi
+if [ "${1:-}" = "--all" ]; then
+  for target in $targets; do
+    "$0" "$target" "${2:-8}"
+  done
   exit 0
 fi
 target=${1:?"usage: scripts/fuzz.sh TARGET [SECONDS] [libFuzzer options...] (scripts/fuzz.sh --list)"}
