@@ -128,6 +128,9 @@ bool BuildController::build(const interp::CompileOptions &options)
     // What the user typed in the last moments is part of what they asked to build.
     m_documents.flushEdits();
     interp::Diagnostics diagnostics;
+    // The compile runs on the compiler's own thread with a stack of known size and waits for it
+    // (interpreter/compiler/limits.h): the same nesting limits as iecstudio-cli, whatever this
+    // thread's stack.
     m_module = interp::frontend::compileProject(m_projectModel.project(), diagnostics, options);
     publish(messagesOf(diagnostics));
     const int errors = m_messagesPane.model().count(Message::Severity::Error);

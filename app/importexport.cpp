@@ -8,13 +8,13 @@
 #include "model/plcopen/reader.h"
 #include "model/plcopen/writer.h"
 #include "model/projectmodel.h"
+#include "model/savefile.h"
 #include "model/undo/datatypecommands.h"
 #include "model/undo/instancecommands.h"
 #include "model/undo/poucommands.h"
 
 #include <QFile>
 #include <QFileInfo>
-#include <QSaveFile>
 #include <QSet>
 #include <QUndoCommand>
 
@@ -344,14 +344,8 @@ bool ImportExport::write(const model::Project &project, const std::vector<model:
                 warnings->append({.severity = Message::Severity::Warning, .text = warning.message, .pouName = warning.pou});
         }
     }
-    // QSaveFile writes beside the target and renames: a failed export leaves the old file whole.
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
-        if (error)
-            *error = tr("%1 cannot be written: %2").arg(QFileInfo(path).fileName(), file.errorString());
-        return false;
-    }
-    return true;
+    // A failed export leaves the old file whole.
+    return model::saveFileAtomically(path, bytes, error);
 }
 
 } // namespace iec::app

@@ -1,11 +1,11 @@
 #include "app/recoverymanager.h"
 
 #include "model/plcopen/writer.h"
+#include "model/savefile.h"
 
 #include <QCryptographicHash>
 #include <QDir>
 #include <QFileInfo>
-#include <QSaveFile>
 #include <QStandardPaths>
 #include <QUuid>
 
@@ -25,16 +25,6 @@ QString recoveryFileName(const QString &projectFile)
     const QByteArray hash = QCryptographicHash::hash(projectFile.toUtf8(), QCryptographicHash::Sha1).toHex();
     return QStringLiteral("%1-%2.xml")
         .arg(QFileInfo(projectFile).completeBaseName(), QString::fromLatin1(hash.left(8)));
-}
-
-bool writeAtomically(const QString &path, const QByteArray &bytes, QString *error)
-{
-    QSaveFile file(path);
-    if (file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size() && file.commit())
-        return true;
-    if (error)
-        *error = file.errorString();
-    return false;
 }
 
 QString readSource(const QString &recoveryFile)
@@ -106,8 +96,8 @@ bool RecoveryManager::write(const model::Project &project, QString *error)
         return false;
     }
     // The .source first: a recovery file is never there without the name of its project.
-    return writeAtomically(m_recoveryFile + kSourceSuffix, m_projectFile.toUtf8(), error)
-        && writeAtomically(m_recoveryFile, model::plcopen::writeProject(project), error);
+    return model::saveFileAtomically(m_recoveryFile + kSourceSuffix, m_projectFile.toUtf8(), error)
+        && model::saveFileAtomically(m_recoveryFile, model::plcopen::writeProject(project), error);
 }
 
 void RecoveryManager::discardCurrent()
@@ -117,6 +107,12 @@ void RecoveryManager::discardCurrent()
 
 void RecoveryManager::setIntervalMinutes(int minutes)
 {
+    bool seconds = false;
+    const int override = qEnvironmentVariableIntValue("IECSTUDIO_AUTOSAVE_SECONDS", &seconds);
+    if (seconds && override > 0) {
+        m_timer.start(override * 1000);
+        return;
+    }
     if (minutes <= 0) {
         m_timer.stop();
         return;

@@ -50,7 +50,8 @@ public:
     // The project was saved or closed cleanly: its recovery file is not needed any more.
     void discardCurrent();
 
-    // 0 turns autosave off.
+    // 0 turns autosave off. IECSTUDIO_AUTOSAVE_SECONDS=N in the environment writes every N
+    // seconds instead, whatever the settings say (the recovery test waits for an autosave).
     void setIntervalMinutes(int minutes);
     [[nodiscard]] const QTimer &timer() const { return m_timer; }
 

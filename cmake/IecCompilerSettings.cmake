@@ -19,3 +19,10 @@ if(IEC_SANITIZE)
   target_compile_options(iec_build_settings INTERFACE ${_iec_san})
   target_link_options(iec_build_settings INTERFACE ${_iec_san})
 endif()
+
+# libFuzzer (clang only; scripts/fuzz.sh configures build/fuzz with it): every library is
+# instrumented for coverage, and tests/fuzz builds its targets as fuzzers instead of replayers.
+option(IEC_FUZZ "Build the fuzz targets of tests/fuzz with libFuzzer (clang)" OFF)
+if(IEC_FUZZ)
+  target_compile_options(iec_build_settings INTERFACE -fsanitize=fuzzer-no-link)
+endif()

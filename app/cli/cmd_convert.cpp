@@ -6,23 +6,13 @@
 #include "interpreter/frontend/iecprinter.h"
 
 #include "model/plcopen/writer.h"
+#include "model/savefile.h"
 
 #include <QFileInfo>
-#include <QSaveFile>
 
 namespace iec::cli {
 
 namespace {
-
-bool writeText(const QString &text, const QString &path, QString &error)
-{
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(text.toUtf8()) < 0 || !file.commit()) {
-        error = QStringLiteral("%1 cannot be written: %2.").arg(path, file.errorString());
-        return false;
-    }
-    return true;
-}
 
 // IEC text has no file header; a project read from .st gets one from the file it came from, so
 // converting the same file twice gives the same bytes.
@@ -44,7 +34,7 @@ bool writeProject(model::Project &project, const QString &input, const QString &
     const QString text = interp::frontend::printProject(project, &warnings);
     for (const interp::frontend::PrintWarning &warning : warnings)
         io.err << input << ":" << warning.pou << ": warning: " << warning.message << "\n";
-    return writeText(text, output, error);
+    return model::saveFileAtomically(output, text.toUtf8(), &error);
 }
 
 } // namespace

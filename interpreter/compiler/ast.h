@@ -41,6 +41,15 @@ struct Expr {
     TokenKind literal = TokenKind::Error;
     std::vector<Expr> operands;
     std::vector<CallArg> callArgs;
+
+    // A sum of 100,000 terms is a tree 100,000 levels deep (operators are left-associative):
+    // copying and destroying work through a list instead of recursing once per level (ast.cpp).
+    Expr() = default;
+    Expr(const Expr &other);
+    Expr(Expr &&other) noexcept = default;
+    Expr &operator=(const Expr &other);
+    Expr &operator=(Expr &&other) noexcept = default;
+    ~Expr();
 };
 
 // One argument of a call: positional (name empty), `name := value` or `name => variable`.

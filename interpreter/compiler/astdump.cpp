@@ -1,5 +1,7 @@
 #include "interpreter/compiler/astdump.h"
 
+#include "interpreter/compiler/parser.h"
+
 namespace iec::interp::ast {
 
 namespace {
@@ -32,36 +34,182 @@ QString dumpBlock(const std::vector<Stmt> &body)
 
 } // namespace
 
-QString dump(const Expr &e)
+namespace {
+
+// Expressions are written through a list of what is left to write instead of by recursion, so
+// that no expression, however deep, can exhaust the stack. A piece is an expression still to
+// expand or text to append.
+struct Piece {
+    const Expr *expr = nullptr;
+    QString text;
+};
+using Pieces = std::vector<Piece>;
+
+Piece text(QString t)
+{
+    return {nullptr, std::move(t)};
+}
+
+Piece operand(const Expr &e)
+{
+    return {&e, {}};
+}
+
+// Writes `root`; `expand` turns one expression into its pieces in the order they are written.
+template<class Expand>
+QString writeOut(const Expr &root, Expand expand)
+{
+    QString out;
+    Pieces todo {operand(root)};
+    while (!todo.empty()) {
+        Piece piece = std::move(todo.back());
+        todo.pop_back();
+        if (!piece.expr) {
+            out += piece.text;
+            continue;
+        }
+        Pieces pieces = expand(*piece.expr);
+        for (auto it = pieces.rbegin(); it != pieces.rend(); ++it)
+            todo.push_back(std::move(*it));
+    }
+    return out;
+}
+
+// Arguments of a call: positional, `name := value`, `name => variable`, `NOT name => variable`;
+// `always` writes the value of a named argument also when it is missing (an error).
+void addArguments(Pieces &pieces, const std::vector<CallArg> &args, bool always)
+{
+    for (size_t i = 0; i < args.size(); ++i) {
+        const CallArg &a = args[i];
+        QString prefix = i > 0 ? QStringLiteral(", ") : QString();
+        if (a.negatedOutput)
+            prefix += QStringLiteral("NOT ");
+        if (!a.name.isEmpty())
+            prefix += a.name + (a.isOutput ? QStringLiteral(" => ") : QStringLiteral(" := "));
+        pieces.push_back(text(prefix));
+        if (always || a.value.kind != ExprKind::Error || a.name.isEmpty())
+            pieces.push_back(operand(a.value));
+    }
+}
+
+void addIndices(Pieces &pieces, const Expr &e)
+{
+    pieces.push_back(text(QStringLiteral("[")));
+    for (size_t i = 1; i < e.operands.size(); ++i) {
+        if (i > 1)
+            pieces.push_back(text(QStringLiteral(", ")));
+        pieces.push_back(operand(e.operands[i]));
+    }
+    pieces.push_back(text(QStringLiteral("]")));
+}
+
+Pieces dumpPieces(const Expr &e)
 {
     switch (e.kind) {
     case ExprKind::Literal:
     case ExprKind::Name:
     case ExprKind::DirectAddress:
-        return e.text;
+        return {text(e.text)};
     case ExprKind::Member:
-        return dump(e.operands[0]) + QLatin1Char('.') + e.text;
+        return {operand(e.operands[0]), text(QLatin1Char('.') + e.text)};
     case ExprKind::BitAccess:
-        return dump(e.operands[0]) + QStringLiteral(".%") + e.text;
+        return {operand(e.operands[0]), text(QStringLiteral(".%") + e.text)};
     case ExprKind::Index: {
-        QStringList indices;
-        for (size_t i = 1; i < e.operands.size(); ++i)
-            indices << dump(e.operands[i]);
-        return dump(e.operands[0]) + QLatin1Char('[') + indices.join(QStringLiteral(", ")) + QLatin1Char(']');
+        Pieces pieces {operand(e.operands[0])};
+        addIndices(pieces, e);
+        return pieces;
     }
     case ExprKind::Unary:
-        return QLatin1Char('(') + e.text + QLatin1Char(' ') + dump(e.operands[0]) + QLatin1Char(')');
+        return {text(QLatin1Char('(') + e.text + QLatin1Char(' ')), operand(e.operands[0]), text(QStringLiteral(")"))};
     case ExprKind::Binary:
-        return QLatin1Char('(') + e.text + QLatin1Char(' ') + dump(e.operands[0]) + QLatin1Char(' ')
-            + dump(e.operands[1]) + QLatin1Char(')');
-    case ExprKind::Call:
-        return dump(e.operands[0]) + QLatin1Char('(') + dumpArgs(e.callArgs) + QLatin1Char(')');
+        return {text(QLatin1Char('(') + e.text + QLatin1Char(' ')), operand(e.operands[0]), text(QStringLiteral(" ")),
+                operand(e.operands[1]), text(QStringLiteral(")"))};
+    case ExprKind::Call: {
+        Pieces pieces {operand(e.operands[0]), text(QStringLiteral("("))};
+        addArguments(pieces, e.callArgs, false);
+        pieces.push_back(text(QStringLiteral(")")));
+        return pieces;
+    }
     case ExprKind::Deref:
-        return dump(e.operands[0]) + QLatin1Char('^');
+        return {operand(e.operands[0]), text(QStringLiteral("^"))};
     case ExprKind::Error:
-        return QStringLiteral("<error>");
+        return {text(QStringLiteral("<error>"))};
     }
     return {};
+}
+
+// An operand in parentheses when it would otherwise bind differently: a binary operation below
+// one that binds tighter, or on the right of one that binds as tight (operators are
+// left-associative, so a - (b - c) keeps its parentheses and (a - b) - c needs none).
+Pieces sourceOperand(const Expr &side, int precedence, bool right)
+{
+    if (side.kind != ExprKind::Binary)
+        return {operand(side)};
+    const int inner = binaryPrecedence(side.text);
+    if (inner > precedence || (inner == precedence && !right))
+        return {operand(side)};
+    return {text(QStringLiteral("(")), operand(side), text(QStringLiteral(")"))};
+}
+
+Pieces sourcePieces(const Expr &e)
+{
+    switch (e.kind) {
+    case ExprKind::Literal:
+    case ExprKind::Name:
+    case ExprKind::DirectAddress:
+    case ExprKind::Error:
+        return {text(e.text)};
+    case ExprKind::Member:
+    case ExprKind::BitAccess:
+        return {operand(e.operands[0]), text(QLatin1Char('.') + e.text)};
+    case ExprKind::Index: {
+        Pieces pieces {operand(e.operands[0])};
+        addIndices(pieces, e);
+        return pieces;
+    }
+    case ExprKind::Unary: {
+        const Expr &inner = e.operands[0];
+        // NOT a, -x; -(a + b), and -(-5) rather than --5.
+        const bool parenthesised = inner.kind == ExprKind::Binary || (e.text != QLatin1String("NOT") && (inner.kind == ExprKind::Unary || inner.text.startsWith(QLatin1Char('-'))));
+        const QString op = e.text == QLatin1String("NOT") ? QStringLiteral("NOT ") : e.text;
+        if (!parenthesised)
+            return {text(op), operand(inner)};
+        return {text(op + QLatin1Char('(')), operand(inner), text(QStringLiteral(")"))};
+    }
+    case ExprKind::Binary: {
+        const int precedence = binaryPrecedence(e.text);
+        Pieces pieces = sourceOperand(e.operands[0], precedence, false);
+        pieces.push_back(text(QLatin1Char(' ') + e.text + QLatin1Char(' ')));
+        for (Piece &p : sourceOperand(e.operands[1], precedence, true))
+            pieces.push_back(std::move(p));
+        return pieces;
+    }
+    case ExprKind::Call: {
+        Pieces pieces;
+        if (e.operands.empty())
+            pieces.push_back(text(e.text));
+        else
+            pieces.push_back(operand(e.operands[0]));
+        pieces.push_back(text(QStringLiteral("(")));
+        addArguments(pieces, e.callArgs, true);
+        pieces.push_back(text(QStringLiteral(")")));
+        return pieces;
+    }    case ExprKind::Deref:
+        return {operand(e.operands[0]), text(QStringLiteral("^"))};
+    }
+    return {};
+}
+
+} // namespace
+
+QString dump(const Expr &e)
+{
+    return writeOut(e, dumpPieces);
+}
+
+QString sourceText(const Expr &e)
+{
+    return writeOut(e, sourcePieces);
 }
 
 QString dump(const Stmt &s)

@@ -17,4 +17,8 @@ QString dump(const Initializer &init);
 QString dump(const VarSection &section);
 QString dump(const SfcChart &chart);
 
+// IEC text of an expression, with parentheses only where the operators' precedence needs them
+// (a + b + c, a * (b + c)); parsing it gives the same expression again.
+QString sourceText(const Expr &expr);
+
 } // namespace iec::interp::ast

@@ -17,6 +17,7 @@
 #include <deque>
 #include <functional>
 #include <map>
+#include <tuple>
 #include <optional>
 #include <vector>
 
@@ -142,6 +143,11 @@ public:
     void writeInitial(std::uint32_t offset, const Type *type, const ast::Initializer *init, const QString &name = {});
     bool writeConstant(std::uint32_t offset, const Type *type, const ConstValue &value, SourceLocation at);
     std::optional<Value> evalConst(const ast::Expr &expr, bool report = true);
+    // evalConst for the initial value of a CONSTANT read by name: evaluated once per POU, so a
+    // chain of constants defined by constants costs its length, not its square, and a constant
+    // defined by itself is reported instead of followed for ever. `reported`: no value because
+    // of a message already given (the use says nothing more).
+    std::optional<Value> evalConstOnce(const ast::Expr &expr, bool report, bool &reported);
     std::optional<std::int64_t> evalConstInt(const ast::Expr &expr);
     std::optional<ConstValue> literalValue(const ast::Expr &expr, const Type **type, bool *untyped);
     void locate(const QString &address, std::uint32_t offset, const Type *type, SourceLocation at);
@@ -302,6 +308,18 @@ public:
     void fuseStepIntoBranch(std::uint32_t top, std::uint32_t test);
     void error(SourceLocation at, const QString &message, const QString &hint = {});
     void warning(SourceLocation at, const QString &message, const QString &hint = {});
+    // Whether the compiler's stack is nearly used up (compilerstack.h): then the caller goes no
+    // deeper, and the first time `at` gets the message. Checked where recursion follows chains
+    // the parser cannot limit (constants defined by constants, types by types).
+    bool stackExhausted(SourceLocation at);
+    bool m_stackReported = false;
+    struct ConstantSlot {
+        bool busy = false;     // being evaluated: a use now is a cycle
+        bool reported = false; // no value, and a message says why
+        std::optional<Value> value;
+    };
+    // (initial value, POU compiled, POU laid out, report) -> its value (evalConstOnce).
+    std::map<std::tuple<const void *, const void *, const void *, bool>, ConstantSlot> m_constantValues;
 
     // ---- state ----
     Diagnostics &m_diagnostics;

@@ -3,6 +3,7 @@
 #include "interpreter/compiler/compiler.h"
 
 #include "interpreter/compiler/codegen.h"
+#include "interpreter/compiler/compilerstack.h"
 #include "interpreter/compiler/parser.h"
 
 #include <QCoreApplication>
@@ -145,6 +146,17 @@ void Codegen::error(SourceLocation at, const QString &message, const QString &hi
             return;
     }
     m_diagnostics.error(m_pouName, at, message, hint);
+}
+
+bool Codegen::stackExhausted(SourceLocation at)
+{
+    if (!compilerStackExhausted())
+        return false;
+    if (!m_stackReported)
+        error(at, QCoreApplication::translate("iec::interp::Compiler", "This is nested too deeply to compile."),
+              QCoreApplication::translate("iec::interp::Compiler", "split it into simpler steps: constants, types and function blocks defined in fewer steps, expressions with fewer levels"));
+    m_stackReported = true;
+    return true;
 }
 
 void Codegen::warning(SourceLocation at, const QString &message, const QString &hint)
@@ -496,13 +508,27 @@ std::shared_ptr<Module> Codegen::run(const std::vector<const CompilationUnit *> 
             compileActionBody(p, action, actionIndex(p.index, action.name));
     }
 
-    // Recursion: a cycle in the graph of calls (functions) and instances (function blocks).
+    // Recursion: a cycle in the graph of calls (functions) and instances (function blocks). The
+    // search keeps its own path instead of recursing: a chain of calls is as long as the program.
     std::vector<int> state(m_pous.size(), 0); // 0 new, 1 on the path, 2 done
     std::vector<int> path;
-    std::function<void(int)> visit = [&](int pou) {
-        state[size_t(pou)] = 1;
-        path.push_back(pou);
-        for (const auto &[callee, at] : m_calls[pou]) {
+    std::vector<size_t> nextCall; // for each POU on the path: the next of its calls to follow
+    for (size_t root = 0; root < m_pous.size(); ++root) {
+        if (state[root] != 0)
+            continue;
+        state[root] = 1;
+        path.push_back(static_cast<int>(root));
+        nextCall.push_back(0);
+        while (!path.empty()) {
+            const int pou = path.back();
+            const auto &calls = m_calls[pou];
+            if (nextCall.back() == calls.size()) {
+                state[size_t(pou)] = 2;
+                path.pop_back();
+                nextCall.pop_back();
+                continue;
+            }
+            const auto &[callee, at] = calls[nextCall.back()++];
             if (state[size_t(callee)] == 1) {
                 QStringList names;
                 bool inCycle = false;
@@ -516,15 +542,11 @@ std::shared_ptr<Module> Codegen::run(const std::vector<const CompilationUnit *> 
                 error(at, QCoreApplication::translate("iec::interp::Compiler", "Recursion is not allowed in IEC 61131-3: %1 calls itself (%2).")
                               .arg(m_pous[size_t(callee)].name, names.join(QStringLiteral(" -> "))));
             } else if (state[size_t(callee)] == 0) {
-                visit(callee);
+                state[size_t(callee)] = 1;
+                path.push_back(callee);
+                nextCall.push_back(0);
             }
         }
-        path.pop_back();
-        state[size_t(pou)] = 2;
-    };
-    for (size_t i = 0; i < m_pous.size(); ++i) {
-        if (state[i] == 0)
-            visit(static_cast<int>(i));
     }
 
     checkVendorLibrariesReachable();
@@ -571,16 +593,23 @@ std::shared_ptr<const Module> compile(const std::vector<const ast::CompilationUn
 {
     if (units.empty())
         return nullptr;
-    detail::Codegen codegen(diagnostics, options);
-    return codegen.run(units);
+    std::shared_ptr<const Module> module;
+    runOnCompilerStack([&] {
+        detail::Codegen codegen(diagnostics, options);
+        module = codegen.run(units);
+    });
+    return module;
 }
 
 std::shared_ptr<const Module> compileText(QStringView source, Diagnostics &diagnostics, const CompileOptions &options)
 {
-    const ast::CompilationUnit unit = parseUnit(source, diagnostics);
-    if (diagnostics.hasErrors())
-        return nullptr;
-    return compile({&unit}, diagnostics, options);
+    std::shared_ptr<const Module> module;
+    runOnCompilerStack([&] {
+        const ast::CompilationUnit unit = parseUnit(source, diagnostics);
+        if (!diagnostics.hasErrors())
+            module = compile({&unit}, diagnostics, options);
+    });
+    return module;
 }
 
 } // namespace iec::interp

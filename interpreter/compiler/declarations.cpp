@@ -84,6 +84,8 @@ const Type *Codegen::namedType(const QString &name, SourceLocation at, bool repo
     if (const Type *t = m_namedTypes.value(k))
         return t;
     if (const TypeDecl *decl = m_typeDecls.value(k)) {
+        if (stackExhausted(decl->location))
+            return nullptr;
         if (m_typesInProgress.value(k)) {
             error(decl->location, QCoreApplication::translate("iec::interp::Compiler", "The type %1 is defined in terms of itself.").arg(decl->name));
             return nullptr;
@@ -267,6 +269,8 @@ bool Codegen::layoutPou(PouInfo &pou)
 {
     if (pou.laidOut)
         return pou.frame != nullptr;
+    if (stackExhausted(pou.ast->location))
+        return false;
     const QString savedPou = m_pouName;
     m_pouName = pou.name;
     if (pou.layoutInProgress) {
@@ -515,6 +519,8 @@ const GlobalVar *Codegen::directAddressVar(const QString &address, SourceLocatio
 
 void Codegen::writeInitial(std::uint32_t offset, const Type *type, const Initializer *init, const QString &name)
 {
+    if (stackExhausted(init ? init->location : SourceLocation{}))
+        return;
     if (!init)
         init = type->init;
     switch (type->kind) {
@@ -799,6 +805,32 @@ std::optional<Value> Codegen::evalConst(const Expr &expr, bool report)
     if (report && v.kind != Value::Kind::Invalid && m_diagnostics.all().size() == diagnosticsBefore)
         error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "This must be a constant: a literal, a CONSTANT or an expression of them."));
     return std::nullopt;
+}
+
+std::optional<Value> Codegen::evalConstOnce(const Expr &expr, bool report, bool &reported)
+{
+    const auto key = std::make_tuple(static_cast<const void *>(&expr), static_cast<const void *>(m_pou),
+                                     static_cast<const void *>(m_declaring), report);
+    const auto [slot, added] = m_constantValues.try_emplace(key);
+    if (!added) {
+        if (slot->second.busy) {
+            error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "This constant is defined in terms of itself."));
+            slot->second.reported = reported = true;
+            return std::nullopt;
+        }
+        reported = slot->second.reported;
+        return slot->second.value;
+    }
+    slot->second.busy = true;
+    const size_t messagesBefore = m_diagnostics.all().size();
+    const std::optional<Value> value = evalConst(expr, report);
+    // std::map: the iterator stays valid while others are added.
+    slot->second.busy = false;
+    slot->second.value = value;
+    slot->second.reported = slot->second.reported
+        || (!value && (m_diagnostics.all().size() != messagesBefore || m_stackReported));
+    reported = slot->second.reported;
+    return value;
 }
 
 std::optional<std::int64_t> Codegen::evalConstInt(const Expr &expr)

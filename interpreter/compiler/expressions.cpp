@@ -262,12 +262,15 @@ Place Codegen::namePlace(const Expr &expr, bool reportUnknown)
             frame.operand = base;
             Place result = memberPlace(frame, *m, name);
             if (m->constant && m->init && m->init->kind == Initializer::Kind::Expression && m->type->isElementary()) {
-                if (auto value = evalConst(*m->init->value, false)) {
+                bool reported = false;
+                if (auto value = evalConstOnce(*m->init->value, false, reported)) {
                     const Value typed = coerce(*value, m->type, expr.location);
                     if (typed.kind == Value::Kind::Constant) {
                         result.kind = Place::Kind::Constant;
                         result.constant = typed.constant;
                     }
+                } else if (reported) {
+                    return {}; // its own message says why it has no value
                 }
             }
             return result;
@@ -295,7 +298,8 @@ Place Codegen::namePlace(const Expr &expr, bool reportUnknown)
                 if (v.name.compare(name, Qt::CaseInsensitive) != 0 || v.init.kind != Initializer::Kind::Expression)
                     continue;
                 const Type *type = resolveType(v.type);
-                const auto value = evalConst(*v.init.value);
+                bool reported = false;
+                const auto value = evalConstOnce(*v.init.value, true, reported);
                 const Value typed = value && type ? coerce(*value, type, v.location) : Value{};
                 if (typed.kind != Value::Kind::Constant)
                     return {};
@@ -347,6 +351,8 @@ Place Codegen::resolvePlace(const Expr &expr, bool reportUnknown, bool derefRefe
 
 Place Codegen::resolvePlaceRaw(const Expr &expr, bool reportUnknown)
 {
+    if (stackExhausted(expr.location))
+        return {};
     switch (expr.kind) {
     case ExprKind::Name:
         return namePlace(expr, reportUnknown);
@@ -1033,6 +1039,16 @@ Value Codegen::unary(const QString &opText, Value v, SourceLocation at, const Pl
 
 // ---------------------------------------------------------------------------- expressions
 
+namespace {
+
+bool isShortCircuit(const Expr &expr)
+{
+    return expr.kind == ExprKind::Binary
+        && (expr.text == QLatin1String("AND_THEN") || expr.text == QLatin1String("OR_ELSE"));
+}
+
+} // namespace
+
 // a AND_THEN b, a OR_ELSE b (CODESYS): b is evaluated only when a does not decide the result.
 Value Codegen::shortCircuit(const Expr &expr)
 {
@@ -1067,6 +1083,8 @@ Value Codegen::shortCircuit(const Expr &expr)
 
 Value Codegen::compileExpr(const Expr &expr, const Place *destination)
 {
+    if (stackExhausted(expr.location))
+        return {};
     switch (expr.kind) {
     case ExprKind::Literal: {
         const Type *type = nullptr;
@@ -1104,11 +1122,23 @@ Value Codegen::compileExpr(const Expr &expr, const Place *destination)
     case ExprKind::Unary:
         return unary(expr.text, compileExpr(expr.operands[0]), expr.location, destination);
     case ExprKind::Binary: {
-        if (expr.text == QLatin1String("AND_THEN") || expr.text == QLatin1String("OR_ELSE"))
+        if (isShortCircuit(expr))
             return shortCircuit(expr);
-        const Value left = compileExpr(expr.operands[0]);
-        const Value right = compileExpr(expr.operands[1]);
-        return binary(expr.text, left, right, expr.location, destination);
+        // 1 + 2 + ... + n leans left: its left operands are walked with a loop, so that only
+        // nesting the parser limits recurses, never the length of a chain.
+        std::vector<const Expr *> chain;
+        const Expr *leftmost = &expr;
+        while (leftmost->kind == ExprKind::Binary && !isShortCircuit(*leftmost)) {
+            chain.push_back(leftmost);
+            leftmost = &leftmost->operands[0];
+        }
+        Value left = compileExpr(*leftmost);
+        for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+            const Expr &node = **it;
+            const Value right = compileExpr(node.operands[1]);
+            left = binary(node.text, left, right, node.location, &node == &expr ? destination : nullptr);
+        }
+        return left;
     }
     case ExprKind::Call:
         return compileCall(expr, false, destination);

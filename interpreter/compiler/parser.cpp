@@ -1,8 +1,13 @@
 #include "interpreter/compiler/parser.h"
 
+#include "interpreter/compiler/compilerstack.h"
+#include "interpreter/compiler/limits.h"
+
 #include <QCoreApplication>
+#include <QScopeGuard>
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <string_view>
 
 namespace iec::interp {
@@ -409,6 +414,48 @@ private:
     std::vector<int> m_lineStarts;
     size_t m_pos = 0;
     bool m_recovering = false;
+
+    // ---- nesting (limits.h) ----
+    // Every recursion of the parser follows nesting in the text; these count it, and a level
+    // beyond the limit is reported once and skipped instead of entered.
+    int m_depth = 0;      // within an expression
+    int m_blockDepth = 0; // statements inside blocks, action bodies inside charts
+    int m_typeDepth = 0;  // types inside types, initial values inside initial values
+    class Nested
+    {
+    public:
+        explicit Nested(int &depth)
+            : m_depth(depth)
+        {
+            ++m_depth;
+        }
+        ~Nested() { --m_depth; }
+        Nested(const Nested &) = delete;
+        Nested &operator=(const Nested &) = delete;
+
+    private:
+        int &m_depth;
+    };
+    // The outermost expression is level 0: 1000 nested parentheses are 1000 levels.
+    bool tooDeep() const { return m_depth - 1 > limits::kMaxNesting; }
+    bool blockTooDeep() const { return m_blockDepth > limits::kMaxNesting; }
+    bool typeTooDeep() const { return m_typeDepth > limits::kMaxTypeNesting; }
+    // One level deeper inside an expression; false when that is beyond the limit.
+    bool deeper()
+    {
+        ++m_depth;
+        return !tooDeep();
+    }
+    Expr refuseDeepExpression();
+    Stmt refuseDeepBlock();
+    void refuseDeepBody(std::initializer_list<std::string_view> ends);
+    void refuseDeepType();
+    void refuseDeepInitializer();
+    void skipRestOfExpression();
+    bool isBlockStart() const
+    {
+        return isWord("IF") || isWord("CASE") || isWord("FOR") || isWord("WHILE") || isWord("REPEAT");
+    }
 };
 
 // ============================================================================ units
@@ -846,6 +893,14 @@ TypeSpec Parser::typeSpec()
 {
     TypeSpec spec;
     spec.location = here();
+    std::optional<Nested> level;
+    if (isWord("ARRAY") || isWord("STRUCT")) {
+        level.emplace(m_typeDepth);
+        if (typeTooDeep()) {
+            refuseDeepType();
+            return spec;
+        }
+    }
     if (acceptWord("ARRAY")) {
         spec.kind = TypeSpec::Kind::Array;
         if (expectOp(u"[", QCoreApplication::translate("iec::interp::Compiler", "'[' and the index range, e.g. ARRAY[1..10]"))) {
@@ -928,6 +983,14 @@ Initializer Parser::initializer()
 {
     Initializer init;
     init.location = here();
+    std::optional<Nested> level;
+    if (isOp(u"[") || (isOp(u"(") && isName(1) && isOp(u":=", 2))) {
+        level.emplace(m_typeDepth);
+        if (typeTooDeep()) {
+            refuseDeepInitializer();
+            return init;
+        }
+    }
     if (acceptOp(u"[")) {
         init.kind = Initializer::Kind::Array;
         if (acceptOp(u"]"))
@@ -1030,6 +1093,11 @@ void Parser::sfc(SfcChart &chart, std::initializer_list<std::string_view> ends)
         } else if (isWord("TRANSITION")) {
             sfcTransition(chart);
         } else if (isWord("ACTION")) {
+            const Nested nested(m_blockDepth); // a chart in an action of a chart ...
+            if (blockTooDeep()) {
+                refuseDeepBody(ends);
+                break;
+            }
             SfcAction action;
             action.location = here();
             ++m_pos;
@@ -1183,6 +1251,9 @@ Stmt Parser::statement()
     s.location = here();
     if (acceptOp(u";"))
         return s;
+    const Nested nested(m_blockDepth);
+    if (isBlockStart() && blockTooDeep())
+        return refuseDeepBlock();
     if (isWord("IF"))
         return ifStatement();
     if (isWord("CASE"))
@@ -1282,6 +1353,9 @@ void Parser::closeBlock(std::string_view endWord, const char *blockName, SourceL
 
 void Parser::recoverMisspelledBlock()
 {
+    const Nested nested(m_blockDepth);
+    if (blockTooDeep())
+        return; // the misspelled word is reported; what follows is skipped
     // "IFF a > 1 THEN ... END_IF": after the one message about the first word, the rest is read
     // as the block it looks like, so that its body is still checked and its END_ word matched.
     size_t k = m_pos;
@@ -1490,6 +1564,9 @@ const BinaryOperator *Parser::binaryOperator() const
 // Precedence climbing over the table above; every binary operator is left-associative.
 Expr Parser::expression(int minPrecedence)
 {
+    const Nested nested(m_depth);
+    if (tooDeep())
+        return refuseDeepExpression();
     Expr left = unary();
     for (;;) {
         const BinaryOperator *op = binaryOperator();
@@ -1510,6 +1587,9 @@ Expr Parser::expression(int minPrecedence)
 Expr Parser::unary()
 {
     if (isOp(u"-") || isOp(u"+") || isWord("NOT")) {
+        const Nested nested(m_depth);
+        if (tooDeep())
+            return refuseDeepExpression();
         Expr e;
         e.kind = ExprKind::Unary;
         e.location = here();
@@ -1588,10 +1668,15 @@ Expr Parser::primary()
 
 Expr Parser::postfix(Expr base)
 {
+    // Each member, bit, index or call nests what is before it one level deeper.
+    const int depthBefore = m_depth;
+    const auto restoreDepth = qScopeGuard([&] { m_depth = depthBefore; });
     for (;;) {
         if (base.kind == ExprKind::Error)
             return base;
         if (isOp(u".")) {
+            if (!deeper())
+                return refuseDeepExpression();
             ++m_pos;
             Expr e;
             e.location = base.location;
@@ -1608,6 +1693,8 @@ Expr Parser::postfix(Expr base)
             e.operands.push_back(std::move(base));
             base = std::move(e);
         } else if (isOp(u"[")) {
+            if (!deeper())
+                return refuseDeepExpression();
             ++m_pos;
             Expr e;
             e.kind = ExprKind::Index;
@@ -1619,6 +1706,8 @@ Expr Parser::postfix(Expr base)
             expectOp(u"]", QStringLiteral("']'"));
             base = std::move(e);
         } else if (isOp(u"^")) {
+            if (!deeper())
+                return refuseDeepExpression();
             ++m_pos;
             Expr e;
             e.kind = ExprKind::Deref;
@@ -1628,6 +1717,8 @@ Expr Parser::postfix(Expr base)
             base = std::move(e);
         } else if (isOp(u"(") && (base.kind == ExprKind::Name || base.kind == ExprKind::Member || base.kind == ExprKind::Index
                                   || base.kind == ExprKind::Deref)) {
+            if (!deeper())
+                return refuseDeepExpression();
             ++m_pos;
             Expr e;
             e.kind = ExprKind::Call;
@@ -1668,6 +1759,104 @@ std::vector<CallArg> Parser::callArguments()
     } while (acceptOp(u","));
     expectOp(u")", QCoreApplication::translate("iec::interp::Compiler", "')' or ',' in the argument list"));
     return args;
+}
+
+// ============================================================================ nesting
+
+// A level beyond limits::kMaxNesting: one message, and the rest of that level is skipped.
+Expr Parser::refuseDeepExpression()
+{
+    Expr e = errorExpr();
+    error(here(), QCoreApplication::translate("iec::interp::Compiler", "This expression is nested too deeply (more than %1 levels).").arg(limits::kMaxNesting),
+          QCoreApplication::translate("iec::interp::Compiler", "split it into several statements, with variables for the parts"));
+    skipRestOfExpression();
+    return e;
+}
+
+// Up to where the level around the refused one goes on: a ')' or ']' the skipped part did not
+// open, a ',' or a word that continues the statement (THEN, DO, OF ...), or the statement's end.
+void Parser::skipRestOfExpression()
+{
+    int open = 0;
+    while (!atEnd() && !isOp(u";") && !isBlockWord() && !isStatementKeyword()) {
+        if (isOp(u"(") || isOp(u"[")) {
+            ++open;
+        } else if (isOp(u")") || isOp(u"]")) {
+            if (open == 0)
+                return;
+            --open;
+        } else if (open == 0
+                   && (isOp(u",") || isOp(u":=") || isOp(u"=>") || isOp(u"..") || isOp(u":") || isWord("THEN")
+                       || isWord("DO") || isWord("OF") || isWord("TO") || isWord("BY"))) {
+            return;
+        }
+        ++m_pos;
+    }
+}
+
+// A block beyond the limit: one message, and the block is skipped up to its END_ word.
+Stmt Parser::refuseDeepBlock()
+{
+    Stmt s;
+    s.location = here();
+    error(here(), QCoreApplication::translate("iec::interp::Compiler", "These statements are nested too deeply (more than %1 levels).").arg(limits::kMaxNesting),
+          QCoreApplication::translate("iec::interp::Compiler", "move the inner blocks into a function, a function block or an action"));
+    const auto isBlockEnd = [&] {
+        return isWord("END_IF") || isWord("END_CASE") || isWord("END_FOR") || isWord("END_WHILE") || isWord("END_REPEAT");
+    };
+    int open = 0;
+    while (!atEnd()) {
+        if (isBlockStart()) {
+            ++open;
+        } else if (isBlockEnd()) {
+            ++m_pos;
+            if (--open <= 0) {
+                acceptOp(u";");
+                break;
+            }
+            continue;
+        } else if (isPouStart() || isVarSectionStart() || isWord("END_PROGRAM") || isWord("END_FUNCTION")
+                   || isWord("END_FUNCTION_BLOCK") || isWord("END_ACTION") || isWord("END_TRANSITION") || isWord("END_STEP")) {
+            break;
+        }
+        ++m_pos;
+    }
+    return s;
+}
+
+void Parser::refuseDeepBody(std::initializer_list<std::string_view> ends)
+{
+    error(here(), QCoreApplication::translate("iec::interp::Compiler", "These statements are nested too deeply (more than %1 levels).").arg(limits::kMaxNesting),
+          QCoreApplication::translate("iec::interp::Compiler", "move the inner blocks into a function, a function block or an action"));
+    while (!atEnd() && !isEnd(ends))
+        ++m_pos;
+}
+
+// A type beyond limits::kMaxTypeNesting: one message, and the type is skipped up to the ';' or
+// ':=' after it.
+void Parser::refuseDeepType()
+{
+    error(here(), QCoreApplication::translate("iec::interp::Compiler", "This type is nested too deeply (more than %1 levels).").arg(limits::kMaxTypeNesting),
+          QCoreApplication::translate("iec::interp::Compiler", "declare the inner types as types of their own in a TYPE block"));
+    int open = 0;
+    while (!atEnd() && !isWord("END_TYPE") && !isWord("END_VAR") && !isPouStart() && !isVarSectionStart()) {
+        if (isOp(u"(") || isOp(u"[") || isWord("STRUCT")) {
+            ++open;
+        } else if (isOp(u")") || isOp(u"]") || isWord("END_STRUCT")) {
+            if (open == 0)
+                return;
+            --open;
+        } else if (open == 0 && (isOp(u";") || isOp(u":="))) {
+            return;
+        }
+        ++m_pos;
+    }
+}
+
+void Parser::refuseDeepInitializer()
+{
+    error(here(), QCoreApplication::translate("iec::interp::Compiler", "This initial value is nested too deeply (more than %1 levels).").arg(limits::kMaxTypeNesting));
+    skipRestOfExpression();
 }
 
 // ============================================================================ IL
@@ -1777,25 +1966,48 @@ std::vector<IlInstruction> Parser::ilInstructions(std::initializer_list<std::str
 
 } // namespace
 
+int binaryPrecedence(QStringView op)
+{
+    for (const BinaryOperator &o : kBinaryOperators) {
+        if (op == QLatin1String(o.canonical))
+            return o.precedence;
+    }
+    return 0;
+}
+
+// The entry points parse on the compiler's stack (compilerstack.h): the nesting limits above are
+// safe there whatever thread asks (an editor's check while typing, the GUI thread).
+namespace {
+
+template<class Result, class Read>
+Result onCompilerStack(Read read)
+{
+    Result result;
+    runOnCompilerStack([&] { result = read(); });
+    return result;
+}
+
+} // namespace
+
 CompilationUnit parseUnit(QStringView text, Diagnostics &diagnostics)
 {
-    return Parser(text, diagnostics, QString(), 1).unit();
+    return onCompilerStack<CompilationUnit>([&] { return Parser(text, diagnostics, QString(), 1).unit(); });
 }
 
 std::vector<Stmt> parseStBody(QStringView text, const QString &pou, Diagnostics &diagnostics, int firstLine)
 {
-    return Parser(text, diagnostics, pou, firstLine).stBody();
+    return onCompilerStack<std::vector<Stmt>>([&] { return Parser(text, diagnostics, pou, firstLine).stBody(); });
 }
 
 std::vector<IlInstruction> parseIlBody(QStringView text, const QString &pou, Diagnostics &diagnostics, int firstLine)
 {
-    return Parser(text, diagnostics, pou, firstLine).ilBody();
+    return onCompilerStack<std::vector<IlInstruction>>([&] { return Parser(text, diagnostics, pou, firstLine).ilBody(); });
 }
 
 std::vector<VarSection> parseDeclarations(QStringView text, const QString &pou, Diagnostics &diagnostics,
                                           int firstLine)
 {
-    return Parser(text, diagnostics, pou, firstLine).declarations();
+    return onCompilerStack<std::vector<VarSection>>([&] { return Parser(text, diagnostics, pou, firstLine).declarations(); });
 }
 
 } // namespace iec::interp

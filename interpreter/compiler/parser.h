@@ -17,6 +17,10 @@ ast::CompilationUnit parseUnit(QStringView text, Diagnostics &diagnostics);
 std::vector<ast::Stmt> parseStBody(QStringView text, const QString &pou, Diagnostics &diagnostics, int firstLine = 1);
 std::vector<ast::IlInstruction> parseIlBody(QStringView text, const QString &pou, Diagnostics &diagnostics,
                                             int firstLine = 1);
+// How tightly a binary operator binds (its canonical spelling, as in ast::Expr::text: "OR" 1 ...
+// "**" 8); 0 for none.
+int binaryPrecedence(QStringView op);
+
 // Declarations only: the VAR ... END_VAR sections of a POU's interface.
 std::vector<ast::VarSection> parseDeclarations(QStringView text, const QString &pou, Diagnostics &diagnostics,
                                                int firstLine = 1);

@@ -81,6 +81,8 @@ void Codegen::compileStatements(const std::vector<Stmt> &list)
 
 void Codegen::compileStatement(const Stmt &s)
 {
+    if (stackExhausted(s.location))
+        return;
     markLine(s.location);
     // Temporaries live for one statement; nested statements get their own above.
     const std::uint32_t tempMark = m_tempTop;

@@ -1,5 +1,7 @@
 #include "interpreter/frontend/iecreader.h"
 
+#include "interpreter/compiler/astdump.h"
+#include "interpreter/compiler/compilerstack.h"
 #include "interpreter/compiler/lexer.h"
 #include "interpreter/compiler/parser.h"
 #include "interpreter/frontend/iecprinter.h"
@@ -13,53 +15,9 @@ namespace {
 
 // ---- expressions back to text (initial values, bounds, task settings) ------------------------
 
-QString exprText(const ast::Expr &e, bool top = true);
-
-QString argsText(const std::vector<ast::CallArg> &args)
+QString exprText(const ast::Expr &e)
 {
-    QStringList parts;
-    for (const ast::CallArg &a : args) {
-        QString part = a.negatedOutput ? QStringLiteral("NOT ") : QString();
-        if (!a.name.isEmpty())
-            part += a.name + (a.isOutput ? QStringLiteral(" => ") : QStringLiteral(" := "));
-        parts << part + exprText(a.value);
-    }
-    return parts.join(QStringLiteral(", "));
-}
-
-QString exprText(const ast::Expr &e, bool top)
-{
-    switch (e.kind) {
-    case ast::ExprKind::Literal:
-    case ast::ExprKind::Name:
-    case ast::ExprKind::DirectAddress:
-    case ast::ExprKind::Error:
-        return e.text;
-    case ast::ExprKind::Member:
-    case ast::ExprKind::BitAccess:
-        return exprText(e.operands[0], false) + QLatin1Char('.') + e.text;
-    case ast::ExprKind::Index: {
-        QStringList indices;
-        for (size_t i = 1; i < e.operands.size(); ++i)
-            indices << exprText(e.operands[i]);
-        return exprText(e.operands[0], false) + QLatin1Char('[') + indices.join(QStringLiteral(", "))
-            + QLatin1Char(']');
-    }
-    case ast::ExprKind::Unary: {
-        const QString space = e.text.front().isLetter() ? QStringLiteral(" ") : QString();
-        return e.text + space + exprText(e.operands[0], false);
-    }
-    case ast::ExprKind::Binary: {
-        const QString text = exprText(e.operands[0], false) + QLatin1Char(' ') + e.text + QLatin1Char(' ')
-            + exprText(e.operands[1], false);
-        return top ? text : QLatin1Char('(') + text + QLatin1Char(')');
-    }
-    case ast::ExprKind::Call:
-        return e.text + QLatin1Char('(') + argsText(e.callArgs) + QLatin1Char(')');
-    case ast::ExprKind::Deref:
-        return exprText(e.operands[0], false) + QLatin1Char('^');
-    }
-    return e.text;
+    return ast::sourceText(e);
 }
 
 QString optionalText(const std::optional<ast::Expr> &e)
@@ -498,7 +456,9 @@ TextReadResult readIecText(QStringView text, const QString &projectName)
 {
     TextReadResult result;
     result.project = emptyProject(projectName);
-    const ast::CompilationUnit unit = parseUnit(text, result.diagnostics);
+    ast::CompilationUnit unit;
+    // On the compiler's stack, so that the parser's limits hold in any thread (limits.h).
+    runOnCompilerStack([&] { unit = parseUnit(text, result.diagnostics); });
     for (const ast::TypeDecl &type : unit.types)
         result.project.types.dataTypes.push_back({type.name, toModel(type.type), toModel(type.init), {}, {}, {}, 0});
     const std::vector<PouTexts> texts = allPouTexts(text);

@@ -1,5 +1,6 @@
 #include "interpreter/frontend/projectsource.h"
 
+#include "interpreter/compiler/compilerstack.h"
 #include "interpreter/compiler/parser.h"
 #include "interpreter/frontend/iecprinter.h"
 #include "interpreter/graphical/graphicallowering.h"
@@ -229,17 +230,19 @@ ast::CompilationUnit parseProjectText(const model::Project &project, Diagnostics
 ProjectUnit buildUnit(const model::Project &project, Diagnostics &diagnostics)
 {
     Diagnostics parsing;
-    ProjectUnit result {parseProjectText(project, parsing), false};
+    ProjectUnit result;
+    // Parsing and lowering on the compiler's stack, like the compile (limits.h).
+    runOnCompilerStack([&] { result.unit = parseProjectText(project, parsing); });
     result.parseErrors = parsing.hasErrors();
     diagnostics.append(parsing);
     return result;
 }
 
-std::shared_ptr<const Module> compileUnit(
+namespace {
+
+std::shared_ptr<const Module> compileParsedUnit(
     const ProjectUnit &unit, Diagnostics &diagnostics, const CompileOptions &options)
 {
-    if (unit.parseErrors)
-        return nullptr;
     Diagnostics compiling;
     const bool hasTextualCharts = std::any_of(unit.unit.pous.begin(), unit.unit.pous.end(),
         [](const ast::Pou &pou) {
@@ -258,6 +261,19 @@ std::shared_ptr<const Module> compileUnit(
     return diagnostics.hasErrors() ? nullptr : module;
 }
 
+} // namespace
+
+std::shared_ptr<const Module> compileUnit(
+    const ProjectUnit &unit, Diagnostics &diagnostics, const CompileOptions &options)
+{
+    if (unit.parseErrors)
+        return nullptr;
+    // The lowering of textual charts on the compiler's stack, like the compile (limits.h).
+    std::shared_ptr<const Module> module;
+    runOnCompilerStack([&] { module = compileParsedUnit(unit, diagnostics, options); });
+    return module;
+}
+
 void dropConfigurations(ast::CompilationUnit &unit)
 {
     for (ast::ConfigurationDecl &configuration : unit.configurations) {
@@ -271,7 +287,10 @@ void dropConfigurations(ast::CompilationUnit &unit)
 std::shared_ptr<const Module> compileProject(
     const model::Project &project, Diagnostics &diagnostics, const CompileOptions &options)
 {
-    return compileUnit(buildUnit(project, diagnostics), diagnostics, options);
+    // Lowering and parsing run on the compiler's stack too (limits.h).
+    std::shared_ptr<const Module> module;
+    runOnCompilerStack([&] { module = compileUnit(buildUnit(project, diagnostics), diagnostics, options); });
+    return module;
 }
 
 } // namespace iec::interp::frontend

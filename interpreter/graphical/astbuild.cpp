@@ -152,11 +152,17 @@ bool isSimple(const ast::Expr &expr)
 
 void relocate(ast::Expr &expr, SourceLocation at)
 {
-    expr.location = at;
-    for (ast::Expr &operand : expr.operands)
-        relocate(operand, at);
-    for (ast::CallArg &arg : expr.callArgs)
-        relocate(arg.value, at);
+    // With a list, not by recursion: the text of an element may be a sum of any length.
+    std::vector<ast::Expr *> pending {&expr};
+    while (!pending.empty()) {
+        ast::Expr *e = pending.back();
+        pending.pop_back();
+        e->location = at;
+        for (ast::Expr &operand : e->operands)
+            pending.push_back(&operand);
+        for (ast::CallArg &arg : e->callArgs)
+            pending.push_back(&arg.value);
+    }
 }
 
 void relocate(std::vector<ast::Stmt> &statements, SourceLocation at)

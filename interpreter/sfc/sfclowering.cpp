@@ -6,6 +6,7 @@
 
 #include "interpreter/graphical/astbuild.h"
 
+#include "interpreter/compiler/limits.h"
 #include "interpreter/compiler/parser.h"
 #include "interpreter/graphical/graphicallowering.h"
 #include "interpreter/sfc/sfcgraph.h"
@@ -79,10 +80,12 @@ QString quoted(const QString &text)
 using graphical::notExpr; // folds NOT TRUE to FALSE; the parser writes TRUE/FALSE upper-case
 
 // A simple IL condition (LD, AND, OR, XOR with N, NOT, comparisons, ST to the result) as an
-// expression. nullopt when the list uses jumps, parentheses or calls.
-std::optional<ast::Expr> ilToExpression(const std::vector<ast::IlInstruction> &il)
+// expression. nullopt when the list uses jumps, parentheses or calls, or (`tooDeep` set) more
+// NOTs than an expression may nest (limits.h): each wraps all that comes before it.
+std::optional<ast::Expr> ilToExpression(const std::vector<ast::IlInstruction> &il, bool &tooDeep)
 {
     std::optional<ast::Expr> acc;
+    int nots = 0;
     static const QHash<QString, QString> binary {{QStringLiteral("AND"), QStringLiteral("AND")},
         {QStringLiteral("&"), QStringLiteral("AND")}, {QStringLiteral("OR"), QStringLiteral("OR")},
         {QStringLiteral("XOR"), QStringLiteral("XOR")}, {QStringLiteral("GT"), QStringLiteral(">")},
@@ -100,6 +103,10 @@ std::optional<ast::Expr> ilToExpression(const std::vector<ast::IlInstruction> &i
         if (op == QLatin1String("ST") || op == QLatin1String("STN"))
             break; // TRANSITION T FROM .. TO ..: LD x ST T: the accumulator is the condition
         if (op == QLatin1String("NOT") && !i.operand && acc) {
+            if (++nots > limits::kMaxNesting) {
+                tooDeep = true;
+                return std::nullopt;
+            }
             acc = notExpr(std::move(*acc));
             continue;
         }
@@ -534,8 +541,14 @@ private:
                 m_failed = true;
                 return std::nullopt;
             }
-            if (auto expr = ilToExpression(il))
+            bool tooDeep = false;
+            if (auto expr = ilToExpression(il, tooDeep))
                 return expr;
+            if (tooDeep) {
+                error(localId, QCoreApplication::translate("iec::interp::Compiler", "This IL condition is nested too deeply (more than %1 levels).").arg(limits::kMaxNesting),
+                    QCoreApplication::translate("iec::interp::Compiler", "split it into several statements, with variables for the parts"));
+                return std::nullopt;
+            }
             error(localId, QStringLiteral("This IL condition uses jumps, parentheses or calls, which a transition cannot run yet."),
                 QStringLiteral("write the condition as an ST expression"));
             return std::nullopt;

@@ -2,6 +2,8 @@
 
 #include "interpreter/sfc/sfcgraph.h"
 
+#include "interpreter/compiler/astdump.h"
+
 #include "model/layout.h"
 
 #include <QHash>
@@ -10,51 +12,7 @@ namespace iec::interp::sfc {
 
 QString expressionText(const ast::Expr &e)
 {
-    switch (e.kind) {
-    case ast::ExprKind::Literal:
-    case ast::ExprKind::Name:
-    case ast::ExprKind::DirectAddress:
-        return e.text;
-    case ast::ExprKind::Member:
-        return expressionText(e.operands[0]) + QLatin1Char('.') + e.text;
-    case ast::ExprKind::BitAccess:
-        return expressionText(e.operands[0]) + QLatin1Char('.') + e.text;
-    case ast::ExprKind::Deref:
-        return expressionText(e.operands[0]) + QLatin1Char('^');
-    case ast::ExprKind::Index: {
-        QStringList indices;
-        for (size_t i = 1; i < e.operands.size(); ++i)
-            indices << expressionText(e.operands[i]);
-        return expressionText(e.operands[0]) + QLatin1Char('[') + indices.join(QStringLiteral(", ")) + QLatin1Char(']');
-    }
-    case ast::ExprKind::Unary: {
-        const QString operand = expressionText(e.operands[0]);
-        const bool simple = e.operands[0].kind != ast::ExprKind::Binary;
-        const QString wrapped = simple ? operand : QLatin1Char('(') + operand + QLatin1Char(')');
-        return e.text == QLatin1String("NOT") ? QStringLiteral("NOT ") + wrapped : e.text + wrapped;
-    }
-    case ast::ExprKind::Binary: {
-        const auto side = [](const ast::Expr &operand) {
-            const QString text = expressionText(operand);
-            return operand.kind == ast::ExprKind::Binary ? QLatin1Char('(') + text + QLatin1Char(')') : text;
-        };
-        return side(e.operands[0]) + QLatin1Char(' ') + e.text + QLatin1Char(' ') + side(e.operands[1]);
-    }
-    case ast::ExprKind::Call: {
-        QStringList args;
-        for (const ast::CallArg &a : e.callArgs) {
-            QString text = a.negatedOutput ? QStringLiteral("NOT ") : QString();
-            if (!a.name.isEmpty())
-                text += a.name + (a.isOutput ? QStringLiteral(" => ") : QStringLiteral(" := "));
-            args << text + expressionText(a.value);
-        }
-        const QString name = e.operands.empty() ? e.text : expressionText(e.operands[0]);
-        return name + QLatin1Char('(') + args.join(QStringLiteral(", ")) + QLatin1Char(')');
-    }
-    case ast::ExprKind::Error:
-        break;
-    }
-    return {};
+    return ast::sourceText(e);
 }
 
 namespace {

@@ -24,7 +24,7 @@ model::Body chartToModel(const ast::SfcChart &chart, const QString &pou, Diagnos
 // options (entry/exit/active actions, times) have no text form and are dropped (`dropped`).
 std::optional<QString> printChart(const model::Pou &pou, QString *problem, QStringList *dropped = nullptr);
 
-// IEC text of an expression (fully parenthesised where operators nest).
+// IEC text of an expression (ast::sourceText).
 QString expressionText(const ast::Expr &expr);
 
 } // namespace iec::interp::sfc

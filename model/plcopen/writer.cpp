@@ -1,8 +1,7 @@
 #include "model/plcopen/writer.h"
 
 #include "model/plcopen/schema_project.h"
-
-#include <QSaveFile>
+#include "model/savefile.h"
 
 #include <algorithm>
 
@@ -83,13 +82,7 @@ QByteArray writeProject(const Project &project)
 
 bool saveProjectFile(const Project &project, const QString &path, QString *error)
 {
-    const QByteArray bytes = writeProject(project);
-    QSaveFile file(path);
-    const bool saved = file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size() && file.commit();
-    if (!saved && error)
-        *error = QCoreApplication::translate("iec::model::plcopen::Writer", "Cannot save %1: %2.")
-                     .arg(path, file.errorString());
-    return saved;
+    return saveFileAtomically(path, writeProject(project), error);
 }
 
 } // namespace iec::model::plcopen

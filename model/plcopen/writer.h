@@ -11,8 +11,8 @@ namespace iec::model::plcopen {
 // the same bytes (fixed attribute order, two-space indentation, elements in the XSD's order).
 QByteArray writeProject(const Project &project);
 
-// Writes through QSaveFile, so a failed save leaves the old file as it was. On failure returns
-// false and, when `error` is given, a sentence saying why.
+// Writes with saveFileAtomically (model/savefile.h), so a failed save leaves the old file as it
+// was. On failure returns false and, when `error` is given, a sentence saying why.
 bool saveProjectFile(const Project &project, const QString &path, QString *error = nullptr);
 
 } // namespace iec::model::plcopen

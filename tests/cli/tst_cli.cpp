@@ -1,5 +1,7 @@
 // iecstudio-cli check / run / convert, run as a separate process exactly as users run it
 // (formats: docs/cli.md).
+#include "clirun.h"
+
 #include <QFile>
 #include <QProcess>
 #include <QStandardPaths>
@@ -45,21 +47,9 @@ private Q_SLOTS:
 
 namespace {
 
-struct Result {
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
-
-Result cli(const QStringList &arguments)
-{
-    QProcess process;
-    process.start(QStringLiteral(IECSTUDIO_CLI), arguments);
-    if (!process.waitForFinished(120'000))
-        return {};
-    return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2,
-        QString::fromUtf8(process.readAllStandardOutput()), QString::fromUtf8(process.readAllStandardError())};
-}
+using clirun::cli;
+using clirun::Result;
+using clirun::writeFile;
 
 QString example()
 {
@@ -71,16 +61,6 @@ QString readAll(const QString &path)
     QFile file(path);
     return file.open(QIODevice::ReadOnly) ? QString::fromUtf8(file.readAll())
                                           : QStringLiteral("<missing %1>").arg(path);
-}
-
-// Writes `text` into `dir` as `name` and returns its path.
-QString writeFile(const QTemporaryDir &dir, const QString &name, const QString &text)
-{
-    const QString path = dir.filePath(name);
-    QFile file(path);
-    if (file.open(QIODevice::WriteOnly))
-        file.write(text.toUtf8());
-    return path;
 }
 
 const char *const kCounter = "PROGRAM Main\n"

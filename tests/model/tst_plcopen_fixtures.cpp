@@ -6,6 +6,7 @@
 #include "model/statistics.h"
 #include "roundtrip.h"
 
+#include <QDir>
 #include <QFile>
 #include <QTemporaryDir>
 #include <QTest>
@@ -307,7 +308,8 @@ void TestPlcopenFixtures::saveReplacesTheFileOrLeavesItAlone()
 
     const QString missingDirectory = dir.filePath(QStringLiteral("missing/project.xml"));
     QVERIFY(!plcopen::saveProjectFile(project, missingDirectory, &error));
-    QVERIFY(error.startsWith(QStringLiteral("Cannot save ")));
+    QCOMPARE(error, QStringLiteral("%1 was not saved: the folder %2 does not exist. The file on the disk is unchanged.")
+                        .arg(QDir::toNativeSeparators(missingDirectory), QDir::toNativeSeparators(dir.filePath(QStringLiteral("missing")))));
     QVERIFY(!QFile::exists(missingDirectory));
 }
 
