@@ -406,11 +406,14 @@ struct Wirer {
         for (const auto &end : ends)
             if (!end.empty())
                 open.push_back(end);
-        if (open.empty()) {
+        // A convergence joins two branches or more: when every other branch of an alternative
+        // ends in a jump, the one left open simply goes on (IEC 61131-3 has no one-branch join,
+        // and the compiler would warn about it).
+        if (open.empty() || (!parallel && open.size() == 1)) {
             if (node.convergenceId != 0)
                 document.remove({node.convergenceId});
             node.convergenceId = 0;
-            return {};
+            return open.empty() ? std::vector<quint64> {} : open.front();
         }
         if (node.convergenceId == 0 || !document.element(node.convergenceId)) {
             node.convergenceId = parallel ? document.add(SimultaneousConvergence {}) : document.add(SelectionConvergence {});

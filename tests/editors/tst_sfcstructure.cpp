@@ -161,6 +161,10 @@ private Q_SLOTS:
         row("jump to nowhere", {"jump:Nowhere j>Init"}, "Init t ->Init", "no step");
         row("alternative ending in jumps", {"after Init", "alt t>Step1 j>Init", "jump:Step1 $"},
             "Init t Step1 [t ->Init | t ->Step1]");
+        row("jump on the last transition of one alternative branch", {"after Init", "after Step1", "alt t>Step1", "jump:Init $"},
+            "Init t Step1 [t Step2 t ->Init | t ->Init]");
+        row("jump on a third alternative branch keeps the join of the other two", {"after Init", "alt t>Init", "alt t>Init", "jump:Step1 $"},
+            "Init [t | t | t ->Step1] Step1 t ->Init");
         row("transition-jump", {"del j>Init", "del t>Init", "tjump:Init Init"}, "Init t ->Init");
         row("delete a step with its transition", {"after Init", "del Step1"}, "Init t ->Init");
         row("delete the jump", {"del j>Init"}, "Init t");
@@ -191,6 +195,13 @@ private Q_SLOTS:
             }
             wireChart(doc);
             layoutChart(doc);
+            // Every join the editor writes joins two branches or more (the compiler warns otherwise).
+            for (const Element &e : doc.elements) {
+                if (const auto *join = std::get_if<model::SelectionConvergence>(&e))
+                    QVERIFY2(join->connectionPointIns.size() >= 2, qPrintable(command));
+                if (const auto *join = std::get_if<model::SimultaneousConvergence>(&e))
+                    QVERIFY2(join->connectionPointIns.size() >= 2, qPrintable(command));
+            }
         }
         if (refusal.isEmpty())
             QVERIFY2(last.ok(), qPrintable(last.error));
