@@ -332,7 +332,8 @@ model::Project ImportExport::selection(const model::Project &project, const std:
 bool ImportExport::write(const model::Project &project, const std::vector<model::PouId> &pous, Format format,
     const QString &path, QString *error, QList<Message> *warnings)
 {
-    const model::Project part = selection(project, pous);
+    model::Project part = selection(project, pous);
+    model::plcopen::stampCreationTime(part.fileHeader, QDateTime::currentDateTimeUtc());
     QByteArray bytes;
     if (format == Format::PlcOpenXml) {
         bytes = model::plcopen::writeProject(part);

@@ -510,7 +510,9 @@ bool MainWindow::saveProject(const QString &path, QString *error)
 void MainWindow::newProject()
 {
     m_recovery->discardCurrent();
-    m_projectModel->reset({});
+    model::Project fresh;
+    model::plcopen::stampCreationTime(fresh.fileHeader, QDateTime::currentDateTimeUtc());
+    m_projectModel->reset(std::move(fresh));
     m_undoStacks->clear();
     m_documents->markTypingSaved();
     m_recoveredUnsaved = false;

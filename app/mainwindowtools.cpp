@@ -19,6 +19,7 @@
 #include "app/searchresultspane.h"
 #include "app/undostacks.h"
 #include "editors/text/texteditorwidget.h"
+#include "model/plcopen/writer.h"
 #include "model/projectmodel.h"
 
 #include <QAction>
@@ -155,7 +156,9 @@ void MainWindow::exportDocumentationInteractive()
 void MainWindow::newProjectFromTemplate(ProjectTemplate projectTemplate)
 {
     newProject();
-    m_projectModel->reset(ProjectTemplates::create(projectTemplate));
+    model::Project project = ProjectTemplates::create(projectTemplate);
+    model::plcopen::stampCreationTime(project.fileHeader, QDateTime::currentDateTimeUtc());
+    m_projectModel->reset(std::move(project));
     m_undoStacks->clear();
     openMainProgram();
 }

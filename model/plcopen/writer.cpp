@@ -82,7 +82,17 @@ QByteArray writeProject(const Project &project)
 
 bool saveProjectFile(const Project &project, const QString &path, QString *error)
 {
-    return saveFileAtomically(path, writeProject(project), error);
+    if (!project.fileHeader.creationDateTime.isEmpty())
+        return saveFileAtomically(path, writeProject(project), error);
+    Project stamped = project;
+    stampCreationTime(stamped.fileHeader, QDateTime::currentDateTimeUtc());
+    return saveFileAtomically(path, writeProject(stamped), error);
+}
+
+void stampCreationTime(FileHeader &header, const QDateTime &now)
+{
+    if (header.creationDateTime.isEmpty())
+        header.creationDateTime = now.toUTC().toString(Qt::ISODate);
 }
 
 } // namespace iec::model::plcopen

@@ -31,7 +31,9 @@ QString schemaErrors(const QByteArray &xml)
 
 QString savedSchemaErrors(const Project &project)
 {
-    return schemaErrors(plcopen::writeProject(project));
+    Project saved = project; // saveProjectFile stamps a missing creation time the same way
+    plcopen::stampCreationTime(saved.fileHeader, QDateTime::currentDateTimeUtc());
+    return schemaErrors(plcopen::writeProject(saved));
 }
 
 namespace {

@@ -56,6 +56,7 @@ private Q_SLOTS:
     void otherNamespacesReadTheSame();
     void programTextWithCdataEnd();
     void saveReplacesTheFileOrLeavesItAlone();
+    void saveStampsAMissingCreationTime();
     void unplacedDiagramGetsALayoutOnce();
     void vendorPousNestedInVendorPous();
     void deletedVendorPouLeavesNoTrace();
@@ -311,6 +312,29 @@ void TestPlcopenFixtures::saveReplacesTheFileOrLeavesItAlone()
     QCOMPARE(error, QStringLiteral("%1 was not saved: the folder %2 does not exist. The file on the disk is unchanged.")
                         .arg(QDir::toNativeSeparators(missingDirectory), QDir::toNativeSeparators(dir.filePath(QStringLiteral("missing")))));
     QVERIFY(!QFile::exists(missingDirectory));
+}
+
+void TestPlcopenFixtures::saveStampsAMissingCreationTime()
+{
+    // A new project has no creation time; the XSD requires an xsd:dateTime, so the save adds one.
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("new.xml"));
+    const QDateTime before = QDateTime::currentDateTimeUtc().addSecs(-1);
+    QString error;
+    QVERIFY2(plcopen::saveProjectFile(Project {}, path, &error), qPrintable(error));
+    const QDateTime after = QDateTime::currentDateTimeUtc().addSecs(1);
+    QFile saved(path);
+    QVERIFY(saved.open(QIODevice::ReadOnly));
+    const QByteArray bytes = saved.readAll();
+    QCOMPARE(schemaErrors(bytes), QString());
+    const QDateTime stamped = QDateTime::fromString(plcopen::readProject(bytes).project.fileHeader.creationDateTime, Qt::ISODate);
+    QVERIFY(stamped.isValid());
+    QVERIFY(stamped >= before && stamped <= after);
+
+    FileHeader kept;
+    kept.creationDateTime = QStringLiteral("2001-02-03T04:05:06");
+    plcopen::stampCreationTime(kept, QDateTime::currentDateTimeUtc());
+    QCOMPARE(kept.creationDateTime, QStringLiteral("2001-02-03T04:05:06"));
 }
 
 void TestPlcopenFixtures::unplacedDiagramGetsALayoutOnce()
