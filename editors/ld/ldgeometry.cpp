@@ -123,14 +123,17 @@ struct Measure {
 class RungLayout
 {
 public:
-    RungLayout(const LadderDocument &document, NetworkGeometry &geometry)
+    // The wires a rung's layout follows stay inside its network, so its graph holds only the
+    // network's own elements: laying out every network of a large body stays linear in its size.
+    RungLayout(const LadderDocument &document, const LdNetwork &network, NetworkGeometry &geometry)
         : m_document(document)
-        , m_graph(document.elements)
+        , m_elements(membersOf(document, network))
+        , m_graph(m_elements)
         , m_geometry(geometry)
     {
-        m_indexOf.reserve(document.elements.size());
-        for (std::size_t i = 0; i < document.elements.size(); ++i)
-            m_indexOf.emplace(header(document.elements[i]).localId, i);
+        m_indexOf.reserve(m_elements.size());
+        for (std::size_t i = 0; i < m_elements.size(); ++i)
+            m_indexOf.emplace(header(m_elements[i]).localId, i);
     }
 
     Measure measure(const RungNode &node) const
@@ -278,7 +281,21 @@ private:
 
     // ---- elements
 
-    const Element &elementOf(quint64 id) const { return m_document.elements[m_indexOf.at(id)]; }
+    const Element &elementOf(quint64 id) const
+    {
+        const auto local = m_indexOf.find(id);
+        return local != m_indexOf.end() ? m_elements[local->second] : *m_document.element(id);
+    }
+
+    static std::vector<Element> membersOf(const LadderDocument &document, const LdNetwork &network)
+    {
+        std::vector<Element> members;
+        members.reserve(network.members.size());
+        for (quint64 id : network.members)
+            if (const Element *e = document.element(id))
+                members.push_back(*e);
+        return members;
+    }
 
     Measure measureElement(quint64 id) const
     {
@@ -334,7 +351,10 @@ private:
     {
         SideSizes sides;
         const RungPins pins = m_document.pinsOf(id);
-        const std::size_t index = m_indexOf.at(id);
+        const auto local = m_indexOf.find(id);
+        if (local == m_indexOf.end())
+            return sides;
+        const std::size_t index = local->second;
         for (const LdGraph::Wire &wire : m_graph.inputs(index)) {
             if (wire.pin == pins.input)
                 continue;
@@ -386,7 +406,8 @@ private:
             const QSizeF box = boxSize(*block);
             const QRectF rect(x + sides.left, top + kNameHeight, box.width(), box.height());
             m_geometry.rects[id] = rect;
-            placeSides(m_indexOf.at(id), pins, rect);
+            if (const auto local = m_indexOf.find(id); local != m_indexOf.end())
+                placeSides(local->second, pins, rect);
             if (pins.input >= 0)
                 placed.entries.push_back({id, pins.input, {QPointF(x, line), QPointF(rect.left(), pinY(rect, 0))}});
             if (pins.output >= 0)
@@ -495,6 +516,7 @@ private:
     }
 
     const LadderDocument &m_document;
+    std::vector<Element> m_elements; // the network's members, in file order
     LdGraph m_graph;
     NetworkGeometry &m_geometry;
     std::unordered_map<quint64, std::size_t> m_indexOf;
@@ -557,7 +579,7 @@ NetworkGeometry layoutNetwork(const LadderDocument &document, std::size_t index,
     const LdNetwork &network = document.networks[index];
     NetworkGeometry g;
     g.top = top;
-    RungLayout layout(document, g);
+    RungLayout layout(document, network, g);
     Measure measure;
     if (!network.freehand) {
         measure = layout.measure(network.rung);
