@@ -8,6 +8,7 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QPushButton>
@@ -30,8 +31,10 @@ QComboBox *actionCombo(const QStringList &names, const QString &current)
 
 } // namespace
 
-StepPropertiesDialog::StepPropertiesDialog(const StepProperties &p, const QStringList &actionNames, QWidget *parent)
+StepPropertiesDialog::StepPropertiesDialog(const StepProperties &p, const QStringList &actionNames, Check check, QWidget *parent)
     : QDialog(parent)
+    , m_check(std::move(check))
+    , m_problem(new QLabel)
     , m_name(new QLineEdit(p.name))
     , m_initial(new QCheckBox(tr("Initial step")))
     , m_simplified(new QCheckBox(tr("Simplified step (no IEC actions)")))
@@ -44,6 +47,15 @@ StepPropertiesDialog::StepPropertiesDialog(const StepProperties &p, const QStrin
     , m_initialBefore(p.initial)
 {
     setWindowTitle(tr("Step Properties"));
+    setObjectName(QStringLiteral("stepPropertiesDialog"));
+    m_name->setObjectName(QStringLiteral("stepName"));
+    m_entry->setObjectName(QStringLiteral("entryAction"));
+    m_exit->setObjectName(QStringLiteral("exitAction"));
+    m_active->setObjectName(QStringLiteral("activeAction"));
+    m_problem->setObjectName(QStringLiteral("stepPropertiesProblem"));
+    m_problem->setWordWrap(true);
+    m_problem->setStyleSheet(QStringLiteral("color: #a03000;"));
+    m_problem->hide();
     m_initial->setChecked(p.initial);
     m_simplified->setChecked(p.options.simplified);
     m_minTime->setPlaceholderText(tr("e.g. T#2s"));
@@ -63,7 +75,17 @@ StepPropertiesDialog::StepPropertiesDialog(const StepProperties &p, const QStrin
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(form);
+    layout->addWidget(m_problem);
     layout->addWidget(buttons);
+}
+
+void StepPropertiesDialog::accept()
+{
+    const QString problem = m_check ? m_check(properties()) : QString();
+    m_problem->setText(problem);
+    m_problem->setVisible(!problem.isEmpty());
+    if (problem.isEmpty())
+        QDialog::accept();
 }
 
 StepProperties StepPropertiesDialog::properties() const
