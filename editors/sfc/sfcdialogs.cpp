@@ -4,6 +4,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCompleter>
 #include <QDialogButtonBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -12,6 +13,7 @@
 #include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QStyle>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -103,19 +105,23 @@ StepProperties StepPropertiesDialog::properties() const
     return p;
 }
 
-ActionAssociationsDialog::ActionAssociationsDialog(
-    const std::vector<model::ActionBlockAction> &actions, const QStringList &actionNames, QWidget *parent)
+ActionAssociationsDialog::ActionAssociationsDialog(const std::vector<model::ActionBlockAction> &actions,
+    const QStringList &actionNames, const QStringList &booleanNames, QWidget *parent)
     : QDialog(parent)
     , m_table(new QTableWidget(0, 4))
     , m_actionNames(actionNames)
+    , m_booleanNames(booleanNames)
     , m_originals(actions)
 {
     setWindowTitle(tr("IEC Actions of the Step"));
+    setObjectName(QStringLiteral("actionAssociationsDialog"));
+    m_table->setObjectName(QStringLiteral("actionTable"));
     m_table->setHorizontalHeaderLabels({tr("Qualifier"), tr("Time"), tr("Action or variable"), tr("Indicator")});
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     for (const model::ActionBlockAction &action : actions)
         addRow(action);
+    fitColumns();
     auto *add = new QPushButton(tr("Add"));
     auto *remove = new QPushButton(tr("Remove"));
     auto *up = new QPushButton(tr("Move Up"));
@@ -157,9 +163,31 @@ void ActionAssociationsDialog::addRow(const model::ActionBlockAction &action)
     auto *name = new QComboBox;
     name->setEditable(true);
     name->addItems(m_actionNames);
+    for (const QString &variable : m_booleanNames) {
+        name->addItem(variable);
+        name->setItemData(name->count() - 1, tr("BOOL variable"), Qt::ToolTipRole);
+    }
+    // Typing offers what starts with the letters typed, in any case, in a list.
+    name->completer()->setCompletionMode(QCompleter::PopupCompletion);
+    name->completer()->setCaseSensitivity(Qt::CaseInsensitive);
     name->setCurrentText(actionName(action));
     m_table->setCellWidget(row, 2, name);
     m_table->setItem(row, 3, new QTableWidgetItem(action.indicator.value_or(QString())));
+}
+
+void ActionAssociationsDialog::fitColumns()
+{
+    // Every column at least as wide as its header (translations are longer than English), the
+    // action names wider; the table, and so the dialog, wide enough to show them all.
+    m_table->resizeColumnsToContents();
+    const QFontMetrics metrics = m_table->horizontalHeader()->fontMetrics();
+    m_table->setColumnWidth(2, std::max(m_table->columnWidth(2), metrics.horizontalAdvance(QLatin1Char('M')) * 14));
+    int width = 0;
+    for (int column = 0; column < m_table->columnCount(); ++column)
+        width += m_table->columnWidth(column);
+    width += m_table->verticalHeader()->sizeHint().width() + 2 * m_table->frameWidth()
+        + m_table->style()->pixelMetric(QStyle::PM_ScrollBarExtent);
+    m_table->setMinimumWidth(width);
 }
 
 void ActionAssociationsDialog::moveRow(int delta)

@@ -47,22 +47,25 @@ private:
 };
 
 // The IEC action associations of a step: qualifier, time, action (a POU action or a Boolean
-// variable), indicator; add, remove, reorder.
+// variable), indicator; add, remove, reorder. The action field offers and completes the POU's
+// actions and the BOOL variables it sees.
 class ActionAssociationsDialog : public QDialog
 {
     Q_OBJECT
 
 public:
     ActionAssociationsDialog(const std::vector<model::ActionBlockAction> &actions, const QStringList &actionNames,
-        QWidget *parent = nullptr);
+        const QStringList &booleanNames = {}, QWidget *parent = nullptr);
     [[nodiscard]] std::vector<model::ActionBlockAction> actions() const;
 
 private:
     void addRow(const model::ActionBlockAction &action);
     void moveRow(int delta);
+    void fitColumns();
 
     QTableWidget *m_table;
     QStringList m_actionNames;
+    QStringList m_booleanNames;
     std::vector<model::ActionBlockAction> m_originals;
 };
 

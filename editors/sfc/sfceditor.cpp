@@ -8,6 +8,7 @@
 #include "editors/sfc/sfclayout.h"
 #include "editors/sfc/sfcoverlay.h"
 #include "editors/sfc/sfcplacement.h"
+#include "editors/text/completion.h"
 #include "interpreter/compiler/lexer.h"
 #include "model/body.h"
 #include "model/projectmodel.h"
@@ -22,6 +23,19 @@ namespace iec::editors::sfc {
 using namespace model;
 
 namespace {
+
+// IEC 61131-3 lets a BOOL variable stand for an action: the POU's and the global ones.
+QStringList booleanVariables(const CompletionProvider *provider)
+{
+    QStringList names;
+    if (!provider)
+        return names;
+    for (const CompletionItem &item : provider->variables()) {
+        if (item.detail.compare(QLatin1String("BOOL"), Qt::CaseInsensitive) == 0)
+            names << item.text;
+    }
+    return names;
+}
 
 QStringList partNames(const ProjectModel &model, PouId pou, bool actions)
 {
@@ -358,7 +372,8 @@ void SfcEditor::editActionsDialog(quint64 stepId)
 {
     if (refuseWhileOnline())
         return;
-    ActionAssociationsDialog dialog(stepActions(document(), stepId), partNames(projectModel(), bodyRef().pou, true), this);
+    ActionAssociationsDialog dialog(
+        stepActions(document(), stepId), partNames(projectModel(), bodyRef().pou, true), booleanVariables(completionProvider()), this);
     if (dialog.exec() != QDialog::Accepted)
         return;
     const std::vector<ActionBlockAction> actions = dialog.actions();

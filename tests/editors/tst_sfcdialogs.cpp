@@ -3,18 +3,24 @@
 // IEC Actions dialog shows its headers whole and offers BOOL variables with completion.
 #include "editors/sfc/sfcdialogs.h"
 #include "editors/sfc/sfceditor.h"
+#include "editors/sfc/sfcgeometry.h"
+#include "editors/text/completion.h"
 #include "model/body.h"
 #include "model/projectmodel.h"
 #include "model/sfcoptions.h"
 
 #include <QApplication>
 #include <QComboBox>
+#include <QCompleter>
 #include <QDialogButtonBox>
+#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QTableWidget>
 #include <QTest>
 #include <QTimer>
+#include <QTranslator>
 #include <QUndoStack>
 
 using namespace iec;
@@ -56,6 +62,33 @@ void pressOk(QDialog &dialog)
 {
     dialog.findChild<QDialogButtonBox *>()->button(QDialogButtonBox::Ok)->click();
 }
+
+// What the app's completion provider says: BOOL variables, one INT, a global BOOL.
+class Variables : public editors::CompletionProvider
+{
+public:
+    QList<editors::CompletionItem> variables() const override
+    {
+        using Item = editors::CompletionItem;
+        return {{QStringLiteral("Horn"), Item::Kind::Variable, QStringLiteral("BOOL"), {}},
+            {QStringLiteral("Level"), Item::Kind::Variable, QStringLiteral("INT"), {}},
+            {QStringLiteral("AlarmLamp"), Item::Kind::Variable, QStringLiteral("bool"), QStringLiteral("Global variables")}};
+    }
+    QList<editors::CompletionItem> members(const QString &) const override { return {}; }
+    QList<editors::CompletionItem> pous() const override { return {}; }
+};
+
+// Every text made long, as German and Chinese fonts make them: the columns must still show them.
+class LongTranslator : public QTranslator
+{
+public:
+    QString translate(const char *, const char *sourceText, const char *, int) const override
+    {
+        const QString text = QString::fromUtf8(sourceText);
+        return text + QLatin1Char(' ') + text + QStringLiteral(" (lang)");
+    }
+    bool isEmpty() const override { return false; }
+};
 
 } // namespace
 
@@ -177,6 +210,66 @@ private Q_SLOTS:
         QCOMPARE(f.stack.count(), 1);
         QVERIFY(f.editor->stepId(QStringLiteral("Fill")) != 0);
         QCOMPARE(f.actionNames(), QStringList {QStringLiteral("Existing")});
+    }
+
+    // Item 9: every header is shown whole, in any language.
+    void actionColumnsShowTheirHeaders_data()
+    {
+        QTest::addColumn<bool>("longTexts");
+        QTest::newRow("English") << false;
+        QTest::newRow("long translation") << true;
+    }
+
+    void actionColumnsShowTheirHeaders()
+    {
+        QFETCH(bool, longTexts);
+        LongTranslator translator;
+        if (longTexts)
+            QCoreApplication::installTranslator(&translator);
+        ActionAssociationsDialog dialog({actionAssociation(QStringLiteral("N"), QStringLiteral("Fill"))}, {QStringLiteral("Fill")});
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        QCoreApplication::removeTranslator(&translator);
+        auto *table = dialog.findChild<QTableWidget *>(QStringLiteral("actionTable"));
+        QHeaderView *header = table->horizontalHeader();
+        for (int column = 0; column < table->columnCount(); ++column) {
+            const QString label = table->horizontalHeaderItem(column)->text();
+            QVERIFY2(!longTexts || label.endsWith(QStringLiteral("(lang)")), qPrintable(label));
+            QVERIFY2(header->sectionSize(column) > header->fontMetrics().horizontalAdvance(label), qPrintable(label));
+            QVERIFY2(header->sectionViewportPosition(column) + header->sectionSize(column) <= header->viewport()->width(),
+                qPrintable(label));
+        }
+    }
+
+    // Item 10: the action field offers the POU's actions and the BOOL variables, and completes.
+    void actionFieldOffersBooleanVariables()
+    {
+        Fixture f;
+        Variables variables;
+        f.editor->setCompletionProvider(&variables);
+        f.editor->select({f.editor->stepId(QStringLiteral("Step1"))});
+        QStringList offered;
+        QString completed;
+        whenOpen<ActionAssociationsDialog>([&](ActionAssociationsDialog &dialog) {
+            auto *table = dialog.findChild<QTableWidget *>(QStringLiteral("actionTable"));
+            const auto buttons = dialog.findChildren<QPushButton *>();
+            const auto add = std::ranges::find_if(buttons, [](QPushButton *b) { return b->text() == QStringLiteral("Add"); });
+            (*add)->click();
+            auto *name = qobject_cast<QComboBox *>(table->cellWidget(0, 2));
+            for (int i = 0; i < name->count(); ++i)
+                offered << name->itemText(i);
+            name->completer()->setCompletionPrefix(QStringLiteral("ala"));
+            completed = name->completer()->currentCompletion();
+            name->setCurrentText(QStringLiteral("Horn"));
+            pressOk(dialog);
+        });
+        QVERIFY(f.editor->trigger(QStringLiteral("sfcActions")));
+        QCOMPARE(offered, (QStringList {QStringLiteral("Existing"), QStringLiteral("Horn"), QStringLiteral("AlarmLamp")}));
+        QCOMPARE(completed, QStringLiteral("AlarmLamp"));
+        const auto actions = stepActions(f.editor->document(), f.editor->stepId(QStringLiteral("Step1")));
+        QCOMPARE(actions.size(), std::size_t(1));
+        QCOMPARE(actionName(actions.front()), QStringLiteral("Horn"));
+        f.editor->setCompletionProvider(nullptr);
     }
 };
 
