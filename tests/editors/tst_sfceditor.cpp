@@ -13,6 +13,7 @@
 #include "model/sfcoptions.h"
 #include "tests/editors/sfcmixingtank.h"
 #include "tests/model/roundtrip.h"
+#include "tests/editors/languageswitch.h"
 
 #include <QAction>
 #include <QDir>
@@ -22,7 +23,6 @@
 #include <QTest>
 #include <QToolBar>
 #include <QToolButton>
-#include <QTranslator>
 #include <QUndoStack>
 
 using namespace iec;
@@ -66,17 +66,6 @@ QString conditionOf(const SfcEditor &editor, quint64 transitionId)
     const auto &condition = std::get<model::Transition>(*e).condition;
     return std::get<model::InlineCondition>(condition->kind).body->text();
 }
-
-// Every text in brackets: a language switch that the test can see.
-class BracketTranslator : public QTranslator
-{
-public:
-    QString translate(const char *, const char *sourceText, const char *, int) const override
-    {
-        return QStringLiteral("[%1]").arg(QString::fromUtf8(sourceText));
-    }
-    bool isEmpty() const override { return false; }
-};
 
 } // namespace
 
@@ -421,18 +410,11 @@ private Q_SLOTS:
         const QStringList english = menuTexts();
         QVERIFY(english.contains(QStringLiteral("Step-Transition (after)")));
         const QString level = label->text();
-        BracketTranslator translator;
-        const auto switchLanguage = [](QTranslator *install, QTranslator *remove) {
-            if (install)
-                QCoreApplication::installTranslator(install);
-            if (remove)
-                QCoreApplication::removeTranslator(remove);
-            QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
-        };
+        tests::BracketTranslator translator;
         for (int round = 0; round < 2; ++round) {
             QVERIFY(!e.trigger(QStringLiteral("sfcNewChart"))); // a refusal on the message line
             QVERIFY(!e.lastMessage().isEmpty());
-            switchLanguage(&translator, nullptr);
+            tests::switchLanguage(&translator, nullptr);
             QCOMPARE(e.lastMessage(), QString());
             QCOMPARE(e.action(QStringLiteral("sfcStepAfter"))->text(), QStringLiteral("[Step-Transition (after)]"));
             QCOMPARE(buttonText("sfcStepAfter"), QStringLiteral("[Step-Transition (after)]"));
@@ -442,7 +424,7 @@ private Q_SLOTS:
                 bracketed << QLatin1Char('[') + text + QLatin1Char(']');
             QCOMPARE(menuTexts(), bracketed);
             QVERIFY2(label->text().startsWith(QStringLiteral("[Inside macro step")), qPrintable(label->text()));
-            switchLanguage(nullptr, &translator);
+            tests::switchLanguage(nullptr, &translator);
             QCOMPARE(menuTexts(), english);
             QCOMPARE(label->text(), level);
         }
