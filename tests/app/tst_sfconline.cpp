@@ -400,7 +400,14 @@ void TestSfcOnline::everyEditingKeySaysWhyOnline()
     QVERIFY(QApplication::focusWidget());
     editor->showMessage(QString());
     QTest::keySequence(QApplication::focusWidget(), keys);
-    QCOMPARE(editor->lastMessage(), QStringLiteral("The diagram cannot be changed while online. Log out first (Online → Logout)."));
+    const QString refusal = QStringLiteral("The diagram cannot be changed while online. Log out first (Online → Logout).");
+    QCOMPARE(editor->lastMessage(), refusal);
+    // The window's Edit menu says the same (its Cut, Paste and Delete are the editor's).
+    for (const char *name : {"cutAction", "pasteAction", "deleteEditAction"}) {
+        editor->showMessage(QString());
+        window->findChild<QAction *>(QString::fromLatin1(name))->trigger();
+        QCOMPARE(editor->lastMessage(), refusal);
+    }
     QCOMPARE(window->projectModel().project().findPou(QStringLiteral("Tank"))->bodies, before);
     window->online().logout();
 }
