@@ -95,7 +95,8 @@ public:
         if (event->type() != QEvent::ShortcutOverride && event->type() != QEvent::KeyPress)
             return false;
         const auto *key = static_cast<QKeyEvent *>(event);
-        if (!key->matches(QKeySequence::Undo) && !key->matches(QKeySequence::Redo))
+        const bool ctrlY = key->keyCombination() == QKeyCombination(Qt::CTRL, Qt::Key_Y); // redoes too
+        if (!key->matches(QKeySequence::Undo) && !key->matches(QKeySequence::Redo) && !ctrlY)
             return false;
         event->accept();
         if (event->type() == QEvent::KeyPress)

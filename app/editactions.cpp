@@ -1,6 +1,7 @@
 #include "app/editactions.h"
 
 #include "app/documentarea.h"
+#include "editors/common/diagrameditor.h"
 #include "editors/text/codeeditor.h"
 #include "editors/text/findreplacebar.h"
 #include "editors/text/texteditorwidget.h"
@@ -70,9 +71,9 @@ bool runOnTextWidget(QWidget *widget, Command command)
     return false;
 }
 
-bool matchesCommand(const QAction *action, Command command)
+bool matchesCommand(const QAction *action, Command command, bool enabledOnly)
 {
-    if (!action->isEnabled())
+    if (enabledOnly && !action->isEnabled())
         return false;
     if (action->objectName().endsWith(EditActions::objectNameSuffix(command), Qt::CaseInsensitive))
         return true;
@@ -80,9 +81,9 @@ bool matchesCommand(const QAction *action, Command command)
     return std::ranges::any_of(action->shortcuts(), [&](const QKeySequence &keys) { return standard.contains(keys); });
 }
 
-QAction *findIn(const QList<QAction *> &actions, Command command)
+QAction *findIn(const QList<QAction *> &actions, Command command, bool enabledOnly = true)
 {
-    const auto it = std::ranges::find_if(actions, [&](const QAction *a) { return matchesCommand(a, command); });
+    const auto it = std::ranges::find_if(actions, [&](const QAction *a) { return matchesCommand(a, command, enabledOnly); });
     return it == actions.end() ? nullptr : *it;
 }
 
@@ -188,6 +189,14 @@ bool EditActions::run(Command command)
     if (QAction *found = documentAction(m_documents.currentWidget(), command)) {
         found->trigger();
         return true;
+    }
+    // A greyed command of the current diagram (online, or nothing selected it applies to) still
+    // runs, so that it says why it does nothing, as its shortcut does.
+    if (editors::DiagramEditor *diagram = m_documents.currentDiagramEditor(); diagram && textCommand) {
+        if (QAction *greyed = findIn(diagram->actions(), command, false)) {
+            diagram->trigger(greyed->objectName());
+            return true;
+        }
     }
     // A text body whose editor lost the focus to the menu bar or a pane.
     const std::optional<model::BodyRef> body = m_documents.currentBody();

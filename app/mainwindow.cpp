@@ -436,6 +436,8 @@ bool MainWindow::loadProject(const QString &path, QString *error)
 {
     model::plcopen::ReadResult result = model::plcopen::readProjectFile(path);
     const QString fileName = QFileInfo(path).fileName();
+    // The messages of the project shown so far (build, runtime) say nothing about this one.
+    m_messages->model().clear();
     m_messages->model().setMessages(QStringLiteral("import"), messagesOf(result.diagnostics, fileName));
     if (result.fileError || !result.isProject) {
         if (error)

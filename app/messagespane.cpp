@@ -20,6 +20,8 @@ QString locationText(const Message &message)
         return MessagesPane::tr("%1, line %2, column %3").arg(message.pouName).arg(message.line).arg(message.column);
     if (message.line > 0)
         return MessagesPane::tr("%1, line %2").arg(message.pouName).arg(message.line);
+    if (message.localId && message.column > 0)
+        return MessagesPane::tr("%1, element %2, column %3").arg(message.pouName).arg(*message.localId).arg(message.column);
     if (message.localId)
         return MessagesPane::tr("%1, element %2").arg(message.pouName).arg(*message.localId);
     return message.pouName;

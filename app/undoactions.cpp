@@ -18,7 +18,11 @@ UndoActions::UndoActions(QUndoGroup &group, QObject *parent)
     m_undo->setObjectName(QStringLiteral("undoAction"));
     m_redo->setObjectName(QStringLiteral("redoAction"));
     m_undo->setShortcut(QKeySequence::Undo);
-    m_redo->setShortcut(QKeySequence::Redo);
+    // Ctrl+Y redoes too wherever the platform's Redo is another key (CODESYS, Windows habits).
+    QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
+    if (const QKeySequence ctrlY(Qt::CTRL | Qt::Key_Y); !redoKeys.contains(ctrlY))
+        redoKeys << ctrlY;
+    m_redo->setShortcuts(redoKeys);
     // The desktop's icons where there is a theme, the style's arrows everywhere else.
     const QStyle *style = QApplication::style();
     m_undo->setIcon(QIcon::fromTheme(QStringLiteral("edit-undo"), style->standardIcon(QStyle::SP_ArrowBack)));

@@ -47,8 +47,12 @@ QString formatDiagnostic(const QString &file, const interp::Diagnostic &diagnost
     if (!diagnostic.hint.isEmpty())
         text += QStringLiteral(" (hint: ") + diagnostic.hint + QLatin1Char(')');
     // An element of a graphical body has no line: name it the way the XML reader does.
-    if (diagnostic.location.line <= 0 && diagnostic.location.localId >= 0)
-        text += QStringLiteral(" [localId %1]").arg(diagnostic.location.localId);
+    // (An inline transition condition's message also says where in the condition text.)
+    if (diagnostic.location.line <= 0 && diagnostic.location.localId >= 0) {
+        text += diagnostic.location.column > 0
+            ? QStringLiteral(" [localId %1, column %2]").arg(diagnostic.location.localId).arg(diagnostic.location.column)
+            : QStringLiteral(" [localId %1]").arg(diagnostic.location.localId);
+    }
     return text;
 }
 

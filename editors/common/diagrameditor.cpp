@@ -470,6 +470,9 @@ void DiagramEditor::changeEvent(QEvent *event)
     if (event->type() == QEvent::LanguageChange) {
         for (const auto &entry : m_actions)
             entry->action->setText(QCoreApplication::translate(entry->context.constData(), entry->spec.text));
+        // A message was composed in the old language (with its arguments): it goes rather than
+        // mixing two languages in one window.
+        showMessage(QString());
         retranslate();
     }
     QWidget::changeEvent(event);

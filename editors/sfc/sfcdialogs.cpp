@@ -4,13 +4,16 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCompleter>
 #include <QDialogButtonBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QStyle>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -30,8 +33,10 @@ QComboBox *actionCombo(const QStringList &names, const QString &current)
 
 } // namespace
 
-StepPropertiesDialog::StepPropertiesDialog(const StepProperties &p, const QStringList &actionNames, QWidget *parent)
+StepPropertiesDialog::StepPropertiesDialog(const StepProperties &p, const QStringList &actionNames, Check check, QWidget *parent)
     : QDialog(parent)
+    , m_check(std::move(check))
+    , m_problem(new QLabel)
     , m_name(new QLineEdit(p.name))
     , m_initial(new QCheckBox(tr("Initial step")))
     , m_simplified(new QCheckBox(tr("Simplified step (no IEC actions)")))
@@ -44,6 +49,15 @@ StepPropertiesDialog::StepPropertiesDialog(const StepProperties &p, const QStrin
     , m_initialBefore(p.initial)
 {
     setWindowTitle(tr("Step Properties"));
+    setObjectName(QStringLiteral("stepPropertiesDialog"));
+    m_name->setObjectName(QStringLiteral("stepName"));
+    m_entry->setObjectName(QStringLiteral("entryAction"));
+    m_exit->setObjectName(QStringLiteral("exitAction"));
+    m_active->setObjectName(QStringLiteral("activeAction"));
+    m_problem->setObjectName(QStringLiteral("stepPropertiesProblem"));
+    m_problem->setWordWrap(true);
+    m_problem->setStyleSheet(QStringLiteral("color: #a03000;"));
+    m_problem->hide();
     m_initial->setChecked(p.initial);
     m_simplified->setChecked(p.options.simplified);
     m_minTime->setPlaceholderText(tr("e.g. T#2s"));
@@ -63,7 +77,17 @@ StepPropertiesDialog::StepPropertiesDialog(const StepProperties &p, const QStrin
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(form);
+    layout->addWidget(m_problem);
     layout->addWidget(buttons);
+}
+
+void StepPropertiesDialog::accept()
+{
+    const QString problem = m_check ? m_check(properties()) : QString();
+    m_problem->setText(problem);
+    m_problem->setVisible(!problem.isEmpty());
+    if (problem.isEmpty())
+        QDialog::accept();
 }
 
 StepProperties StepPropertiesDialog::properties() const
@@ -81,19 +105,23 @@ StepProperties StepPropertiesDialog::properties() const
     return p;
 }
 
-ActionAssociationsDialog::ActionAssociationsDialog(
-    const std::vector<model::ActionBlockAction> &actions, const QStringList &actionNames, QWidget *parent)
+ActionAssociationsDialog::ActionAssociationsDialog(const std::vector<model::ActionBlockAction> &actions,
+    const QStringList &actionNames, const QStringList &booleanNames, QWidget *parent)
     : QDialog(parent)
     , m_table(new QTableWidget(0, 4))
     , m_actionNames(actionNames)
+    , m_booleanNames(booleanNames)
     , m_originals(actions)
 {
     setWindowTitle(tr("IEC Actions of the Step"));
+    setObjectName(QStringLiteral("actionAssociationsDialog"));
+    m_table->setObjectName(QStringLiteral("actionTable"));
     m_table->setHorizontalHeaderLabels({tr("Qualifier"), tr("Time"), tr("Action or variable"), tr("Indicator")});
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     for (const model::ActionBlockAction &action : actions)
         addRow(action);
+    fitColumns();
     auto *add = new QPushButton(tr("Add"));
     auto *remove = new QPushButton(tr("Remove"));
     auto *up = new QPushButton(tr("Move Up"));
@@ -135,9 +163,31 @@ void ActionAssociationsDialog::addRow(const model::ActionBlockAction &action)
     auto *name = new QComboBox;
     name->setEditable(true);
     name->addItems(m_actionNames);
+    for (const QString &variable : m_booleanNames) {
+        name->addItem(variable);
+        name->setItemData(name->count() - 1, tr("BOOL variable"), Qt::ToolTipRole);
+    }
+    // Typing offers what starts with the letters typed, in any case, in a list.
+    name->completer()->setCompletionMode(QCompleter::PopupCompletion);
+    name->completer()->setCaseSensitivity(Qt::CaseInsensitive);
     name->setCurrentText(actionName(action));
     m_table->setCellWidget(row, 2, name);
     m_table->setItem(row, 3, new QTableWidgetItem(action.indicator.value_or(QString())));
+}
+
+void ActionAssociationsDialog::fitColumns()
+{
+    // Every column at least as wide as its header (translations are longer than English), the
+    // action names wider; the table, and so the dialog, wide enough to show them all.
+    m_table->resizeColumnsToContents();
+    const QFontMetrics metrics = m_table->horizontalHeader()->fontMetrics();
+    m_table->setColumnWidth(2, std::max(m_table->columnWidth(2), metrics.horizontalAdvance(QLatin1Char('M')) * 14));
+    int width = 0;
+    for (int column = 0; column < m_table->columnCount(); ++column)
+        width += m_table->columnWidth(column);
+    width += m_table->verticalHeader()->sizeHint().width() + 2 * m_table->frameWidth()
+        + m_table->style()->pixelMetric(QStyle::PM_ScrollBarExtent);
+    m_table->setMinimumWidth(width);
 }
 
 void ActionAssociationsDialog::moveRow(int delta)

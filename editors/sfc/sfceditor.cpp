@@ -8,6 +8,8 @@
 #include "editors/sfc/sfclayout.h"
 #include "editors/sfc/sfcoverlay.h"
 #include "editors/sfc/sfcplacement.h"
+#include "editors/text/completion.h"
+#include "interpreter/compiler/lexer.h"
 #include "model/body.h"
 #include "model/projectmodel.h"
 #include "model/undo/bodyelementscommand.h"
@@ -21,6 +23,19 @@ namespace iec::editors::sfc {
 using namespace model;
 
 namespace {
+
+// IEC 61131-3 lets a BOOL variable stand for an action: the POU's and the global ones.
+QStringList booleanVariables(const CompletionProvider *provider)
+{
+    QStringList names;
+    if (!provider)
+        return names;
+    for (const CompletionItem &item : provider->variables()) {
+        if (item.detail.compare(QLatin1String("BOOL"), Qt::CaseInsensitive) == 0)
+            names << item.text;
+    }
+    return names;
+}
 
 QStringList partNames(const ProjectModel &model, PouId pou, bool actions)
 {
@@ -135,36 +150,56 @@ bool SfcEditor::openStepAction(quint64 id, const QString &which)
     QString StepOptions::*field = which == QLatin1String("entry") ? &StepOptions::entryAction
         : which == QLatin1String("exit")                          ? &StepOptions::exitAction
                                                                   : &StepOptions::activeAction;
-    const bool needsName = (properties->options.*field).isEmpty();
-    const QString name = needsName ? properties->name + QLatin1Char('_') + which : properties->options.*field;
-    const bool needsPart = !projectModel().findPouPart(bodyRef().pou, BodyRef::Part::Action, name);
-    if (needsName || needsPart) {
-        // One gesture: the POU action and the step's reference to it.
-        auto gesture = std::make_unique<QUndoCommand>(tr("Add %1 action %2").arg(which, name));
-        if (needsPart) {
-            PouPart part;
-            part.name = name;
-            part.body = Body::withLanguage(BodyLanguage::ST);
-            new AddPouPartCommand(projectModel(), bodyRef().pou, BodyRef::Part::Action, part, gesture.get());
-        }
-        if (needsName) {
-            StepProperties named = *properties;
-            named.options.*field = name;
-            std::vector<Element> after;
-            const EditResult result = prepareEdit(
-                chartEdit([&](ChartDocument &doc, const auto &) { return sfc::setStepProperties(doc, id, named); }, {}),
-                after);
-            if (!result.ok()) {
-                showError(result.error);
-                return false;
-            }
-            new SetBodyElementsCommand(projectModel(), bodyRef(), std::move(after), gesture->text(), gesture.get());
-        }
-        if (!pushCommand(gesture.release(), {id}))
-            return false;
-    }
+    StepProperties named = *properties;
+    if ((named.options.*field).isEmpty())
+        named.options.*field = properties->name + QLatin1Char('_') + which;
+    const QString name = named.options.*field;
+    if (!changeStep(id, named, tr("Add %1 action %2").arg(which, name)))
+        return false;
     Q_EMIT openPartRequested(bodyRef().pou, BodyRef::Part::Action, name);
     return true;
+}
+
+QString SfcEditor::stepChangeProblem(quint64 id, const StepProperties &changed) const
+{
+    ChartDocument copy = document();
+    return sfc::setStepProperties(copy, id, changed).error;
+}
+
+bool SfcEditor::changeStep(quint64 id, const StepProperties &changed, const QString &undoText)
+{
+    const std::optional<StepProperties> before = stepProperties(document(), id);
+    if (!before) {
+        showError(tr("Select a step first."));
+        return false;
+    }
+    // One gesture: the POU actions the step names and does not find (in ST, as CODESYS creates
+    // them from the step), and the step's new properties.
+    auto gesture = std::make_unique<QUndoCommand>(undoText);
+    QStringList created;
+    for (const QString &name : stepActionNames(changed.options)) {
+        if (created.contains(name, Qt::CaseInsensitive) || !interp::isIecIdentifier(name)
+            || projectModel().findPouPart(bodyRef().pou, BodyRef::Part::Action, name))
+            continue;
+        created << name;
+        PouPart part;
+        part.name = name;
+        part.body = Body::withLanguage(BodyLanguage::ST);
+        new AddPouPartCommand(projectModel(), bodyRef().pou, BodyRef::Part::Action, part, gesture.get());
+    }
+    if (!(changed == *before)) {
+        std::vector<Element> after;
+        const EditResult result = prepareEdit(
+            chartEdit([&](ChartDocument &doc, const auto &) { return sfc::setStepProperties(doc, id, changed); }, {}), after);
+        if (!result.ok()) {
+            showError(result.error);
+            return false;
+        }
+        new SetBodyElementsCommand(projectModel(), bodyRef(), std::move(after), undoText, gesture.get());
+    }
+    if (gesture->childCount() == 0)
+        return true;
+    return pushCommand(gesture.release(), {id});
 }
 
 // ---- macro steps
@@ -326,18 +361,19 @@ void SfcEditor::editStepDialog(quint64 stepId)
     const std::optional<StepProperties> properties = stepProperties(document(), stepId);
     if (!properties)
         return;
-    StepPropertiesDialog dialog(*properties, partNames(projectModel(), bodyRef().pou, true), this);
-    if (dialog.exec() == QDialog::Accepted && !(dialog.properties() == *properties)) {
-        const StepProperties changed = dialog.properties();
-        edit(tr("Change step"), [&](ChartDocument &doc, const auto &) { return sfc::setStepProperties(doc, stepId, changed); });
-    }
+    // A refusal (a duplicate name, ...) is shown in the dialog, which keeps what was typed.
+    StepPropertiesDialog dialog(*properties, partNames(projectModel(), bodyRef().pou, true),
+        [this, stepId](const StepProperties &changed) { return stepChangeProblem(stepId, changed); }, this);
+    if (dialog.exec() == QDialog::Accepted)
+        changeStep(stepId, dialog.properties(), tr("Change step"));
 }
 
 void SfcEditor::editActionsDialog(quint64 stepId)
 {
     if (refuseWhileOnline())
         return;
-    ActionAssociationsDialog dialog(stepActions(document(), stepId), partNames(projectModel(), bodyRef().pou, true), this);
+    ActionAssociationsDialog dialog(
+        stepActions(document(), stepId), partNames(projectModel(), bodyRef().pou, true), booleanVariables(completionProvider()), this);
     if (dialog.exec() != QDialog::Accepted)
         return;
     const std::vector<ActionBlockAction> actions = dialog.actions();

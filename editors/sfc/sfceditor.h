@@ -41,6 +41,12 @@ public:
     // the step has none, creates the POU action when it does not exist (one undo step), and asks
     // to open it.
     bool openStepAction(quint64 stepId, const QString &which); // "entry", "exit", "active"
+    // Gives a step `changed` properties as one undo step named `undoText`; the POU actions they
+    // name (entry, exit, active) that the POU does not have are created in ST in the same step.
+    // A refusal is shown. Returns whether it was done (also when there was nothing to do).
+    bool changeStep(quint64 stepId, const StepProperties &changed, const QString &undoText);
+    // Why changeStep would refuse `changed` (setStepProperties' rule), or empty.
+    [[nodiscard]] QString stepChangeProblem(quint64 stepId, const StepProperties &changed) const;
 
     // ---- macro steps: which level is shown
     bool enterMacro(quint64 macroId);

@@ -416,6 +416,16 @@ std::optional<StepProperties> stepProperties(const ChartDocument &document, quin
     return std::nullopt;
 }
 
+QStringList stepActionNames(const model::StepOptions &options)
+{
+    QStringList names;
+    for (const QString &name : {options.entryAction, options.exitAction, options.activeAction}) {
+        if (!name.trimmed().isEmpty())
+            names << name.trimmed();
+    }
+    return names;
+}
+
 EditResult setStepProperties(ChartDocument &document, quint64 stepId, const StepProperties &properties)
 {
     const std::optional<StepProperties> before = stepProperties(document, stepId);
@@ -427,6 +437,11 @@ EditResult setStepProperties(ChartDocument &document, quint64 stepId, const Step
                    "letter.").arg(name), {}};
     if (name.compare(before->name, Qt::CaseInsensitive) != 0 && isStepName(document, name))
         return {QCoreApplication::translate("iec::editors::sfc::SfcEdits", "There is already a step named '%1'.").arg(name), {}};
+    for (const QString &action : stepActionNames(properties.options)) {
+        if (!interp::isIecIdentifier(action))
+            return {QCoreApplication::translate("iec::editors::sfc::SfcEdits", "'%1' is not a valid action name: use letters, digits and single underscores, starting with a "
+                       "letter.").arg(action), {}};
+    }
     if (properties.initial != before->initial) {
         std::optional<NodePlace> place = findNode(document.chart, stepId);
         const bool first = place && place->sequence->front().localId == stepId && !place->parent;

@@ -39,7 +39,9 @@ struct StepProperties {
     bool operator==(const StepProperties &) const = default;
 };
 std::optional<StepProperties> stepProperties(const ChartDocument &document, quint64 stepId);
-// Renames jumps that pointed to the old name too.
+// The entry, exit and active action names a step's options give (the empty ones left out).
+QStringList stepActionNames(const model::StepOptions &options);
+// Renames jumps that pointed to the old name too. Refuses action names that are no identifiers.
 EditResult setStepProperties(ChartDocument &document, quint64 stepId, const StepProperties &properties);
 
 // IEC action associations of a step (its action block).

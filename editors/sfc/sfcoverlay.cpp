@@ -82,19 +82,29 @@ QString stepNameOf(const Element &e)
 void SfcOverlayMapper::apply(DiagramScene &scene, const interp::RuntimeSnapshot &snapshot, const QString &instance)
 {
     const ChartLookup chart(snapshot.chart(instance), m_policy.macroPath().empty());
+    const auto stepActive = [&](quint64 localId, const Element &e) {
+        const interp::sfc::StepState *state = chart.step(localId, stepNameOf(e));
+        return state && state->active ? state : nullptr;
+    };
     for (DiagramItem *item : scene.diagramItems()) {
         auto *sfcItem = static_cast<SfcItem *>(item);
         const Element &e = sfcItem->element();
         if (std::holds_alternative<Step>(e) || std::holds_alternative<MacroStep>(e)) {
-            const interp::sfc::StepState *state = chart.step(item->localId(), stepNameOf(e));
-            const bool active = state && state->active;
-            item->setActive(active);
-            item->setOnlineText(active ? formatElapsed(state->elapsedNs) : QString());
+            const interp::sfc::StepState *state = stepActive(item->localId(), e);
+            item->setActive(state != nullptr);
+            item->setOnlineText(state ? formatElapsed(state->elapsedNs) : QString());
         } else if (std::holds_alternative<Transition>(e)) {
             const auto it = chart.transitions.find(item->localId());
             item->setActive(it != chart.transitions.end() && it->second);
         } else if (auto *block = dynamic_cast<ActionBlockItem *>(item)) {
-            block->setActiveActions(chart.activeActions);
+            // An association is coloured while its own step is active (and its action runs): an
+            // action set by one step and reset by a later one must not colour the later step's row.
+            const auto &in = std::get<ActionBlock>(e).connectionPointIn;
+            const bool connected = in && !in->connections.empty();
+            const quint64 stepId = connected ? in->connections.front().refLocalId : 0;
+            const auto *step = connected ? static_cast<SfcItem *>(scene.itemFor(stepId)) : nullptr;
+            const bool ownStepActive = step && stepActive(stepId, step->element());
+            block->setActiveActions(ownStepActive ? chart.activeActions : QSet<QString> {});
         }
     }
 }

@@ -490,33 +490,71 @@ private:
         return statements ? spliceText(std::move(*statements)) : QString();
     }
 
-    // An ST condition: an expression, or statements that assign the transition's name.
+    // An ST condition: an expression, or statements that assign the transition's name. An inline
+    // condition (`inlineOn`: its transition) is reported on the transition, at the place counted
+    // in its text; a named transition's on the lines of its own body.
     std::optional<ast::Expr> stCondition(const QString &text, const QString &owner, const QString &resultName,
-        std::vector<ast::Stmt> &pre)
+        std::vector<ast::Stmt> &pre, std::optional<quint64> inlineOn = {})
     {
-        QString trimmed = text.trimmed();
-        if (!trimmed.contains(QLatin1String(":="))) {
-            while (trimmed.endsWith(QLatin1Char(';')))
-                trimmed.chop(1);
+        if (!text.contains(QLatin1String(":="))) {
+            // Only the end is cut, so that lines and columns stay the user's.
+            QString expression = text;
+            while (!expression.isEmpty() && (expression.back().isSpace() || expression.back() == QLatin1Char(';')))
+                expression.chop(1);
             Diagnostics local;
-            auto statements = parseStBody(QString(QStringLiteral("__sfc_cond :=\n") + trimmed + QStringLiteral("\n;")), owner, local, 0);
-            for (const Diagnostic &d : local.all()) {
-                if (d.severity == Diagnostic::Severity::Error)
-                    m_diagnostics.error(owner, d.location, d.message, d.hint);
-            }
+            auto statements = parseStBody(QString(QStringLiteral("__sfc_cond :=\n") + expression + QStringLiteral("\n;")), owner, local, 0);
+            reportCondition(local, owner, inlineOn, expression, true);
             if (local.hasErrors() || statements.size() != 1 || statements.front().kind != ast::StmtKind::Assign) {
                 m_failed = true;
                 return std::nullopt;
             }
+            if (inlineOn)
+                graphical::relocate(statements, at(*inlineOn));
             return std::move(statements.front().value);
         }
-        const size_t before = m_diagnostics.all().size();
-        auto statements = parseStBody(text, owner, m_diagnostics);
-        if (m_diagnostics.all().size() != before && m_diagnostics.hasErrors())
+        Diagnostics local;
+        auto statements = parseStBody(text, owner, local);
+        reportCondition(local, owner, inlineOn, text, false);
+        if (local.hasErrors())
             m_failed = true;
+        if (inlineOn)
+            graphical::relocate(statements, at(*inlineOn));
         for (ast::Stmt &s : statements)
             pre.push_back(std::move(s));
         return conditionVariable(resultName);
+    }
+
+    // Passes on what parsing a condition's `text` found (see stCondition).
+    void reportCondition(const Diagnostics &local, const QString &owner, std::optional<quint64> inlineOn, const QString &text,
+        bool errorsOnly)
+    {
+        const QStringList lines = text.split(QLatin1Char('\n'));
+        for (const Diagnostic &d : local.all()) {
+            const bool isError = d.severity == Diagnostic::Severity::Error;
+            if (errorsOnly && !isError)
+                continue;
+            SourceLocation where = d.location;
+            QString message = d.message;
+            if (inlineOn) {
+                where = at(*inlineOn);
+                if (d.location.line >= 1 && d.location.line <= lines.size()) {
+                    // The place in the condition as one text: its lines before, then the column.
+                    int offset = 0;
+                    for (int line = 1; line < d.location.line; ++line)
+                        offset += int(lines[line - 1].size()) + 1;
+                    where.column = offset + std::max(1, d.location.column);
+                } else {
+                    // At what the lowering added after the text: the condition stops too early.
+                    where.column = int(text.size()) + 1;
+                    message = QCoreApplication::translate("iec::interp::Compiler", "The condition %1 is incomplete: something is missing at its end.")
+                                  .arg(text.trimmed());
+                }
+            }
+            if (isError)
+                m_diagnostics.error(owner, where, message, d.hint);
+            else
+                m_diagnostics.warning(owner, where, message, d.hint);
+        }
     }
 
     ast::Expr conditionVariable(const QString &name)
@@ -528,12 +566,13 @@ private:
         return graphical::nameExpr(name, {});
     }
 
+    // `inlineOn`: the transition whose inline body this is (see stCondition).
     std::optional<ast::Expr> bodyCondition(const model::Body &body, const QString &owner, const QString &name,
-        quint64 localId, std::vector<ast::Stmt> &pre)
+        quint64 localId, std::vector<ast::Stmt> &pre, std::optional<quint64> inlineOn = {})
     {
         switch (body.language()) {
         case model::BodyLanguage::ST:
-            return stCondition(body.text(), owner, name, pre);
+            return stCondition(body.text(), owner, name, pre, inlineOn);
         case model::BodyLanguage::IL: {
             const size_t before = m_diagnostics.all().size();
             const auto il = parseIlBody(body.text(), owner, m_diagnostics);
@@ -585,7 +624,7 @@ private:
                 error(t.localId, QStringLiteral("The transition refers to %1, which is neither a transition of %2 nor a variable.").arg(reference->name, m_pou.name));
             }
         } else if (const auto *inl = std::get_if<model::InlineCondition>(&c.kind)) {
-            expr = bodyCondition(*inl->body, owner, inl->name, t.localId, pre);
+            expr = bodyCondition(*inl->body, owner, inl->name, t.localId, pre, t.localId);
         } else if (const auto *wire = std::get_if<model::ConnectionPointIn>(&c.kind)) {
             expr = wiredCondition(t, *wire, pre);
         }

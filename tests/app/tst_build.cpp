@@ -1,6 +1,7 @@
 #include "app/buildcontroller.h"
 #include "app/documentarea.h"
 #include "app/mainwindow.h"
+#include "app/projecttemplates.h"
 #include "editors/text/codeeditor.h"
 #include "model/projectmodel.h"
 
@@ -19,6 +20,7 @@ private Q_SLOTS:
     void compilerDiagnosticsBecomeLocatedMessages_data();
     void compilerDiagnosticsBecomeLocatedMessages();
     void buildListsUnderlinesAndOpensTheLine();
+    void anotherProjectStartsWithoutTheOldMessages();
 
 private:
     QTemporaryDir m_configHome;
@@ -109,6 +111,23 @@ void TestBuild::buildListsUnderlinesAndOpensTheLine()
     QVERIFY(window.buildController().build());
     QCOMPARE(window.messagesPane().model().rowCount(), 0);
     QVERIFY(editor->diagnostics().isEmpty());
+}
+
+void TestBuild::anotherProjectStartsWithoutTheOldMessages()
+{
+    MainWindow window;
+    const auto buildWithAnError = [&window] {
+        window.projectModel().reset(programWithBody(QStringLiteral("Countr := 0;")));
+        QVERIFY(!window.buildController().build());
+        QCOMPARE(window.messagesPane().model().rowCount(), 1);
+    };
+    buildWithAnError();
+    QString error;
+    QVERIFY2(window.openExample(QStringLiteral(":/examples/mixing_tank.xml"), &error), qPrintable(error));
+    QCOMPARE(window.messagesPane().model().rowCount(), 0);
+    buildWithAnError();
+    window.newProjectFromTemplate(ProjectTemplate::ST);
+    QCOMPARE(window.messagesPane().model().rowCount(), 0);
 }
 
 QTEST_MAIN(TestBuild)

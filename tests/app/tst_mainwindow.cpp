@@ -24,6 +24,7 @@
 #include "model/projectmodel.h"
 #include "model/undo/datatypecommands.h"
 
+#include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QMenu>
@@ -63,6 +64,7 @@ private Q_SLOTS:
     void treeActionsFollowTheCurrentItem();
     void renamingInPlaceIsUndoable();
     void editUndoWorksOnTypingOrOnTheActiveStack();
+    void ctrlYRedoesToo();
     void renameKeepsTypingNotYetPushed();
     void windowMenuListsAndCyclesDocuments();
     void declarationsAreAboveThePouBody();
@@ -481,6 +483,25 @@ void TestMainWindow::renamingInPlaceIsUndoable()
     QCOMPARE(tree->indexForKey(ProjectTreeModel::pouKey(main)).data().toString(), QStringLiteral("Blinker (PRG)"));
     window.undoStacks().projectStack().undo();
     QCOMPARE(window.projectModel().project().findPou(main)->name, QStringLiteral("Main"));
+}
+
+void TestMainWindow::ctrlYRedoesToo()
+{
+    // Issue 13: Ctrl+Y redoes as well as the platform's Redo key.
+    MainWindow window;
+    QVERIFY(window.openProject(kFirstSteps));
+    auto *redo = window.findChild<QAction *>(QStringLiteral("redoAction"));
+    QVERIFY(redo->shortcuts().contains(QKeySequence(Qt::CTRL | Qt::Key_Y)));
+    QVERIFY(redo->shortcuts().contains(QKeySequence(QKeySequence::Redo)));
+    window.show();
+    QApplication::setActiveWindow(&window);
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    window.projectTree().setFocus();
+    QVERIFY(window.projectCommands().addPou({.name = QStringLiteral("Extra")}));
+    window.undoStacks().projectStack().undo();
+    QVERIFY(!window.projectModel().project().findPou(QStringLiteral("Extra")));
+    QTest::keyClick(&window.projectTree(), Qt::Key_Y, Qt::ControlModifier);
+    QVERIFY(window.projectModel().project().findPou(QStringLiteral("Extra")));
 }
 
 void TestMainWindow::editUndoWorksOnTypingOrOnTheActiveStack()

@@ -27,6 +27,9 @@ void TestMessagesPane::locations_data()
                                << QStringLiteral("Main, line 3");
     QTest::newRow("element") << Message{.pouName = QStringLiteral("Mixer"), .localId = 42}
                              << QStringLiteral("Mixer, element 42");
+    // An inline transition condition: the transition, and where in its text.
+    QTest::newRow("element and column") << Message{.pouName = QStringLiteral("Main"), .column = 7, .localId = 2}
+                                        << QStringLiteral("Main, element 2, column 7");
     QTest::newRow("whole project") << Message{.text = QStringLiteral("x")} << QString();
 }
 

@@ -7,6 +7,8 @@
 #include "model/projectmodel.h"
 
 #include <QComboBox>
+#include <QStyle>
+#include <QStyleOptionComboBox>
 #include <QDialogButtonBox>
 #include <QLineEdit>
 #include <QPushButton>
@@ -34,6 +36,7 @@ private Q_SLOTS:
     void refusedOperationsChangeNothing_data();
     void refusedOperationsChangeNothing();
     void addPouDialogResult();
+    void addPouDialogShowsWholeLanguageNames();
     void addPouPartDialogResult();
     void renameDialogValidates();
 };
@@ -388,6 +391,30 @@ void TestProjectCommands::refusedOperationsChangeNothing()
     QVERIFY(!error.isEmpty());
     QVERIFY(fixture.model.project() == before);
     QCOMPARE(fixture.stack.count(), 0);
+}
+
+void TestProjectCommands::addPouDialogShowsWholeLanguageNames()
+{
+    // Issue 13: "Sequential Function Chart (SFC)" was elided. Every choice fits its box when the
+    // dialog opens at its own size.
+    Fixture fixture;
+    AddPouDialog dialog(fixture.model.project());
+    dialog.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+    for (const char *name : {"kind", "language"}) {
+        auto *combo = dialog.findChild<QComboBox *>(QString::fromLatin1(name));
+        for (int index = 0; index < combo->count(); ++index) {
+            QStyleOptionComboBox option;
+            option.initFrom(combo);
+            option.currentText = combo->itemText(index);
+            option.currentIcon = combo->itemIcon(index);
+            option.iconSize = combo->iconSize();
+            const QRect field = combo->style()->subControlRect(QStyle::CC_ComboBox, &option, QStyle::SC_ComboBoxEditField, combo);
+            const int needed = combo->fontMetrics().horizontalAdvance(combo->itemText(index))
+                + (combo->itemIcon(index).isNull() ? 0 : combo->iconSize().width() + 4);
+            QVERIFY2(field.width() >= needed, qPrintable(QStringLiteral("%1: %2 < %3").arg(combo->itemText(index)).arg(field.width()).arg(needed)));
+        }
+    }
 }
 
 void TestProjectCommands::addPouDialogResult()

@@ -15,6 +15,7 @@
 #include "app/undostacks.h"
 #include "editors/common/diagramitem.h"
 #include "editors/common/diagramscene.h"
+#include "editors/common/diagramview.h"
 #include "editors/datatypes/datatypeeditor.h"
 #include "editors/declarations/declarationeditor.h"
 #include "editors/text/codeeditor.h"
@@ -26,6 +27,7 @@
 #include "tests/editors/sfcmixingtank.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QComboBox>
 #include <QDir>
 #include <QLineEdit>
@@ -125,6 +127,8 @@ private Q_SLOTS:
     void initTestCase();
     void mixingTankRunsOnlineInTheWindow();
     void editingIsRefusedWhileOnline();
+    void everyEditingKeySaysWhyOnline_data();
+    void everyEditingKeySaysWhyOnline();
     void insertMenuFollowsTheCurrentEditor();
 
 private:
@@ -358,6 +362,54 @@ void TestSfcOnline::editingIsRefusedWhileOnline()
                           QStringLiteral("sfcMacro")}));
     QVERIFY(!window->findChild<UndoActions *>()->isLocked());
     QVERIFY(editor->trigger(QStringLiteral("sfcStepAfter")));
+}
+
+void TestSfcOnline::everyEditingKeySaysWhyOnline_data()
+{
+    QTest::addColumn<QKeySequence>("keys");
+    QTest::newRow("Delete") << QKeySequence(Qt::Key_Delete);
+    QTest::newRow("Ctrl+T") << QKeySequence(Qt::CTRL | Qt::Key_T);
+    QTest::newRow("Ctrl+Shift+T") << QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T);
+    QTest::newRow("Ctrl+L") << QKeySequence(Qt::CTRL | Qt::Key_L);
+    QTest::newRow("Ctrl+A") << QKeySequence(Qt::CTRL | Qt::Key_A);
+    QTest::newRow("Ctrl+X") << QKeySequence(Qt::CTRL | Qt::Key_X);
+    QTest::newRow("Ctrl+V") << QKeySequence(Qt::CTRL | Qt::Key_V);
+    QTest::newRow("Enter") << QKeySequence(Qt::Key_Return);
+}
+
+void TestSfcOnline::everyEditingKeySaysWhyOnline()
+{
+    // As a user does it: the step clicked in the window's chart, then the key, wherever Qt
+    // delivers it (shortcut map, focus widget).
+    QFETCH(QKeySequence, keys);
+    auto window = windowWithEmptyChart();
+    window->show();
+    QApplication::setActiveWindow(window.get());
+    QVERIFY(QTest::qWaitForWindowActive(window.get()));
+    SfcEditor *editor = chartEditor(*window);
+    QVERIFY(editor->trigger(QStringLiteral("sfcNewChart")));
+    QVERIFY(editor->trigger(QStringLiteral("sfcStepAfter")));
+    const model::Pou *tank = window->projectModel().project().findPou(QStringLiteral("Tank"));
+    const std::vector<model::Body> before = tank->bodies;
+    QVERIFY(window->online().login());
+    const quint64 step = editor->stepId(QStringLiteral("Step1"));
+    editors::DiagramView *view = editor->view();
+    const QPoint at = view->mapFromScene(editor->scene()->itemFor(step)->frame().center());
+    QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, at);
+    QCOMPARE(editor->selection(), QList<quint64> {step});
+    QVERIFY(QApplication::focusWidget());
+    editor->showMessage(QString());
+    QTest::keySequence(QApplication::focusWidget(), keys);
+    const QString refusal = QStringLiteral("The diagram cannot be changed while online. Log out first (Online → Logout).");
+    QCOMPARE(editor->lastMessage(), refusal);
+    // The window's Edit menu says the same (its Cut, Paste and Delete are the editor's).
+    for (const char *name : {"cutAction", "pasteAction", "deleteEditAction"}) {
+        editor->showMessage(QString());
+        window->findChild<QAction *>(QString::fromLatin1(name))->trigger();
+        QCOMPARE(editor->lastMessage(), refusal);
+    }
+    QCOMPARE(window->projectModel().project().findPou(QStringLiteral("Tank"))->bodies, before);
+    window->online().logout();
 }
 
 void TestSfcOnline::insertMenuFollowsTheCurrentEditor()

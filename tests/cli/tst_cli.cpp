@@ -321,6 +321,17 @@ x := y;]]></xhtml:p></ST></body></pou></pous></types><instances><configurations/
   <types><dataTypes/><pous><pou name="P" pouType="program"><interface><localVars><variable name="x"><type><INT/></type></variable></localVars></interface>
   <body><FBD><outVariable localId="10000000012"><position x="200" y="10"/><connectionPointIn/><expression>x</expression></outVariable></FBD></body></pou></pous></types><instances><configurations/></instances></project>)")
         << 1 << QStringLiteral("FILE:P: error: Nothing is wired to the output 'x'. (hint: draw a wire to it) [localId 10000000012]\n");
+    // An inline SFC transition condition: the transition's localId and the column in its text.
+    QTest::newRow("XML SFC: inline condition's localId and column")
+        << QStringLiteral("sfc.xml") << QStringLiteral(R"(<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <fileHeader companyName="t" productName="t" productVersion="1" creationDateTime="2026-01-01T00:00:00"/>
+  <contentHeader name="t"><coordinateInfo><fbd><scaling x="1" y="1"/></fbd><ld><scaling x="1" y="1"/></ld><sfc><scaling x="1" y="1"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous><pou name="P" pouType="program"><interface><localVars><variable name="go"><type><BOOL/></type></variable></localVars></interface>
+  <body><SFC><step localId="1" name="Init" initialStep="true"><position x="0" y="0"/><connectionPointOut formalParameter="x"/></step>
+  <transition localId="2"><position x="0" y="40"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut formalParameter="x"/><condition><inline name="T1"><ST><xhtml:p><![CDATA[go AND]]></xhtml:p></ST></inline></condition></transition>
+  <jumpStep localId="3" targetName="Init"><position x="0" y="80"/><connectionPointIn><connection refLocalId="2"/></connectionPointIn></jumpStep></SFC></body></pou></pous></types><instances><configurations/></instances></project>)")
+        << 1 << QStringLiteral("FILE:P: error: The condition go AND is incomplete: something is missing at its end. [localId 2, column 7]\n");
     // CODESYS 3.5 leaves typeName empty and names the instance after its program; its own
     // visualisation program (VisuElems.Visu_Prg) is not in the file and is left out.
     QTest::newRow("XML CODESYS program instances without typeName")

@@ -11,6 +11,7 @@
 #include "interpreter/runtime/snapshot.h"
 #include "model/projectmodel.h"
 #include "tests/editors/boxdiagram.h"
+#include "tests/editors/languageswitch.h"
 
 #include <QAction>
 #include <QApplication>
@@ -20,7 +21,6 @@
 #include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
-#include <QTranslator>
 #include <QUndoStack>
 
 using namespace iec;
@@ -132,17 +132,6 @@ public:
     }
     QList<CompletionItem> members(const QString &) const override { return {}; }
     QList<CompletionItem> pous() const override { return {}; }
-};
-
-// Every text in brackets: a language switch that the test can see.
-class BracketTranslator : public QTranslator
-{
-public:
-    QString translate(const char *, const char *sourceText, const char *, int) const override
-    {
-        return QStringLiteral("[%1]").arg(QString::fromUtf8(sourceText));
-    }
-    bool isEmpty() const override { return false; }
 };
 
 } // namespace
@@ -339,26 +328,19 @@ private Q_SLOTS:
             return button ? button->text() : QString();
         };
         QCOMPARE(buttonText("boxAdd"), QStringLiteral("Add Box"));
-        BracketTranslator translator;
-        const auto switchLanguage = [](QTranslator *install, QTranslator *remove) {
-            if (install)
-                QCoreApplication::installTranslator(install);
-            if (remove)
-                QCoreApplication::removeTranslator(remove);
-            QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
-        };
-        switchLanguage(&translator, nullptr);
+        tests::BracketTranslator translator;
+        tests::switchLanguage(&translator, nullptr);
         QCOMPARE(f.editor->action(QStringLiteral("boxAdd"))->text(), QStringLiteral("[Add Box]"));
         QCOMPARE(f.editor->action(QStringLiteral("zoomIn"))->text(), QStringLiteral("[Zoom In]"));
         QCOMPARE(buttonText("boxAdd"), QStringLiteral("[Add Box]"));
-        switchLanguage(nullptr, &translator);
+        tests::switchLanguage(nullptr, &translator);
         QCOMPARE(f.editor->action(QStringLiteral("boxAdd"))->text(), QStringLiteral("Add Box"));
         // Switching again and again does not pile up.
-        switchLanguage(&translator, nullptr);
-        switchLanguage(nullptr, &translator);
-        switchLanguage(&translator, nullptr);
+        tests::switchLanguage(&translator, nullptr);
+        tests::switchLanguage(nullptr, &translator);
+        tests::switchLanguage(&translator, nullptr);
         QCOMPARE(f.editor->action(QStringLiteral("boxDelete"))->text(), QStringLiteral("[Delete]"));
-        switchLanguage(nullptr, &translator);
+        tests::switchLanguage(nullptr, &translator);
     }
 
     void dragsAndWiresAreOneUndoStepEach()

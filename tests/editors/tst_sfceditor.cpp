@@ -13,12 +13,16 @@
 #include "model/sfcoptions.h"
 #include "tests/editors/sfcmixingtank.h"
 #include "tests/model/roundtrip.h"
+#include "tests/editors/languageswitch.h"
 
 #include <QAction>
 #include <QDir>
+#include <QLabel>
 #include <QLineEdit>
 #include <QSignalSpy>
 #include <QTest>
+#include <QToolBar>
+#include <QToolButton>
 #include <QUndoStack>
 
 using namespace iec;
@@ -381,6 +385,51 @@ private Q_SLOTS:
         QCOMPARE(innerCount(), std::size_t(1));
     }
 
+    // Item 7 of issue 13: tool bar, context menu and the macro level label follow the UI
+    // language, also after several switches; a message of the old language goes.
+    void followsTheUiLanguage()
+    {
+        Fixture f;
+        SfcEditor &e = *f.editor;
+        QVERIFY(e.trigger(QStringLiteral("sfcNewChart")));
+        QVERIFY(e.trigger(QStringLiteral("sfcMacro")));
+        QVERIFY(e.enterMacro(e.selection().front()));
+        auto *label = e.findChild<QLabel *>(QStringLiteral("sfcLevelLabel"));
+        auto *bar = e.findChild<QToolBar *>(QStringLiteral("diagramToolBar"));
+        const auto buttonText = [&](const char *id) {
+            auto *button = qobject_cast<QToolButton *>(bar->widgetForAction(e.action(QString::fromLatin1(id))));
+            return button ? button->text() : QString();
+        };
+        const auto menuTexts = [&] {
+            QStringList texts;
+            for (QAction *action : e.contextMenuActions())
+                if (!action->isSeparator())
+                    texts << action->text();
+            return texts;
+        };
+        const QStringList english = menuTexts();
+        QVERIFY(english.contains(QStringLiteral("Step-Transition (after)")));
+        const QString level = label->text();
+        tests::BracketTranslator translator;
+        for (int round = 0; round < 2; ++round) {
+            QVERIFY(!e.trigger(QStringLiteral("sfcNewChart"))); // a refusal on the message line
+            QVERIFY(!e.lastMessage().isEmpty());
+            tests::switchLanguage(&translator, nullptr);
+            QCOMPARE(e.lastMessage(), QString());
+            QCOMPARE(e.action(QStringLiteral("sfcStepAfter"))->text(), QStringLiteral("[Step-Transition (after)]"));
+            QCOMPARE(buttonText("sfcStepAfter"), QStringLiteral("[Step-Transition (after)]"));
+            QCOMPARE(buttonText("zoomIn"), QStringLiteral("[Zoom In]"));
+            QStringList bracketed;
+            for (const QString &text : english)
+                bracketed << QLatin1Char('[') + text + QLatin1Char(']');
+            QCOMPARE(menuTexts(), bracketed);
+            QVERIFY2(label->text().startsWith(QStringLiteral("[Inside macro step")), qPrintable(label->text()));
+            tests::switchLanguage(nullptr, &translator);
+            QCOMPARE(menuTexts(), english);
+            QCOMPARE(label->text(), level);
+        }
+    }
+
     void onlineShowsActiveStepsAndRefusesEdits()
     {
         Fixture f;
@@ -397,7 +446,9 @@ private Q_SLOTS:
             chart.steps.push_back({name, e.stepId(name), active, active ? 3200000000 : 0});
         }
         chart.actions.push_back({QStringLiteral("M"), true});
-        chart.actions.push_back({QStringLiteral("Y1"), false});
+        // Y1 still runs (as an action stored by one step runs after it): the row of Fill_A, whose
+        // step is not active, is not coloured for it (issue 13 item 11).
+        chart.actions.push_back({QStringLiteral("Y1"), true});
         chart.transitions.push_back({transitionAfter(e, e.stepId(QStringLiteral("Fill_B"))), true});
         snapshot.charts.push_back(chart);
         e.setOnlineSnapshot(&snapshot);

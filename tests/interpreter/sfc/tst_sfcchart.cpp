@@ -28,6 +28,8 @@ private Q_SLOTS:
     void diagnostics_data();
     void diagnostics();
     void loopingDivergencesDoNotHang();
+    void inlineConditionErrorsPointAtTheTransition_data();
+    void inlineConditionErrorsPointAtTheTransition();
     void macroStepRunsItsBody();
     void stepOptionsRoundTrip_data();
     void stepOptionsRoundTrip();
@@ -196,6 +198,51 @@ void TestSfcChart::diagnostics()
     actual.sort();
     expected.sort();
     QCOMPARE(actual.join(QLatin1Char('\n')), expected.join(QLatin1Char('\n')));
+}
+
+void TestSfcChart::inlineConditionErrorsPointAtTheTransition_data()
+{
+    QTest::addColumn<QString>("condition");
+    QTest::addColumn<int>("column");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("operand missing at the end") << QStringLiteral("go AND") << 7
+                                                << QStringLiteral("The condition go AND is incomplete: something is missing at its end.");
+    QTest::newRow("stray token") << QStringLiteral("go ) OR go") << 4 << QString();
+    QTest::newRow("second line") << QStringLiteral("go OR\n  go AND )") << 16 << QString();
+}
+
+void TestSfcChart::inlineConditionErrorsPointAtTheTransition()
+{
+    // Issue 13: "Main, line 2, column 1 ... found ';'" named neither the transition nor a place
+    // in what was typed. Inline condition of transition 2; the error is on 2, at a column of the text.
+    QFETCH(QString, condition);
+    QFETCH(int, column);
+    QFETCH(QString, message);
+    model::Pou pou = chart(loop());
+    model::Body text = model::Body::withLanguage(model::BodyLanguage::ST);
+    text.setText(condition);
+    model::InlineCondition inl;
+    inl.body = text;
+    std::get<model::Transition>(pou.bodies.front().elements()->at(1)).condition = model::Condition {false, inl};
+    model::Variable go;
+    go.name = QStringLiteral("go");
+    go.type.kind = model::ElementaryType {QStringLiteral("BOOL")};
+    model::Interface interface;
+    interface.varLists.push_back({});
+    interface.varLists.front().variables.push_back(go);
+    pou.pouInterface = interface;
+    model::Project project;
+    project.types.pous.push_back(pou);
+    Diagnostics diagnostics;
+    QVERIFY(!frontend::compileProject(project, diagnostics));
+    QVERIFY(!diagnostics.all().empty());
+    const Diagnostic &first = diagnostics.all().front();
+    QCOMPARE(first.pou, QStringLiteral("Main"));
+    QCOMPARE(first.location.localId, qint64(2));
+    QCOMPARE(first.location.line, 0);
+    QCOMPARE(first.location.column, column);
+    if (!message.isEmpty())
+        QCOMPARE(first.message, message);
 }
 
 void TestSfcChart::loopingDivergencesDoNotHang()
