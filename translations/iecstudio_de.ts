@@ -54,10 +54,6 @@
             </translation>
         </message>
         <message>
-            <source>%1 cannot be written: %2</source>
-            <translation>%1 kann nicht geschrieben werden: %2</translation>
-        </message>
-        <message>
             <source>The imported configuration %1 joins the project's configuration %2.</source>
             <translation>Die importierte Konfiguration %1 wird mit der Konfiguration %2 des Projekts zusammengeführt.</translation>
         </message>
@@ -3820,10 +3816,6 @@ Automatisch gespeichert: %2</translation>
             <translation>Der Typ %1 ist durch sich selbst definiert.</translation>
         </message>
         <message>
-            <source>%1 is a %2, not a type; only function blocks can be instantiated.</source>
-            <translation>%1 ist ein %2, kein Typ; nur Funktionsbausteine können instanziiert werden.</translation>
-        </message>
-        <message>
             <source>Unknown type '%1'.</source>
             <translation>Unbekannter Typ '%1'.</translation>
         </message>
@@ -4062,10 +4054,6 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>call %1(...); then read its outputs, e.g. %1.Q</source>
             <translation>%1(...) aufrufen; dann seine Ausgänge lesen, z. B. %1.Q</translation>
-        </message>
-        <message>
-            <source>A program cannot be called from another POU; it runs in a task.</source>
-            <translation>Ein Programm kann nicht von einer anderen POE aufgerufen werden; es läuft in einer Task.</translation>
         </message>
         <message>
             <source>%1 is a function block type; declare an instance (e.g. inst : %1;) and call that.</source>
@@ -4383,6 +4371,826 @@ Automatisch gespeichert: %2</translation>
             <source>The global list %1 has no variable %2.</source>
             <translation>Die globale Variablenliste %1 hat keine Variable %2.</translation>
         </message>
+        <message>
+            <source>The pragma {%1} means nothing to IEC Studio; it is ignored.</source>
+            <translation>Das Pragma {%1} hat für IEC Studio keine Bedeutung; es wird ignoriert.</translation>
+        </message>
+        <message>
+            <source>the name it extends</source>
+            <translation>den Namen, den es erweitert</translation>
+        </message>
+        <message>
+            <source>the name of an interface</source>
+            <translation>den Namen einer Schnittstelle</translation>
+        </message>
+        <message>
+            <source>the name of the method</source>
+            <translation>den Namen der Methode</translation>
+        </message>
+        <message>
+            <source>The method %1 has no END_METHOD.</source>
+            <translation>Der Methode %1 fehlt END_METHOD.</translation>
+        </message>
+        <message>
+            <source>the name of the property</source>
+            <translation>den Namen der Eigenschaft</translation>
+        </message>
+        <message>
+            <source>':' and the type of the property</source>
+            <translation>':' und den Typ der Eigenschaft</translation>
+        </message>
+        <message>
+            <source>The property %1 has no END_PROPERTY.</source>
+            <translation>Der Eigenschaft %1 fehlt END_PROPERTY.</translation>
+        </message>
+        <message>
+            <source>This expression is nested too deeply (more than %1 levels).</source>
+            <translation>Dieser Ausdruck ist zu tief verschachtelt (mehr als %1 Ebenen).</translation>
+        </message>
+        <message>
+            <source>split it into several statements, with variables for the parts</source>
+            <translation>teilen Sie ihn in mehrere Anweisungen auf, mit Variablen für die Teile</translation>
+        </message>
+        <message>
+            <source>These statements are nested too deeply (more than %1 levels).</source>
+            <translation>Diese Anweisungen sind zu tief verschachtelt (mehr als %1 Ebenen).</translation>
+        </message>
+        <message>
+            <source>move the inner blocks into a function, a function block or an action</source>
+            <translation>verschieben Sie die inneren Blöcke in eine Funktion, einen Funktionsbaustein oder eine Aktion</translation>
+        </message>
+        <message>
+            <source>This type is nested too deeply (more than %1 levels).</source>
+            <translation>Dieser Typ ist zu tief verschachtelt (mehr als %1 Ebenen).</translation>
+        </message>
+        <message>
+            <source>declare the inner types as types of their own in a TYPE block</source>
+            <translation>deklarieren Sie die inneren Typen als eigene Typen in einem TYPE-Block</translation>
+        </message>
+        <message>
+            <source>This initial value is nested too deeply (more than %1 levels).</source>
+            <translation>Dieser Initialwert ist zu tief verschachtelt (mehr als %1 Ebenen).</translation>
+        </message>
+        <message>
+            <source>This is nested too deeply to compile.</source>
+            <translation>Dies ist zu tief verschachtelt, um übersetzt zu werden.</translation>
+        </message>
+        <message>
+            <source>split it into simpler steps: constants, types and function blocks defined in fewer steps, expressions with fewer levels</source>
+            <translation>zerlegen Sie es in einfachere Teile: Konstanten, Typen und Funktionsbausteine in weniger Stufen definiert, Ausdrücke mit weniger Ebenen</translation>
+        </message>
+        <message>
+            <source>%1 is FINAL; no function block can extend it.</source>
+            <translation>%1 ist FINAL; kein Funktionsbaustein kann ihn erweitern.</translation>
+        </message>
+        <message>
+            <source>%1 extends %2, which is no function block.</source>
+            <translation>%1 erweitert %2, das kein Funktionsbaustein ist.</translation>
+        </message>
+        <message>
+            <source>%1 is ABSTRACT; declare an instance of a function block that extends it.</source>
+            <translation>%1 ist ABSTRACT; deklarieren Sie eine Instanz eines Funktionsbausteins, der ihn erweitert.</translation>
+        </message>
+        <message>
+            <source>A %1 starts at 0; set it in the code instead (p := ADR(x); or r REF= x;).</source>
+            <translation>Ein %1 beginnt mit 0; setzen Sie ihn stattdessen im Code (p := ADR(x); oder r REF= x;).</translation>
+        </message>
+        <message>
+            <source>This constant is defined in terms of itself.</source>
+            <translation>Diese Konstante ist durch sich selbst definiert.</translation>
+        </message>
+        <message>
+            <source>%1 combines BOOL values, not %2.</source>
+            <translation>%1 verknüpft BOOL-Werte, nicht %2.</translation>
+        </message>
+        <message>
+            <source>Implicit conversion from %1 to %2: possible loss of information.</source>
+            <translation>Implizite Konvertierung von %1 nach %2: möglicher Informationsverlust.</translation>
+        </message>
+        <message>
+            <source>Implicit conversion from signed type %1 to unsigned type %2: possible change of sign.</source>
+            <translation>Implizite Konvertierung vom vorzeichenbehafteten Typ %1 in den vorzeichenlosen Typ %2: mögliche Vorzeichenänderung.</translation>
+        </message>
+        <message>
+            <source>Implicit conversion from unsigned type %1 to signed type %2: possible change of sign.</source>
+            <translation>Implizite Konvertierung vom vorzeichenlosen Typ %1 in den vorzeichenbehafteten Typ %2: mögliche Vorzeichenänderung.</translation>
+        </message>
+        <message>
+            <source>SUPER^() calls the body of the block this one extends; it is only known in such a block's body.</source>
+            <translation>SUPER^() ruft den Rumpf des Bausteins auf, den dieser erweitert; es ist nur im Rumpf eines solchen Bausteins bekannt.</translation>
+        </message>
+        <message>
+            <source>A program call is a statement of its own.</source>
+            <translation>Ein Programmaufruf ist eine eigene Anweisung.</translation>
+        </message>
+        <message>
+            <source>call %1(...); then read its outputs, e.g. %1.Out</source>
+            <translation>rufen Sie %1(...); auf und lesen Sie dann seine Ausgänge, z. B. %1.Out</translation>
+        </message>
+        <message>
+            <source>The program %1 runs in %2 instances; its name alone does not say which.</source>
+            <translation>Das Programm %1 läuft in %2 Instanzen; sein Name allein sagt nicht, welche gemeint ist.</translation>
+        </message>
+        <message>
+            <source>give each instance its own program, or reach the values through a global variable</source>
+            <translation>geben Sie jeder Instanz ein eigenes Programm, oder greifen Sie über eine globale Variable auf die Werte zu</translation>
+        </message>
+        <message>
+            <source>(the current result at label %1)</source>
+            <translation>(das aktuelle Ergebnis an der Marke %1)</translation>
+        </message>
+        <message>
+            <source>%1 is a %2, not a pointer; only a pointer is dereferenced with ^.</source>
+            <translation>%1 ist ein %2, kein Pointer; nur ein Pointer wird mit ^ dereferenziert.</translation>
+        </message>
+        <message>
+            <source>%1 needs a variable (not a constant or a single bit).</source>
+            <translation>%1 braucht eine Variable (keine Konstante und kein einzelnes Bit).</translation>
+        </message>
+        <message>
+            <source>__ISVALIDREF needs a REFERENCE TO variable, not %1.</source>
+            <translation>__ISVALIDREF braucht eine REFERENCE TO-Variable, nicht %1.</translation>
+        </message>
+        <message>
+            <source>REF= needs a REFERENCE TO variable on its left, not %1.</source>
+            <translation>REF= braucht links eine REFERENCE TO-Variable, nicht %1.</translation>
+        </message>
+        <message>
+            <source>to assign a value write :=</source>
+            <translation>um einen Wert zuzuweisen, schreiben Sie :=</translation>
+        </message>
+        <message>
+            <source>%1 can refer to a variable of type %2, not to %3.</source>
+            <translation>%1 kann auf eine Variable vom Typ %2 verweisen, nicht auf %3.</translation>
+        </message>
+        <message>
+            <source>a constant</source>
+            <translation>eine Konstante</translation>
+        </message>
+        <message>
+            <source>A pointer can only be moved with + and -, and compared.</source>
+            <translation>Ein Pointer kann nur mit + und - verschoben und verglichen werden.</translation>
+        </message>
+        <message>
+            <source>Two pointers cannot be added; add a number of bytes to one.</source>
+            <translation>Zwei Pointer können nicht addiert werden; addieren Sie eine Anzahl Bytes zu einem.</translation>
+        </message>
+        <message>
+            <source>the OpenPLC TCP socket library</source>
+            <translation>die TCP-Socket-Bibliothek von OpenPLC</translation>
+        </message>
+        <message>
+            <source>an MQTT library</source>
+            <translation>eine MQTT-Bibliothek</translation>
+        </message>
+        <message>
+            <source>CODESYS SoftMotion (PLCopen motion control)</source>
+            <translation>CODESYS SoftMotion (PLCopen Motion Control)</translation>
+        </message>
+        <message>
+            <source>CODESYS SoftMotion</source>
+            <translation>CODESYS SoftMotion</translation>
+        </message>
+        <message>
+            <source>the OpenPLC UDP socket library</source>
+            <translation>die UDP-Socket-Bibliothek von OpenPLC</translation>
+        </message>
+        <message>
+            <source>Beremiz's Python blocks</source>
+            <translation>die Python-Bausteine von Beremiz</translation>
+        </message>
+        <message>
+            <source>%1 is a block of %2, which IEC Studio does not have; the POUs that use it cannot run.</source>
+            <translation>%1 ist ein Baustein aus %2, das IEC Studio nicht hat; die POEs, die ihn verwenden, können nicht laufen.</translation>
+        </message>
+        <message>
+            <source>the rest of the project is still checked and runs</source>
+            <translation>der Rest des Projekts wird trotzdem geprüft und läuft</translation>
+        </message>
+        <message>
+            <source>%1 cannot run: %2 uses %3.</source>
+            <translation>%1 kann nicht laufen: %2 verwendet %3.</translation>
+        </message>
+        <message>
+            <source>%1 has two methods or properties called %2.</source>
+            <translation>%1 hat zwei Methoden oder Eigenschaften namens %2.</translation>
+        </message>
+        <message>
+            <source>%1 is %2 and cannot be called from here.</source>
+            <translation>%1 ist %2 und kann von hier nicht aufgerufen werden.</translation>
+        </message>
+        <message>
+            <source>SUPER is only known in a function block that EXTENDS another one.</source>
+            <translation>SUPER ist nur in einem Funktionsbaustein bekannt, der einen anderen erweitert (EXTENDS).</translation>
+        </message>
+        <message>
+            <source>THIS is only known in a function block and its methods.</source>
+            <translation>THIS ist nur in einem Funktionsbaustein und seinen Methoden bekannt.</translation>
+        </message>
+        <message>
+            <source>No function block implements %1.%2, so it cannot be called.</source>
+            <translation>Kein Funktionsbaustein implementiert %1.%2, daher kann es nicht aufgerufen werden.</translation>
+        </message>
+        <message>
+            <source>%1 is ABSTRACT and has no code to run.</source>
+            <translation>%1 ist ABSTRACT und hat keinen Code, der laufen kann.</translation>
+        </message>
+        <message>
+            <source>The property %1 has no SET and cannot be written.</source>
+            <translation>Die Eigenschaft %1 hat kein SET und kann nicht geschrieben werden.</translation>
+        </message>
+        <message>
+            <source>The property %1 has no GET and cannot be read.</source>
+            <translation>Die Eigenschaft %1 hat kein GET und kann nicht gelesen werden.</translation>
+        </message>
+        <message>
+            <source>%1 does not extend %2.</source>
+            <translation>%1 erweitert %2 nicht.</translation>
+        </message>
+        <message>
+            <source>%1 does not implement %2.</source>
+            <translation>%1 implementiert %2 nicht.</translation>
+        </message>
+        <message>
+            <source>%1 is an SFC chart that contains itself.</source>
+            <translation>%1 ist ein AS-Ablaufplan, der sich selbst enthält.</translation>
+        </message>
+        <message>
+            <source>This IL condition is nested too deeply (more than %1 levels).</source>
+            <translation>Diese AWL-Bedingung ist zu tief verschachtelt (mehr als %1 Ebenen).</translation>
+        </message>
+        <message>
+            <source>The action %1 of step %2 is a variable of type %3; it is 1 while the action is active and 0 otherwise.</source>
+            <translation>Die Aktion %1 von Schritt %2 ist eine Variable vom Typ %3; sie ist 1, solange die Aktion aktiv ist, sonst 0.</translation>
+        </message>
+        <message>
+            <source>%1 is a program, not a type; only function blocks can be instantiated.</source>
+            <translation>%1 ist ein Programm, kein Typ; nur Funktionsbausteine können instanziiert werden.</translation>
+        </message>
+        <message>
+            <source>%1 is a function, not a type; only function blocks can be instantiated.</source>
+            <translation>%1 ist eine Funktion, kein Typ; nur Funktionsbausteine können instanziiert werden.</translation>
+        </message>
+        <message>
+            <source>%1 is written in %2, which has no IEC text form; its body was left out.</source>
+            <translation>%1 ist in %2 geschrieben, das keine IEC-Textform hat; sein Rumpf wurde weggelassen.</translation>
+        </message>
+        <message>
+            <source>The entry, exit and active actions and the times of steps %1 have no IEC text form and were left out.</source>
+            <translation>Die Eingangs-, Ausgangs- und aktiven Aktionen sowie die Zeiten der Schritte %1 haben keine IEC-Textform und wurden weggelassen.</translation>
+        </message>
+        <message>
+            <source>VAR_CONFIG cannot be stored in a PLCopen project yet and was left out.</source>
+            <translation>VAR_CONFIG kann noch nicht in einem PLCopen-Projekt gespeichert werden und wurde weggelassen.</translation>
+        </message>
+        <message>
+            <source>The priority of task %1 must be a number from 0 to 65535; 0 is used.</source>
+            <translation>Die Priorität der Task %1 muss eine Zahl von 0 bis 65535 sein; 0 wird verwendet.</translation>
+        </message>
+        <message>
+            <source>The arguments of program instance %1 cannot be stored in a PLCopen project and were left out.</source>
+            <translation>Die Argumente der Programminstanz %1 können nicht in einem PLCopen-Projekt gespeichert werden und wurden weggelassen.</translation>
+        </message>
+        <message>
+            <source>VAR_GLOBAL outside a CONFIGURATION cannot be stored in a PLCopen project; put it inside the CONFIGURATION.</source>
+            <translation>VAR_GLOBAL außerhalb einer CONFIGURATION kann nicht in einem PLCopen-Projekt gespeichert werden; setzen Sie es in die CONFIGURATION.</translation>
+        </message>
+        <message>
+            <source>The vendor element '%1' cannot run in this version.</source>
+            <translation>Das herstellerspezifische Element '%1' kann in dieser Version nicht laufen.</translation>
+        </message>
+        <message>
+            <source>This element could not be read from the file, so it cannot run.</source>
+            <translation>Dieses Element konnte nicht aus der Datei gelesen werden und kann daher nicht laufen.</translation>
+        </message>
+        <message>
+            <source>A %1 belongs in an SFC chart, not in an LD or FBD network.</source>
+            <translation>Ein Element vom Typ %1 gehört in einen AS-Ablaufplan, nicht in ein KOP- oder FUP-Netzwerk.</translation>
+        </message>
+        <message>
+            <source>Two labels are called '%1'.</source>
+            <translation>Zwei Marken heißen '%1'.</translation>
+        </message>
+        <message>
+            <source>rename one of them</source>
+            <translation>benennen Sie eine davon um</translation>
+        </message>
+        <message>
+            <source>This condition</source>
+            <translation>Diese Bedingung</translation>
+        </message>
+        <message>
+            <source>comment</source>
+            <translation>Kommentar</translation>
+        </message>
+        <message>
+            <source>unreadable element</source>
+            <translation>unlesbares Element</translation>
+        </message>
+        <message>
+            <source>connector</source>
+            <translation>Konnektor</translation>
+        </message>
+        <message>
+            <source>continuation</source>
+            <translation>Fortsetzung</translation>
+        </message>
+        <message>
+            <source>action block</source>
+            <translation>Aktionsblock</translation>
+        </message>
+        <message>
+            <source>vendor element</source>
+            <translation>herstellerspezifisches Element</translation>
+        </message>
+        <message>
+            <source>block</source>
+            <translation>Baustein</translation>
+        </message>
+        <message>
+            <source>input variable</source>
+            <translation>Eingangsvariable</translation>
+        </message>
+        <message>
+            <source>output variable</source>
+            <translation>Ausgangsvariable</translation>
+        </message>
+        <message>
+            <source>in-out variable</source>
+            <translation>Ein-/Ausgangsvariable</translation>
+        </message>
+        <message>
+            <source>label</source>
+            <translation>Marke</translation>
+        </message>
+        <message>
+            <source>jump</source>
+            <translation>Sprung</translation>
+        </message>
+        <message>
+            <source>return</source>
+            <translation>Rücksprung</translation>
+        </message>
+        <message>
+            <source>left power rail</source>
+            <translation>linke Stromschiene</translation>
+        </message>
+        <message>
+            <source>right power rail</source>
+            <translation>rechte Stromschiene</translation>
+        </message>
+        <message>
+            <source>coil</source>
+            <translation>Spule</translation>
+        </message>
+        <message>
+            <source>contact</source>
+            <translation>Kontakt</translation>
+        </message>
+        <message>
+            <source>step</source>
+            <translation>Schritt</translation>
+        </message>
+        <message>
+            <source>macro step</source>
+            <translation>Makroschritt</translation>
+        </message>
+        <message>
+            <source>transition</source>
+            <translation>Transition</translation>
+        </message>
+        <message>
+            <source>selection divergence</source>
+            <translation>Alternativverzweigung</translation>
+        </message>
+        <message>
+            <source>selection convergence</source>
+            <translation>Alternativzusammenführung</translation>
+        </message>
+        <message>
+            <source>simultaneous divergence</source>
+            <translation>Parallelverzweigung</translation>
+        </message>
+        <message>
+            <source>simultaneous convergence</source>
+            <translation>Parallelzusammenführung</translation>
+        </message>
+        <message>
+            <source>An element has no variable or value written in it.</source>
+            <translation>In einem Element steht keine Variable und kein Wert.</translation>
+        </message>
+        <message>
+            <source>enter a variable name or a constant</source>
+            <translation>geben Sie einen Variablennamen oder eine Konstante ein</translation>
+        </message>
+        <message>
+            <source>'%1' is not a variable or an expression.</source>
+            <translation>'%1' ist keine Variable und kein Ausdruck.</translation>
+        </message>
+        <message>
+            <source>write a name such as Motor, Tank.Level or %QX0.1, or a constant such as T#5s</source>
+            <translation>schreiben Sie einen Namen wie Motor, Tank.Level oder %QX0.1 oder eine Konstante wie T#5s</translation>
+        </message>
+        <message>
+            <source>Two elements have the same localId %1.</source>
+            <translation>Zwei Elemente haben dieselbe localId %1.</translation>
+        </message>
+        <message>
+            <source>give every element its own localId</source>
+            <translation>geben Sie jedem Element eine eigene localId</translation>
+        </message>
+        <message>
+            <source>There is no connector named '%1' for this continuation.</source>
+            <translation>Es gibt keinen Konnektor namens '%1' für diese Fortsetzung.</translation>
+        </message>
+        <message>
+            <source>add a connector with that name where the wire starts</source>
+            <translation>fügen Sie dort, wo die Verbindung beginnt, einen Konnektor mit diesem Namen ein</translation>
+        </message>
+        <message>
+            <source>The wires make a loop through %1 elements with no variable to keep the value from one scan to the next.</source>
+            <translation>Die Verbindungen bilden eine Schleife über %1 Elemente ohne Variable, die den Wert von einem Zyklus zum nächsten hält.</translation>
+        </message>
+        <message>
+            <source>put a feedback variable (an in-out variable) into the loop</source>
+            <translation>setzen Sie eine Rückkopplungsvariable (eine Ein-/Ausgangsvariable) in die Schleife</translation>
+        </message>
+        <message>
+            <source>%1 cannot be used in a condition wired into a chart.</source>
+            <translation>%1 kann nicht in einer Bedingung verwendet werden, die im Ablaufplan verdrahtet ist.</translation>
+        </message>
+        <message>
+            <source>write the condition as a named transition instead</source>
+            <translation>schreiben Sie die Bedingung stattdessen als benannte Transition</translation>
+        </message>
+        <message>
+            <source>A wire comes from element %1, which is not in this diagram.</source>
+            <translation>Eine Verbindung kommt von Element %1, das nicht in diesem Diagramm ist.</translation>
+        </message>
+        <message>
+            <source>A wire comes from an element that gives no value (%1).</source>
+            <translation>Eine Verbindung kommt von einem Element, das keinen Wert liefert (%1).</translation>
+        </message>
+        <message>
+            <source>A wire comes from the output '%1', which %2 does not have.</source>
+            <translation>Eine Verbindung kommt vom Ausgang '%1', den %2 nicht hat.</translation>
+        </message>
+        <message>
+            <source>A wire comes from a %1, which gives no value.</source>
+            <translation>Eine Verbindung kommt von einem Element vom Typ %1, das keinen Wert liefert.</translation>
+        </message>
+        <message>
+            <source>draw a wire to it</source>
+            <translation>ziehen Sie eine Verbindung dorthin</translation>
+        </message>
+        <message>
+            <source>%1 wires end at one input; an input takes exactly one.</source>
+            <translation>%1 Verbindungen enden an einem Eingang; ein Eingang nimmt genau eine.</translation>
+        </message>
+        <message>
+            <source>combine them with an OR block</source>
+            <translation>verknüpfen Sie sie mit einem OR-Baustein</translation>
+        </message>
+        <message>
+            <source>%1 is not connected.</source>
+            <translation>%1 ist nicht verbunden.</translation>
+        </message>
+        <message>
+            <source>An edge detection</source>
+            <translation>Eine Flankenerkennung</translation>
+        </message>
+        <message>
+            <source>Nothing is wired to the connector '%1'.</source>
+            <translation>Mit dem Konnektor '%1' ist nichts verbunden.</translation>
+        </message>
+        <message>
+            <source>The contact '%1' has no wire on its left.</source>
+            <translation>Der Kontakt '%1' hat links keine Verbindung.</translation>
+        </message>
+        <message>
+            <source>The coil '%1' has no wire on its left.</source>
+            <translation>Die Spule '%1' hat links keine Verbindung.</translation>
+        </message>
+        <message>
+            <source>A coil</source>
+            <translation>Eine Spule</translation>
+        </message>
+        <message>
+            <source>Nothing is wired to the output '%1'.</source>
+            <translation>Mit dem Ausgang '%1' ist nichts verbunden.</translation>
+        </message>
+        <message>
+            <source>An output variable</source>
+            <translation>Eine Ausgangsvariable</translation>
+        </message>
+        <message>
+            <source>A variable that is written</source>
+            <translation>Eine beschriebene Variable</translation>
+        </message>
+        <message>
+            <source>The input %1 of %2 is not connected.</source>
+            <translation>Der Eingang %1 von %2 ist nicht verbunden.</translation>
+        </message>
+        <message>
+            <source>draw a wire to it or write a constant</source>
+            <translation>ziehen Sie eine Verbindung dorthin oder schreiben Sie eine Konstante</translation>
+        </message>
+        <message>
+            <source>A function block</source>
+            <translation>Ein Funktionsbaustein</translation>
+        </message>
+        <message>
+            <source>Only the result of the function %1 can be wired; its output %2 cannot yet.</source>
+            <translation>Nur das Ergebnis der Funktion %1 kann verbunden werden; ihr Ausgang %2 noch nicht.</translation>
+        </message>
+        <message>
+            <source>call %1 from ST to use its other outputs</source>
+            <translation>rufen Sie %1 aus ST auf, um seine anderen Ausgänge zu verwenden</translation>
+        </message>
+        <message>
+            <source>A function call</source>
+            <translation>Ein Funktionsaufruf</translation>
+        </message>
+        <message>
+            <source>A function with EN</source>
+            <translation>Eine Funktion mit EN</translation>
+        </message>
+        <message>
+            <source>The result type of %1 cannot be told here, so it cannot run under EN.</source>
+            <translation>Der Ergebnistyp von %1 ist hier nicht bestimmbar, daher kann es nicht unter EN laufen.</translation>
+        </message>
+        <message>
+            <source>wire its output to a variable, or leave EN open</source>
+            <translation>verbinden Sie seinen Ausgang mit einer Variablen oder lassen Sie EN offen</translation>
+        </message>
+        <message>
+            <source>This EXECUTE box holds no ST code.</source>
+            <translation>Dieser EXECUTE-Baustein enthält keinen ST-Code.</translation>
+        </message>
+        <message>
+            <source>The ST code of this EXECUTE box does not parse: %1</source>
+            <translation>Der ST-Code dieses EXECUTE-Bausteins ist fehlerhaft: %1</translation>
+        </message>
+        <message>
+            <source>An EXECUTE box</source>
+            <translation>Ein EXECUTE-Baustein</translation>
+        </message>
+        <message>
+            <source>The jump to '%1' has no condition wired to it.</source>
+            <translation>Mit dem Sprung zu '%1' ist keine Bedingung verbunden.</translation>
+        </message>
+        <message>
+            <source>There is no label '%1' to jump to.</source>
+            <translation>Es gibt keine Marke '%1', zu der gesprungen werden kann.</translation>
+        </message>
+        <message>
+            <source>add a label with that name, or correct the jump</source>
+            <translation>fügen Sie eine Marke mit diesem Namen ein oder korrigieren Sie den Sprung</translation>
+        </message>
+        <message>
+            <source>A jump</source>
+            <translation>Ein Sprung</translation>
+        </message>
+        <message>
+            <source>The return has no condition wired to it.</source>
+            <translation>Mit dem Rücksprung ist keine Bedingung verbunden.</translation>
+        </message>
+        <message>
+            <source>A return</source>
+            <translation>Ein Rücksprung</translation>
+        </message>
+        <message>
+            <source>A step has no name.</source>
+            <translation>Ein Schritt hat keinen Namen.</translation>
+        </message>
+        <message>
+            <source>give every step a unique name</source>
+            <translation>geben Sie jedem Schritt einen eindeutigen Namen</translation>
+        </message>
+        <message>
+            <source>Two steps are called %1; every step of a chart needs its own name.</source>
+            <translation>Zwei Schritte heißen %1; jeder Schritt eines Ablaufplans braucht einen eigenen Namen.</translation>
+        </message>
+        <message>
+            <source>Macro step %1 has no steps inside.</source>
+            <translation>Der Makroschritt %1 enthält keine Schritte.</translation>
+        </message>
+        <message>
+            <source>The transition is connected to element %1, which the chart does not have.</source>
+            <translation>Die Transition ist mit Element %1 verbunden, das der Ablaufplan nicht hat.</translation>
+        </message>
+        <message>
+            <source>A transition must come after a step, a selection divergence or a simultaneous convergence, not after a %1.</source>
+            <translation>Eine Transition muss auf einen Schritt, eine Alternativverzweigung oder eine Parallelzusammenführung folgen, nicht auf ein Element vom Typ %1.</translation>
+        </message>
+        <message>
+            <source>Two transitions follow each other; put a step between them.</source>
+            <translation>Zwei Transitionen folgen aufeinander; setzen Sie einen Schritt dazwischen.</translation>
+        </message>
+        <message>
+            <source>A transition must lead to a step, a jump, a simultaneous divergence or a selection convergence, not to a %1.</source>
+            <translation>Eine Transition muss zu einem Schritt, einem Sprung, einer Parallelverzweigung oder einer Alternativzusammenführung führen, nicht zu einem Element vom Typ %1.</translation>
+        </message>
+        <message>
+            <source>This transition has no step before it.</source>
+            <translation>Vor dieser Transition steht kein Schritt.</translation>
+        </message>
+        <message>
+            <source>connect it below a step</source>
+            <translation>verbinden Sie sie unterhalb eines Schritts</translation>
+        </message>
+        <message>
+            <source>This transition leads to no step.</source>
+            <translation>Diese Transition führt zu keinem Schritt.</translation>
+        </message>
+        <message>
+            <source>connect a step or a jump below it</source>
+            <translation>verbinden Sie darunter einen Schritt oder einen Sprung</translation>
+        </message>
+        <message>
+            <source>This transition has no condition.</source>
+            <translation>Diese Transition hat keine Bedingung.</translation>
+        </message>
+        <message>
+            <source>write a condition such as TRUE or Start AND NOT Stop</source>
+            <translation>schreiben Sie eine Bedingung wie TRUE oder Start AND NOT Stop</translation>
+        </message>
+        <message>
+            <source>Step %1 has no transition after it.</source>
+            <translation>Nach Schritt %1 folgt keine Transition.</translation>
+        </message>
+        <message>
+            <source>add a transition below it, or a jump back</source>
+            <translation>fügen Sie darunter eine Transition oder einen Rücksprung ein</translation>
+        </message>
+        <message>
+            <source>The jump goes to step %1, which the chart does not have.</source>
+            <translation>Der Sprung führt zu Schritt %1, den der Ablaufplan nicht hat.</translation>
+        </message>
+        <message>
+            <source>Each branch of a selection divergence must begin with a transition, not a %1.</source>
+            <translation>Jeder Zweig einer Alternativverzweigung muss mit einer Transition beginnen, nicht mit einem Element vom Typ %1.</translation>
+        </message>
+        <message>
+            <source>A selection divergence must come after a step, not after a %1.</source>
+            <translation>Eine Alternativverzweigung muss auf einen Schritt folgen, nicht auf ein Element vom Typ %1.</translation>
+        </message>
+        <message>
+            <source>Each branch of a simultaneous divergence must begin with a step, not a %1.</source>
+            <translation>Jeder Zweig einer Parallelverzweigung muss mit einem Schritt beginnen, nicht mit einem Element vom Typ %1.</translation>
+        </message>
+        <message>
+            <source>A simultaneous divergence must come after a transition, not after a %1.</source>
+            <translation>Eine Parallelverzweigung muss auf eine Transition folgen, nicht auf ein Element vom Typ %1.</translation>
+        </message>
+        <message>
+            <source>Each branch of a selection convergence must end with a transition, not a %1.</source>
+            <translation>Jeder Zweig einer Alternativzusammenführung muss mit einer Transition enden, nicht mit einem Element vom Typ %1.</translation>
+        </message>
+        <message>
+            <source>A selection convergence must lead to a step, not to a %1.</source>
+            <translation>Eine Alternativzusammenführung muss zu einem Schritt führen, nicht zu einem Element vom Typ %1.</translation>
+        </message>
+        <message>
+            <source>Each branch of a simultaneous convergence must end with a step, not a %1.</source>
+            <translation>Jeder Zweig einer Parallelzusammenführung muss mit einem Schritt enden, nicht mit einem Element vom Typ %1.</translation>
+        </message>
+        <message>
+            <source>A simultaneous convergence must lead to a transition, not to a %1.</source>
+            <translation>Eine Parallelzusammenführung muss zu einer Transition führen, nicht zu einem Element vom Typ %1.</translation>
+        </message>
+        <message>
+            <source>This action block is not connected to a step.</source>
+            <translation>Dieser Aktionsblock ist mit keinem Schritt verbunden.</translation>
+        </message>
+        <message>
+            <source>An action block must be connected to a step.</source>
+            <translation>Ein Aktionsblock muss mit einem Schritt verbunden sein.</translation>
+        </message>
+        <message>
+            <source>This action of step %1 names no action.</source>
+            <translation>Diese Aktion von Schritt %1 nennt keine Aktion.</translation>
+        </message>
+        <message>
+            <source>%1 is not an action qualifier; use N, R, S, L, D, P, P0, P1, SD, DS or SL.</source>
+            <translation>%1 ist kein Aktionsbestimmungszeichen; verwenden Sie N, R, S, L, D, P, P0, P1, SD, DS oder SL.</translation>
+        </message>
+        <message>
+            <source>The qualifier %1 of action %2 needs a duration, e.g. T#5s.</source>
+            <translation>Das Bestimmungszeichen %1 der Aktion %2 braucht eine Zeitdauer, z. B. T#5s.</translation>
+        </message>
+        <message>
+            <source>The chart of %1 has no initial step.</source>
+            <translation>Der Ablaufplan von %1 hat keinen Initialschritt.</translation>
+        </message>
+        <message>
+            <source>make one step the initial step (double frame)</source>
+            <translation>machen Sie einen Schritt zum Initialschritt (doppelter Rahmen)</translation>
+        </message>
+        <message>
+            <source>Step %1 is a second initial step; a chart has exactly one (the first is %2).</source>
+            <translation>Schritt %1 ist ein zweiter Initialschritt; ein Ablaufplan hat genau einen (der erste ist %2).</translation>
+        </message>
+        <message>
+            <source>The chart's code for this element does not parse: %1</source>
+            <translation>Der Code des Ablaufplans für dieses Element ist fehlerhaft: %1</translation>
+        </message>
+        <message>
+            <source>%1 is the name of a variable and of the chart's implicit variable; rename one of them.</source>
+            <translation>%1 ist der Name einer Variablen und einer impliziten Variablen des Ablaufplans; benennen Sie eine davon um.</translation>
+        </message>
+        <message>
+            <source>The chart's variables cannot be declared: %1</source>
+            <translation>Die Variablen des Ablaufplans können nicht deklariert werden: %1</translation>
+        </message>
+        <message>
+            <source>This inline action is written in IL; an inline action must be written in ST, LD or FBD.</source>
+            <translation>Diese Inline-Aktion ist in AWL geschrieben; eine Inline-Aktion muss in ST, KOP oder FUP geschrieben sein.</translation>
+        </message>
+        <message>
+            <source>make it an action of %1 and name it in the step</source>
+            <translation>machen Sie sie zu einer Aktion von %1 und nennen Sie sie im Schritt</translation>
+        </message>
+        <message>
+            <source>Step %1 runs action %2, which %3 does not have.</source>
+            <translation>Schritt %1 führt die Aktion %2 aus, die %3 nicht hat.</translation>
+        </message>
+        <message>
+            <source>This IL condition uses jumps, parentheses or calls, which a transition cannot run yet.</source>
+            <translation>Diese AWL-Bedingung verwendet Sprünge, Klammern oder Aufrufe, die eine Transition noch nicht ausführen kann.</translation>
+        </message>
+        <message>
+            <source>write the condition as an ST expression</source>
+            <translation>schreiben Sie die Bedingung als ST-Ausdruck</translation>
+        </message>
+        <message>
+            <source>A graphical transition condition needs a name: its network assigns that name.</source>
+            <translation>Eine grafische Transitionsbedingung braucht einen Namen: ihr Netzwerk weist diesen Namen zu.</translation>
+        </message>
+        <message>
+            <source>A transition condition cannot be an SFC chart.</source>
+            <translation>Eine Transitionsbedingung kann kein AS-Ablaufplan sein.</translation>
+        </message>
+        <message>
+            <source>The transition refers to %1, which is neither a transition of %2 nor a variable.</source>
+            <translation>Die Transition verweist auf %1, das weder eine Transition von %2 noch eine Variable ist.</translation>
+        </message>
+        <message>
+            <source>The condition of this transition is not connected.</source>
+            <translation>Die Bedingung dieser Transition ist nicht verbunden.</translation>
+        </message>
+        <message>
+            <source>The condition %1 is not an expression: %2</source>
+            <translation>Die Bedingung %1 ist kein Ausdruck: %2</translation>
+        </message>
+        <message>
+            <source>%1 %2 is not a TIME literal or variable.</source>
+            <translation>%1 %2 ist kein TIME-Literal und keine Variable.</translation>
+        </message>
+        <message>
+            <source>write e.g. T#5s</source>
+            <translation>schreiben Sie z. B. T#5s</translation>
+        </message>
+        <message>
+            <source>The maximum time</source>
+            <translation>Die Maximalzeit</translation>
+        </message>
+        <message>
+            <source>The minimum time</source>
+            <translation>Die Minimalzeit</translation>
+        </message>
+        <message>
+            <source>The duration</source>
+            <translation>Die Zeitdauer</translation>
+        </message>
+        <message>
+            <source>%1 is a function written in SFC; a chart keeps its state, so it must be a program or a function block.</source>
+            <translation>%1 ist eine in AS geschriebene Funktion; ein Ablaufplan behält seinen Zustand, daher muss er ein Programm oder ein Funktionsbaustein sein.</translation>
+        </message>
+        <message>
+            <source>Two steps are called %1.</source>
+            <translation>Zwei Schritte heißen %1.</translation>
+        </message>
+        <message>
+            <source>The transition refers to step %1, which the chart does not have.</source>
+            <translation>Die Transition verweist auf Schritt %1, den der Ablaufplan nicht hat.</translation>
+        </message>
+        <message>
+            <source>This selection divergence needs at least two branches; it has %1.</source>
+            <translation>Diese Alternativverzweigung braucht mindestens zwei Zweige; sie hat %1.</translation>
+        </message>
+        <message>
+            <source>This simultaneous divergence needs at least two branches; it has %1.</source>
+            <translation>Diese Parallelverzweigung braucht mindestens zwei Zweige; sie hat %1.</translation>
+        </message>
+        <message>
+            <source>This selection convergence needs at least two branches; it joins %1.</source>
+            <translation>Diese Alternativzusammenführung braucht mindestens zwei Zweige; sie führt %1 zusammen.</translation>
+        </message>
+        <message>
+            <source>This simultaneous convergence needs at least two branches; it joins %1.</source>
+            <translation>Diese Parallelzusammenführung braucht mindestens zwei Zweige; sie führt %1 zusammen.</translation>
+        </message>
     </context>
     <context>
         <name>iec::interp::Runtime</name>
@@ -4413,6 +5221,42 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>A value outside the subrange of its type was assigned.</source>
             <translation>Ein Wert außerhalb des Unterbereichs seines Typs wurde zugewiesen.</translation>
+        </message>
+        <message>
+            <source>A pointer or reference that points nowhere (0) was used.</source>
+            <translation>Ein Pointer oder eine Referenz, die ins Leere (0) zeigt, wurde verwendet.</translation>
+        </message>
+        <message>
+            <source>A pointer that points outside the program's memory was used.</source>
+            <translation>Ein Pointer, der außerhalb des Programmspeichers zeigt, wurde verwendet.</translation>
+        </message>
+        <message>
+            <source>There is no variable called %1.</source>
+            <translation>Es gibt keine Variable namens %1.</translation>
+        </message>
+        <message>
+            <source>%1 is out of the range of %2 (%3..%4).</source>
+            <translation>%1 liegt außerhalb des Wertebereichs von %2 (%3..%4).</translation>
+        </message>
+        <message>
+            <source>%1 does not fit the %2 bits of %3.</source>
+            <translation>%1 passt nicht in die %2 Bits von %3.</translation>
+        </message>
+        <message>
+            <source>'%1' is not a valid %2.</source>
+            <translation>'%1' ist kein gültiger Wert vom Typ %2.</translation>
+        </message>
+        <message>
+            <source>The text is longer than the %1 characters of the string.</source>
+            <translation>Der Text ist länger als die %1 Zeichen des Strings.</translation>
+        </message>
+        <message>
+            <source>Only elementary variables and strings can be written.</source>
+            <translation>Nur elementare Variablen und Strings können geschrieben werden.</translation>
+        </message>
+        <message>
+            <source>%1 is out of the range of REAL (about ±3.4E38).</source>
+            <translation>%1 liegt außerhalb des Wertebereichs von REAL (etwa ±3,4E38).</translation>
         </message>
     </context>
     <context>
@@ -4564,6 +5408,37 @@ Automatisch gespeichert: %2</translation>
         </message>
     </context>
     <context>
+        <name>iec::model::SaveFile</name>
+        <message>
+            <source>the folder %1 does not exist</source>
+            <translation>der Ordner %1 existiert nicht</translation>
+        </message>
+        <message>
+            <source>a folder of that name is in the way</source>
+            <translation>ein Ordner mit diesem Namen ist im Weg</translation>
+        </message>
+        <message>
+            <source>the folder %1 is read-only, or you may not write in it</source>
+            <translation>der Ordner %1 ist schreibgeschützt, oder Sie dürfen darin nicht schreiben</translation>
+        </message>
+        <message>
+            <source>the file is read-only</source>
+            <translation>die Datei ist schreibgeschützt</translation>
+        </message>
+        <message>
+            <source>the disk is full</source>
+            <translation>der Datenträger ist voll</translation>
+        </message>
+        <message>
+            <source>the file would be larger than the system allows</source>
+            <translation>die Datei wäre größer, als das System erlaubt</translation>
+        </message>
+        <message>
+            <source>%1 was not saved: %2. The file on the disk is unchanged.</source>
+            <translation>%1 wurde nicht gespeichert: %2. Die Datei auf dem Datenträger ist unverändert.</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::model::SetBodyTextCommand</name>
         <message>
             <source>Edit text</source>
@@ -4665,12 +5540,21 @@ Automatisch gespeichert: %2</translation>
             <source>Cannot open %1: %2.</source>
             <translation>%1 kann nicht geöffnet werden: %2.</translation>
         </message>
-    </context>
-    <context>
-        <name>iec::model::plcopen::Writer</name>
         <message>
-            <source>Cannot save %1: %2.</source>
-            <translation>%1 kann nicht gespeichert werden: %2.</translation>
+            <source>This &lt;action&gt; has no localId; it was given %1.</source>
+            <translation>Diese &lt;action&gt; hat keine localId; sie erhielt %1.</translation>
+        </message>
+        <message>
+            <source>This &lt;action&gt; has no position; it is placed at (0, 0).</source>
+            <translation>Diese &lt;action&gt; hat keine Position; sie wird bei (0, 0) platziert.</translation>
+        </message>
+        <message>
+            <source>&lt;pouInstance&gt; names its POU with 'type'; PLCopen calls it 'typeName', which it is written as.</source>
+            <translation>&lt;pouInstance&gt; nennt seine POE mit 'type'; PLCopen nennt es 'typeName', und so wird es geschrieben.</translation>
+        </message>
+        <message>
+            <source>creationDateTime '%1' has a space where XML wants a 'T'; it is written as '%2'.</source>
+            <translation>creationDateTime '%1' hat ein Leerzeichen, wo XML ein 'T' verlangt; es wird als '%2' geschrieben.</translation>
         </message>
     </context>
     <context>

@@ -53,10 +53,6 @@
             </translation>
         </message>
         <message>
-            <source>%1 cannot be written: %2</source>
-            <translation>无法写入 %1：%2</translation>
-        </message>
-        <message>
             <source>The imported configuration %1 joins the project's configuration %2.</source>
             <translation>导入的配置 %1 已并入项目的配置 %2。</translation>
         </message>
@@ -3815,10 +3811,6 @@ Autosaved: %2</source>
             <translation>类型 %1 是用自身定义的。</translation>
         </message>
         <message>
-            <source>%1 is a %2, not a type; only function blocks can be instantiated.</source>
-            <translation>%1 是 %2，不是类型；只有功能块可以实例化。</translation>
-        </message>
-        <message>
             <source>Unknown type '%1'.</source>
             <translation>未知类型 '%1'。</translation>
         </message>
@@ -4057,10 +4049,6 @@ Autosaved: %2</source>
         <message>
             <source>call %1(...); then read its outputs, e.g. %1.Q</source>
             <translation>调用 %1(...)；然后读取其输出，例如 %1.Q</translation>
-        </message>
-        <message>
-            <source>A program cannot be called from another POU; it runs in a task.</source>
-            <translation>程序不能被其他 POU 调用；它在任务中运行。</translation>
         </message>
         <message>
             <source>%1 is a function block type; declare an instance (e.g. inst : %1;) and call that.</source>
@@ -4378,6 +4366,826 @@ Autosaved: %2</source>
             <source>The global list %1 has no variable %2.</source>
             <translation>全局变量列表 %1 中没有变量 %2。</translation>
         </message>
+        <message>
+            <source>The pragma {%1} means nothing to IEC Studio; it is ignored.</source>
+            <translation>编译指令 {%1} 对 IEC Studio 没有意义，已忽略。</translation>
+        </message>
+        <message>
+            <source>the name it extends</source>
+            <translation>所扩展的名称</translation>
+        </message>
+        <message>
+            <source>the name of an interface</source>
+            <translation>接口的名称</translation>
+        </message>
+        <message>
+            <source>the name of the method</source>
+            <translation>方法的名称</translation>
+        </message>
+        <message>
+            <source>The method %1 has no END_METHOD.</source>
+            <translation>方法 %1 缺少 END_METHOD。</translation>
+        </message>
+        <message>
+            <source>the name of the property</source>
+            <translation>属性的名称</translation>
+        </message>
+        <message>
+            <source>':' and the type of the property</source>
+            <translation>':' 和属性的类型</translation>
+        </message>
+        <message>
+            <source>The property %1 has no END_PROPERTY.</source>
+            <translation>属性 %1 缺少 END_PROPERTY。</translation>
+        </message>
+        <message>
+            <source>This expression is nested too deeply (more than %1 levels).</source>
+            <translation>该表达式嵌套过深（超过 %1 层）。</translation>
+        </message>
+        <message>
+            <source>split it into several statements, with variables for the parts</source>
+            <translation>把它拆成几条语句，用变量保存各部分</translation>
+        </message>
+        <message>
+            <source>These statements are nested too deeply (more than %1 levels).</source>
+            <translation>这些语句嵌套过深（超过 %1 层）。</translation>
+        </message>
+        <message>
+            <source>move the inner blocks into a function, a function block or an action</source>
+            <translation>把内层语句块移到函数、功能块或动作中</translation>
+        </message>
+        <message>
+            <source>This type is nested too deeply (more than %1 levels).</source>
+            <translation>该类型嵌套过深（超过 %1 层）。</translation>
+        </message>
+        <message>
+            <source>declare the inner types as types of their own in a TYPE block</source>
+            <translation>在 TYPE 块中把内层类型声明为独立的类型</translation>
+        </message>
+        <message>
+            <source>This initial value is nested too deeply (more than %1 levels).</source>
+            <translation>该初始值嵌套过深（超过 %1 层）。</translation>
+        </message>
+        <message>
+            <source>This is nested too deeply to compile.</source>
+            <translation>嵌套过深，无法编译。</translation>
+        </message>
+        <message>
+            <source>split it into simpler steps: constants, types and function blocks defined in fewer steps, expressions with fewer levels</source>
+            <translation>把它拆成更简单的部分：常量、类型和功能块用更少的层次定义，表达式用更少的嵌套</translation>
+        </message>
+        <message>
+            <source>%1 is FINAL; no function block can extend it.</source>
+            <translation>%1 是 FINAL，任何功能块都不能扩展它。</translation>
+        </message>
+        <message>
+            <source>%1 extends %2, which is no function block.</source>
+            <translation>%1 扩展了 %2，但 %2 不是功能块。</translation>
+        </message>
+        <message>
+            <source>%1 is ABSTRACT; declare an instance of a function block that extends it.</source>
+            <translation>%1 是 ABSTRACT；请声明一个扩展它的功能块的实例。</translation>
+        </message>
+        <message>
+            <source>A %1 starts at 0; set it in the code instead (p := ADR(x); or r REF= x;).</source>
+            <translation>%1 的初始值为 0；请在代码中为它赋值（p := ADR(x); 或 r REF= x;）。</translation>
+        </message>
+        <message>
+            <source>This constant is defined in terms of itself.</source>
+            <translation>该常量是用它自身定义的。</translation>
+        </message>
+        <message>
+            <source>%1 combines BOOL values, not %2.</source>
+            <translation>%1 只能组合 BOOL 值，不能组合 %2。</translation>
+        </message>
+        <message>
+            <source>Implicit conversion from %1 to %2: possible loss of information.</source>
+            <translation>从 %1 到 %2 的隐式转换：可能丢失信息。</translation>
+        </message>
+        <message>
+            <source>Implicit conversion from signed type %1 to unsigned type %2: possible change of sign.</source>
+            <translation>从有符号类型 %1 到无符号类型 %2 的隐式转换：符号可能改变。</translation>
+        </message>
+        <message>
+            <source>Implicit conversion from unsigned type %1 to signed type %2: possible change of sign.</source>
+            <translation>从无符号类型 %1 到有符号类型 %2 的隐式转换：符号可能改变。</translation>
+        </message>
+        <message>
+            <source>SUPER^() calls the body of the block this one extends; it is only known in such a block's body.</source>
+            <translation>SUPER^() 调用本功能块所扩展的功能块的主体，只能在这样的功能块主体中使用。</translation>
+        </message>
+        <message>
+            <source>A program call is a statement of its own.</source>
+            <translation>程序调用必须是单独的一条语句。</translation>
+        </message>
+        <message>
+            <source>call %1(...); then read its outputs, e.g. %1.Out</source>
+            <translation>先调用 %1(...);，再读取它的输出，例如 %1.Out</translation>
+        </message>
+        <message>
+            <source>The program %1 runs in %2 instances; its name alone does not say which.</source>
+            <translation>程序 %1 有 %2 个实例在运行，仅凭名称无法确定是哪一个。</translation>
+        </message>
+        <message>
+            <source>give each instance its own program, or reach the values through a global variable</source>
+            <translation>为每个实例使用单独的程序，或通过全局变量访问这些值</translation>
+        </message>
+        <message>
+            <source>(the current result at label %1)</source>
+            <translation>（标号 %1 处的当前结果）</translation>
+        </message>
+        <message>
+            <source>%1 is a %2, not a pointer; only a pointer is dereferenced with ^.</source>
+            <translation>%1 是 %2，不是指针；只有指针才能用 ^ 取值。</translation>
+        </message>
+        <message>
+            <source>%1 needs a variable (not a constant or a single bit).</source>
+            <translation>%1 需要一个变量（不能是常量或单个位）。</translation>
+        </message>
+        <message>
+            <source>__ISVALIDREF needs a REFERENCE TO variable, not %1.</source>
+            <translation>__ISVALIDREF 需要 REFERENCE TO 变量，而不是 %1。</translation>
+        </message>
+        <message>
+            <source>REF= needs a REFERENCE TO variable on its left, not %1.</source>
+            <translation>REF= 左边需要 REFERENCE TO 变量，而不是 %1。</translation>
+        </message>
+        <message>
+            <source>to assign a value write :=</source>
+            <translation>赋值请写 :=</translation>
+        </message>
+        <message>
+            <source>%1 can refer to a variable of type %2, not to %3.</source>
+            <translation>%1 只能引用 %2 类型的变量，不能引用 %3。</translation>
+        </message>
+        <message>
+            <source>a constant</source>
+            <translation>常量</translation>
+        </message>
+        <message>
+            <source>A pointer can only be moved with + and -, and compared.</source>
+            <translation>指针只能用 + 和 - 移动，以及进行比较。</translation>
+        </message>
+        <message>
+            <source>Two pointers cannot be added; add a number of bytes to one.</source>
+            <translation>两个指针不能相加；请给其中一个加上字节数。</translation>
+        </message>
+        <message>
+            <source>the OpenPLC TCP socket library</source>
+            <translation>OpenPLC 的 TCP 套接字库</translation>
+        </message>
+        <message>
+            <source>an MQTT library</source>
+            <translation>MQTT 库</translation>
+        </message>
+        <message>
+            <source>CODESYS SoftMotion (PLCopen motion control)</source>
+            <translation>CODESYS SoftMotion（PLCopen 运动控制）</translation>
+        </message>
+        <message>
+            <source>CODESYS SoftMotion</source>
+            <translation>CODESYS SoftMotion 运动控制库</translation>
+        </message>
+        <message>
+            <source>the OpenPLC UDP socket library</source>
+            <translation>OpenPLC 的 UDP 套接字库</translation>
+        </message>
+        <message>
+            <source>Beremiz's Python blocks</source>
+            <translation>Beremiz 的 Python 功能块</translation>
+        </message>
+        <message>
+            <source>%1 is a block of %2, which IEC Studio does not have; the POUs that use it cannot run.</source>
+            <translation>%1 是 %2 中的功能块，IEC Studio 没有该库；使用它的 POU 无法运行。</translation>
+        </message>
+        <message>
+            <source>the rest of the project is still checked and runs</source>
+            <translation>项目的其余部分仍会检查并运行</translation>
+        </message>
+        <message>
+            <source>%1 cannot run: %2 uses %3.</source>
+            <translation>%1 无法运行：%2 使用了 %3。</translation>
+        </message>
+        <message>
+            <source>%1 has two methods or properties called %2.</source>
+            <translation>%1 有两个名为 %2 的方法或属性。</translation>
+        </message>
+        <message>
+            <source>%1 is %2 and cannot be called from here.</source>
+            <translation>%1 是 %2，不能从此处调用。</translation>
+        </message>
+        <message>
+            <source>SUPER is only known in a function block that EXTENDS another one.</source>
+            <translation>SUPER 只能在扩展（EXTENDS）了另一个功能块的功能块中使用。</translation>
+        </message>
+        <message>
+            <source>THIS is only known in a function block and its methods.</source>
+            <translation>THIS 只能在功能块及其方法中使用。</translation>
+        </message>
+        <message>
+            <source>No function block implements %1.%2, so it cannot be called.</source>
+            <translation>没有功能块实现 %1.%2，因此不能调用它。</translation>
+        </message>
+        <message>
+            <source>%1 is ABSTRACT and has no code to run.</source>
+            <translation>%1 是 ABSTRACT，没有可运行的代码。</translation>
+        </message>
+        <message>
+            <source>The property %1 has no SET and cannot be written.</source>
+            <translation>属性 %1 没有 SET，不能写入。</translation>
+        </message>
+        <message>
+            <source>The property %1 has no GET and cannot be read.</source>
+            <translation>属性 %1 没有 GET，不能读取。</translation>
+        </message>
+        <message>
+            <source>%1 does not extend %2.</source>
+            <translation>%1 没有扩展 %2。</translation>
+        </message>
+        <message>
+            <source>%1 does not implement %2.</source>
+            <translation>%1 没有实现 %2。</translation>
+        </message>
+        <message>
+            <source>%1 is an SFC chart that contains itself.</source>
+            <translation>%1 是包含自身的顺序功能图。</translation>
+        </message>
+        <message>
+            <source>This IL condition is nested too deeply (more than %1 levels).</source>
+            <translation>该 IL 条件嵌套过深（超过 %1 层）。</translation>
+        </message>
+        <message>
+            <source>The action %1 of step %2 is a variable of type %3; it is 1 while the action is active and 0 otherwise.</source>
+            <translation>步 %2 的动作 %1 是 %3 类型的变量；动作激活时为 1，否则为 0。</translation>
+        </message>
+        <message>
+            <source>%1 is a program, not a type; only function blocks can be instantiated.</source>
+            <translation>%1 是程序，不是类型；只有功能块可以实例化。</translation>
+        </message>
+        <message>
+            <source>%1 is a function, not a type; only function blocks can be instantiated.</source>
+            <translation>%1 是函数，不是类型；只有功能块可以实例化。</translation>
+        </message>
+        <message>
+            <source>%1 is written in %2, which has no IEC text form; its body was left out.</source>
+            <translation>%1 是用 %2 编写的，%2 没有 IEC 文本形式；其主体已省略。</translation>
+        </message>
+        <message>
+            <source>The entry, exit and active actions and the times of steps %1 have no IEC text form and were left out.</source>
+            <translation>步 %1 的进入动作、退出动作、激活动作和时间没有 IEC 文本形式，已省略。</translation>
+        </message>
+        <message>
+            <source>VAR_CONFIG cannot be stored in a PLCopen project yet and was left out.</source>
+            <translation>VAR_CONFIG 暂时无法保存到 PLCopen 项目中，已省略。</translation>
+        </message>
+        <message>
+            <source>The priority of task %1 must be a number from 0 to 65535; 0 is used.</source>
+            <translation>任务 %1 的优先级必须是 0 到 65535 之间的数；将使用 0。</translation>
+        </message>
+        <message>
+            <source>The arguments of program instance %1 cannot be stored in a PLCopen project and were left out.</source>
+            <translation>程序实例 %1 的参数无法保存到 PLCopen 项目中，已省略。</translation>
+        </message>
+        <message>
+            <source>VAR_GLOBAL outside a CONFIGURATION cannot be stored in a PLCopen project; put it inside the CONFIGURATION.</source>
+            <translation>CONFIGURATION 之外的 VAR_GLOBAL 无法保存到 PLCopen 项目中；请把它放进 CONFIGURATION。</translation>
+        </message>
+        <message>
+            <source>The vendor element '%1' cannot run in this version.</source>
+            <translation>厂商专用元素 '%1' 在此版本中无法运行。</translation>
+        </message>
+        <message>
+            <source>This element could not be read from the file, so it cannot run.</source>
+            <translation>无法从文件中读取该元素，因此它不能运行。</translation>
+        </message>
+        <message>
+            <source>A %1 belongs in an SFC chart, not in an LD or FBD network.</source>
+            <translation>%1 属于顺序功能图，不能用在梯形图或功能块图网络中。</translation>
+        </message>
+        <message>
+            <source>Two labels are called '%1'.</source>
+            <translation>有两个标号都叫 '%1'。</translation>
+        </message>
+        <message>
+            <source>rename one of them</source>
+            <translation>请重命名其中一个</translation>
+        </message>
+        <message>
+            <source>This condition</source>
+            <translation>该条件</translation>
+        </message>
+        <message>
+            <source>comment</source>
+            <translation>注释</translation>
+        </message>
+        <message>
+            <source>unreadable element</source>
+            <translation>无法读取的元素</translation>
+        </message>
+        <message>
+            <source>connector</source>
+            <translation>连接符</translation>
+        </message>
+        <message>
+            <source>continuation</source>
+            <translation>续接符</translation>
+        </message>
+        <message>
+            <source>action block</source>
+            <translation>动作块</translation>
+        </message>
+        <message>
+            <source>vendor element</source>
+            <translation>厂商专用元素</translation>
+        </message>
+        <message>
+            <source>block</source>
+            <translation>功能块框</translation>
+        </message>
+        <message>
+            <source>input variable</source>
+            <translation>输入变量</translation>
+        </message>
+        <message>
+            <source>output variable</source>
+            <translation>输出变量</translation>
+        </message>
+        <message>
+            <source>in-out variable</source>
+            <translation>输入输出变量</translation>
+        </message>
+        <message>
+            <source>label</source>
+            <translation>标号</translation>
+        </message>
+        <message>
+            <source>jump</source>
+            <translation>跳转</translation>
+        </message>
+        <message>
+            <source>return</source>
+            <translation>返回</translation>
+        </message>
+        <message>
+            <source>left power rail</source>
+            <translation>左母线</translation>
+        </message>
+        <message>
+            <source>right power rail</source>
+            <translation>右母线</translation>
+        </message>
+        <message>
+            <source>coil</source>
+            <translation>线圈</translation>
+        </message>
+        <message>
+            <source>contact</source>
+            <translation>触点</translation>
+        </message>
+        <message>
+            <source>step</source>
+            <translation>步</translation>
+        </message>
+        <message>
+            <source>macro step</source>
+            <translation>宏步</translation>
+        </message>
+        <message>
+            <source>transition</source>
+            <translation>转换</translation>
+        </message>
+        <message>
+            <source>selection divergence</source>
+            <translation>选择分支</translation>
+        </message>
+        <message>
+            <source>selection convergence</source>
+            <translation>选择合并</translation>
+        </message>
+        <message>
+            <source>simultaneous divergence</source>
+            <translation>并行分支</translation>
+        </message>
+        <message>
+            <source>simultaneous convergence</source>
+            <translation>并行合并</translation>
+        </message>
+        <message>
+            <source>An element has no variable or value written in it.</source>
+            <translation>有一个元素中没有填写变量或数值。</translation>
+        </message>
+        <message>
+            <source>enter a variable name or a constant</source>
+            <translation>请输入变量名或常量</translation>
+        </message>
+        <message>
+            <source>'%1' is not a variable or an expression.</source>
+            <translation>'%1' 不是变量，也不是表达式。</translation>
+        </message>
+        <message>
+            <source>write a name such as Motor, Tank.Level or %QX0.1, or a constant such as T#5s</source>
+            <translation>请写一个名称（如 Motor、Tank.Level 或 %QX0.1）或一个常量（如 T#5s）</translation>
+        </message>
+        <message>
+            <source>Two elements have the same localId %1.</source>
+            <translation>有两个元素的 localId 都是 %1。</translation>
+        </message>
+        <message>
+            <source>give every element its own localId</source>
+            <translation>请给每个元素分配唯一的 localId</translation>
+        </message>
+        <message>
+            <source>There is no connector named '%1' for this continuation.</source>
+            <translation>没有与该续接符对应的名为 '%1' 的连接符。</translation>
+        </message>
+        <message>
+            <source>add a connector with that name where the wire starts</source>
+            <translation>请在连线的起点添加同名的连接符</translation>
+        </message>
+        <message>
+            <source>The wires make a loop through %1 elements with no variable to keep the value from one scan to the next.</source>
+            <translation>连线经过 %1 个元素形成了回路，其中没有变量在两个扫描周期之间保存数值。</translation>
+        </message>
+        <message>
+            <source>put a feedback variable (an in-out variable) into the loop</source>
+            <translation>请在回路中加入一个反馈变量（输入输出变量）</translation>
+        </message>
+        <message>
+            <source>%1 cannot be used in a condition wired into a chart.</source>
+            <translation>%1 不能用在连接到顺序功能图的条件中。</translation>
+        </message>
+        <message>
+            <source>write the condition as a named transition instead</source>
+            <translation>请改为把条件写成命名的转换</translation>
+        </message>
+        <message>
+            <source>A wire comes from element %1, which is not in this diagram.</source>
+            <translation>有一条连线来自元素 %1，但该元素不在此图中。</translation>
+        </message>
+        <message>
+            <source>A wire comes from an element that gives no value (%1).</source>
+            <translation>有一条连线来自不提供数值的元素（%1）。</translation>
+        </message>
+        <message>
+            <source>A wire comes from the output '%1', which %2 does not have.</source>
+            <translation>有一条连线来自输出 '%1'，但 %2 没有该输出。</translation>
+        </message>
+        <message>
+            <source>A wire comes from a %1, which gives no value.</source>
+            <translation>有一条连线来自%1，而%1不提供数值。</translation>
+        </message>
+        <message>
+            <source>draw a wire to it</source>
+            <translation>请给它连一条线</translation>
+        </message>
+        <message>
+            <source>%1 wires end at one input; an input takes exactly one.</source>
+            <translation>有 %1 条连线接到同一个输入上；一个输入只能接一条连线。</translation>
+        </message>
+        <message>
+            <source>combine them with an OR block</source>
+            <translation>请用 OR 功能块把它们组合起来</translation>
+        </message>
+        <message>
+            <source>%1 is not connected.</source>
+            <translation>%1 未连接。</translation>
+        </message>
+        <message>
+            <source>An edge detection</source>
+            <translation>边沿检测</translation>
+        </message>
+        <message>
+            <source>Nothing is wired to the connector '%1'.</source>
+            <translation>连接符 '%1' 上没有连线。</translation>
+        </message>
+        <message>
+            <source>The contact '%1' has no wire on its left.</source>
+            <translation>触点 '%1' 的左侧没有连线。</translation>
+        </message>
+        <message>
+            <source>The coil '%1' has no wire on its left.</source>
+            <translation>线圈 '%1' 的左侧没有连线。</translation>
+        </message>
+        <message>
+            <source>A coil</source>
+            <translation>线圈</translation>
+        </message>
+        <message>
+            <source>Nothing is wired to the output '%1'.</source>
+            <translation>输出 '%1' 上没有连线。</translation>
+        </message>
+        <message>
+            <source>An output variable</source>
+            <translation>输出变量</translation>
+        </message>
+        <message>
+            <source>A variable that is written</source>
+            <translation>被写入的变量</translation>
+        </message>
+        <message>
+            <source>The input %1 of %2 is not connected.</source>
+            <translation>%2 的输入 %1 未连接。</translation>
+        </message>
+        <message>
+            <source>draw a wire to it or write a constant</source>
+            <translation>请给它连线或写一个常量</translation>
+        </message>
+        <message>
+            <source>A function block</source>
+            <translation>功能块</translation>
+        </message>
+        <message>
+            <source>Only the result of the function %1 can be wired; its output %2 cannot yet.</source>
+            <translation>函数 %1 只有返回值可以连线，其输出 %2 暂时还不能连线。</translation>
+        </message>
+        <message>
+            <source>call %1 from ST to use its other outputs</source>
+            <translation>请在 ST 中调用 %1 以使用它的其他输出</translation>
+        </message>
+        <message>
+            <source>A function call</source>
+            <translation>函数调用</translation>
+        </message>
+        <message>
+            <source>A function with EN</source>
+            <translation>带 EN 的函数</translation>
+        </message>
+        <message>
+            <source>The result type of %1 cannot be told here, so it cannot run under EN.</source>
+            <translation>此处无法确定 %1 的返回类型，因此它不能在 EN 控制下运行。</translation>
+        </message>
+        <message>
+            <source>wire its output to a variable, or leave EN open</source>
+            <translation>请把它的输出连到一个变量上，或让 EN 保持未连接</translation>
+        </message>
+        <message>
+            <source>This EXECUTE box holds no ST code.</source>
+            <translation>该 EXECUTE 框中没有 ST 代码。</translation>
+        </message>
+        <message>
+            <source>The ST code of this EXECUTE box does not parse: %1</source>
+            <translation>该 EXECUTE 框中的 ST 代码无法解析：%1</translation>
+        </message>
+        <message>
+            <source>An EXECUTE box</source>
+            <translation>EXECUTE 框</translation>
+        </message>
+        <message>
+            <source>The jump to '%1' has no condition wired to it.</source>
+            <translation>跳转到 '%1' 的跳转没有连接条件。</translation>
+        </message>
+        <message>
+            <source>There is no label '%1' to jump to.</source>
+            <translation>没有可跳转的标号 '%1'。</translation>
+        </message>
+        <message>
+            <source>add a label with that name, or correct the jump</source>
+            <translation>请添加同名的标号，或修改跳转</translation>
+        </message>
+        <message>
+            <source>A jump</source>
+            <translation>跳转</translation>
+        </message>
+        <message>
+            <source>The return has no condition wired to it.</source>
+            <translation>返回没有连接条件。</translation>
+        </message>
+        <message>
+            <source>A return</source>
+            <translation>返回</translation>
+        </message>
+        <message>
+            <source>A step has no name.</source>
+            <translation>有一个步没有名称。</translation>
+        </message>
+        <message>
+            <source>give every step a unique name</source>
+            <translation>请给每个步起一个唯一的名称</translation>
+        </message>
+        <message>
+            <source>Two steps are called %1; every step of a chart needs its own name.</source>
+            <translation>有两个步都叫 %1；顺序功能图中每个步都需要唯一的名称。</translation>
+        </message>
+        <message>
+            <source>Macro step %1 has no steps inside.</source>
+            <translation>宏步 %1 内部没有步。</translation>
+        </message>
+        <message>
+            <source>The transition is connected to element %1, which the chart does not have.</source>
+            <translation>该转换连接到元素 %1，但顺序功能图中没有该元素。</translation>
+        </message>
+        <message>
+            <source>A transition must come after a step, a selection divergence or a simultaneous convergence, not after a %1.</source>
+            <translation>转换必须位于步、选择分支或并行合并之后，而不能位于%1之后。</translation>
+        </message>
+        <message>
+            <source>Two transitions follow each other; put a step between them.</source>
+            <translation>两个转换直接相连；请在它们之间加入一个步。</translation>
+        </message>
+        <message>
+            <source>A transition must lead to a step, a jump, a simultaneous divergence or a selection convergence, not to a %1.</source>
+            <translation>转换之后必须是步、跳转、并行分支或选择合并，而不能是%1。</translation>
+        </message>
+        <message>
+            <source>This transition has no step before it.</source>
+            <translation>该转换之前没有步。</translation>
+        </message>
+        <message>
+            <source>connect it below a step</source>
+            <translation>请把它连接到某个步的下方</translation>
+        </message>
+        <message>
+            <source>This transition leads to no step.</source>
+            <translation>该转换之后没有步。</translation>
+        </message>
+        <message>
+            <source>connect a step or a jump below it</source>
+            <translation>请在它下方连接一个步或跳转</translation>
+        </message>
+        <message>
+            <source>This transition has no condition.</source>
+            <translation>该转换没有转换条件。</translation>
+        </message>
+        <message>
+            <source>write a condition such as TRUE or Start AND NOT Stop</source>
+            <translation>请写一个条件，例如 TRUE 或 Start AND NOT Stop</translation>
+        </message>
+        <message>
+            <source>Step %1 has no transition after it.</source>
+            <translation>步 %1 之后没有转换。</translation>
+        </message>
+        <message>
+            <source>add a transition below it, or a jump back</source>
+            <translation>请在它下方添加一个转换，或跳转回前面的步</translation>
+        </message>
+        <message>
+            <source>The jump goes to step %1, which the chart does not have.</source>
+            <translation>跳转的目标是步 %1，但顺序功能图中没有该步。</translation>
+        </message>
+        <message>
+            <source>Each branch of a selection divergence must begin with a transition, not a %1.</source>
+            <translation>选择分支的每个分支都必须以转换开始，而不能以%1开始。</translation>
+        </message>
+        <message>
+            <source>A selection divergence must come after a step, not after a %1.</source>
+            <translation>选择分支必须位于步之后，而不能位于%1之后。</translation>
+        </message>
+        <message>
+            <source>Each branch of a simultaneous divergence must begin with a step, not a %1.</source>
+            <translation>并行分支的每个分支都必须以步开始，而不能以%1开始。</translation>
+        </message>
+        <message>
+            <source>A simultaneous divergence must come after a transition, not after a %1.</source>
+            <translation>并行分支必须位于转换之后，而不能位于%1之后。</translation>
+        </message>
+        <message>
+            <source>Each branch of a selection convergence must end with a transition, not a %1.</source>
+            <translation>选择合并的每个分支都必须以转换结束，而不能以%1结束。</translation>
+        </message>
+        <message>
+            <source>A selection convergence must lead to a step, not to a %1.</source>
+            <translation>选择合并之后必须是步，而不能是%1。</translation>
+        </message>
+        <message>
+            <source>Each branch of a simultaneous convergence must end with a step, not a %1.</source>
+            <translation>并行合并的每个分支都必须以步结束，而不能以%1结束。</translation>
+        </message>
+        <message>
+            <source>A simultaneous convergence must lead to a transition, not to a %1.</source>
+            <translation>并行合并之后必须是转换，而不能是%1。</translation>
+        </message>
+        <message>
+            <source>This action block is not connected to a step.</source>
+            <translation>该动作块没有连接到步。</translation>
+        </message>
+        <message>
+            <source>An action block must be connected to a step.</source>
+            <translation>动作块必须连接到步。</translation>
+        </message>
+        <message>
+            <source>This action of step %1 names no action.</source>
+            <translation>步 %1 的这个动作没有指定动作名称。</translation>
+        </message>
+        <message>
+            <source>%1 is not an action qualifier; use N, R, S, L, D, P, P0, P1, SD, DS or SL.</source>
+            <translation>%1 不是动作限定符；请使用 N、R、S、L、D、P、P0、P1、SD、DS 或 SL。</translation>
+        </message>
+        <message>
+            <source>The qualifier %1 of action %2 needs a duration, e.g. T#5s.</source>
+            <translation>动作 %2 的限定符 %1 需要一个时间，例如 T#5s。</translation>
+        </message>
+        <message>
+            <source>The chart of %1 has no initial step.</source>
+            <translation>%1 的顺序功能图没有初始步。</translation>
+        </message>
+        <message>
+            <source>make one step the initial step (double frame)</source>
+            <translation>请把一个步设为初始步（双线框）</translation>
+        </message>
+        <message>
+            <source>Step %1 is a second initial step; a chart has exactly one (the first is %2).</source>
+            <translation>步 %1 是第二个初始步；一个顺序功能图只能有一个初始步（第一个是 %2）。</translation>
+        </message>
+        <message>
+            <source>The chart's code for this element does not parse: %1</source>
+            <translation>顺序功能图中该元素的代码无法解析：%1</translation>
+        </message>
+        <message>
+            <source>%1 is the name of a variable and of the chart's implicit variable; rename one of them.</source>
+            <translation>%1 既是一个变量的名称，又是顺序功能图隐式变量的名称；请重命名其中一个。</translation>
+        </message>
+        <message>
+            <source>The chart's variables cannot be declared: %1</source>
+            <translation>无法声明顺序功能图的变量：%1</translation>
+        </message>
+        <message>
+            <source>This inline action is written in IL; an inline action must be written in ST, LD or FBD.</source>
+            <translation>该内嵌动作是用 IL 编写的；内嵌动作必须用 ST、LD 或 FBD 编写。</translation>
+        </message>
+        <message>
+            <source>make it an action of %1 and name it in the step</source>
+            <translation>请把它改为 %1 的动作，并在步中引用它的名称</translation>
+        </message>
+        <message>
+            <source>Step %1 runs action %2, which %3 does not have.</source>
+            <translation>步 %1 执行动作 %2，但 %3 中没有该动作。</translation>
+        </message>
+        <message>
+            <source>This IL condition uses jumps, parentheses or calls, which a transition cannot run yet.</source>
+            <translation>该 IL 条件使用了跳转、括号或调用，转换暂时还不能执行这些。</translation>
+        </message>
+        <message>
+            <source>write the condition as an ST expression</source>
+            <translation>请把条件写成 ST 表达式</translation>
+        </message>
+        <message>
+            <source>A graphical transition condition needs a name: its network assigns that name.</source>
+            <translation>图形化的转换条件需要一个名称：由它的网络给该名称赋值。</translation>
+        </message>
+        <message>
+            <source>A transition condition cannot be an SFC chart.</source>
+            <translation>转换条件不能是顺序功能图。</translation>
+        </message>
+        <message>
+            <source>The transition refers to %1, which is neither a transition of %2 nor a variable.</source>
+            <translation>该转换引用了 %1，但它既不是 %2 的转换，也不是变量。</translation>
+        </message>
+        <message>
+            <source>The condition of this transition is not connected.</source>
+            <translation>该转换的条件未连接。</translation>
+        </message>
+        <message>
+            <source>The condition %1 is not an expression: %2</source>
+            <translation>条件 %1 不是表达式：%2</translation>
+        </message>
+        <message>
+            <source>%1 %2 is not a TIME literal or variable.</source>
+            <translation>%1 %2 不是 TIME 常量或变量。</translation>
+        </message>
+        <message>
+            <source>write e.g. T#5s</source>
+            <translation>例如写成 T#5s</translation>
+        </message>
+        <message>
+            <source>The maximum time</source>
+            <translation>最长时间</translation>
+        </message>
+        <message>
+            <source>The minimum time</source>
+            <translation>最短时间</translation>
+        </message>
+        <message>
+            <source>The duration</source>
+            <translation>时间</translation>
+        </message>
+        <message>
+            <source>%1 is a function written in SFC; a chart keeps its state, so it must be a program or a function block.</source>
+            <translation>%1 是用 SFC 编写的函数；顺序功能图需要保持状态，所以它必须是程序或功能块。</translation>
+        </message>
+        <message>
+            <source>Two steps are called %1.</source>
+            <translation>有两个步都叫 %1。</translation>
+        </message>
+        <message>
+            <source>The transition refers to step %1, which the chart does not have.</source>
+            <translation>该转换引用了步 %1，但顺序功能图中没有该步。</translation>
+        </message>
+        <message>
+            <source>This selection divergence needs at least two branches; it has %1.</source>
+            <translation>该选择分支至少需要两个分支，现在只有 %1 个。</translation>
+        </message>
+        <message>
+            <source>This simultaneous divergence needs at least two branches; it has %1.</source>
+            <translation>该并行分支至少需要两个分支，现在只有 %1 个。</translation>
+        </message>
+        <message>
+            <source>This selection convergence needs at least two branches; it joins %1.</source>
+            <translation>该选择合并至少需要合并两个分支，现在只有 %1 个。</translation>
+        </message>
+        <message>
+            <source>This simultaneous convergence needs at least two branches; it joins %1.</source>
+            <translation>该并行合并至少需要合并两个分支，现在只有 %1 个。</translation>
+        </message>
     </context>
     <context>
         <name>iec::interp::Runtime</name>
@@ -4408,6 +5216,42 @@ Autosaved: %2</source>
         <message>
             <source>A value outside the subrange of its type was assigned.</source>
             <translation>赋给变量的值超出了其类型的子范围。</translation>
+        </message>
+        <message>
+            <source>A pointer or reference that points nowhere (0) was used.</source>
+            <translation>使用了指向空地址（0）的指针或引用。</translation>
+        </message>
+        <message>
+            <source>A pointer that points outside the program's memory was used.</source>
+            <translation>使用了指向程序内存之外的指针。</translation>
+        </message>
+        <message>
+            <source>There is no variable called %1.</source>
+            <translation>没有名为 %1 的变量。</translation>
+        </message>
+        <message>
+            <source>%1 is out of the range of %2 (%3..%4).</source>
+            <translation>%1 超出了 %2 的取值范围（%3..%4）。</translation>
+        </message>
+        <message>
+            <source>%1 does not fit the %2 bits of %3.</source>
+            <translation>%1 超出了 %3 的 %2 位。</translation>
+        </message>
+        <message>
+            <source>'%1' is not a valid %2.</source>
+            <translation>'%1' 不是有效的 %2 值。</translation>
+        </message>
+        <message>
+            <source>The text is longer than the %1 characters of the string.</source>
+            <translation>文本长度超过了字符串的 %1 个字符。</translation>
+        </message>
+        <message>
+            <source>Only elementary variables and strings can be written.</source>
+            <translation>只能写入基本类型变量和字符串。</translation>
+        </message>
+        <message>
+            <source>%1 is out of the range of REAL (about ±3.4E38).</source>
+            <translation>%1 超出了 REAL 的取值范围（约 ±3.4E38）。</translation>
         </message>
     </context>
     <context>
@@ -4558,6 +5402,37 @@ Autosaved: %2</source>
         </message>
     </context>
     <context>
+        <name>iec::model::SaveFile</name>
+        <message>
+            <source>the folder %1 does not exist</source>
+            <translation>文件夹 %1 不存在</translation>
+        </message>
+        <message>
+            <source>a folder of that name is in the way</source>
+            <translation>已有同名的文件夹</translation>
+        </message>
+        <message>
+            <source>the folder %1 is read-only, or you may not write in it</source>
+            <translation>文件夹 %1 为只读，或您没有写入权限</translation>
+        </message>
+        <message>
+            <source>the file is read-only</source>
+            <translation>文件为只读</translation>
+        </message>
+        <message>
+            <source>the disk is full</source>
+            <translation>磁盘已满</translation>
+        </message>
+        <message>
+            <source>the file would be larger than the system allows</source>
+            <translation>文件将超过系统允许的大小</translation>
+        </message>
+        <message>
+            <source>%1 was not saved: %2. The file on the disk is unchanged.</source>
+            <translation>%1 未保存：%2。磁盘上的文件未改变。</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::model::SetBodyTextCommand</name>
         <message>
             <source>Edit text</source>
@@ -4659,12 +5534,21 @@ Autosaved: %2</source>
             <source>Cannot open %1: %2.</source>
             <translation>无法打开 %1：%2。</translation>
         </message>
-    </context>
-    <context>
-        <name>iec::model::plcopen::Writer</name>
         <message>
-            <source>Cannot save %1: %2.</source>
-            <translation>无法保存 %1：%2。</translation>
+            <source>This &lt;action&gt; has no localId; it was given %1.</source>
+            <translation>该 &lt;action&gt; 没有 localId，已为其分配 %1。</translation>
+        </message>
+        <message>
+            <source>This &lt;action&gt; has no position; it is placed at (0, 0).</source>
+            <translation>该 &lt;action&gt; 没有位置，已放置在 (0, 0)。</translation>
+        </message>
+        <message>
+            <source>&lt;pouInstance&gt; names its POU with 'type'; PLCopen calls it 'typeName', which it is written as.</source>
+            <translation>&lt;pouInstance&gt; 用 'type' 指定其 POU；PLCopen 中应为 'typeName'，保存时将写为 'typeName'。</translation>
+        </message>
+        <message>
+            <source>creationDateTime '%1' has a space where XML wants a 'T'; it is written as '%2'.</source>
+            <translation>creationDateTime '%1' 中应为 'T' 的位置是空格，保存时将写为 '%2'。</translation>
         </message>
     </context>
     <context>

@@ -128,8 +128,10 @@ const Type *Codegen::namedType(const QString &name, SourceLocation at, bool repo
         if (pou.kind == PouKind::Interface)
             return m_types->interfaceType(pou.index, pou.name);
         if (report)
-            error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 is a %2, not a type; only function blocks can be instantiated.")
-                          .arg(name, pou.kind == PouKind::Program ? QStringLiteral("program") : QStringLiteral("function")));
+            error(at, (pou.kind == PouKind::Program
+                    ? QCoreApplication::translate("iec::interp::Compiler", "%1 is a program, not a type; only function blocks can be instantiated.")
+                    : QCoreApplication::translate("iec::interp::Compiler", "%1 is a function, not a type; only function blocks can be instantiated."))
+                          .arg(name));
         return nullptr;
     }
     if (const QString library = vendorLibraryOf(k); report && !library.isEmpty()) {

@@ -4,6 +4,7 @@
 #include "interpreter/runtime/valueformat.h"
 #include "interpreter/sfc/sfctext.h"
 
+#include <QCoreApplication>
 #include <QRegularExpression>
 #include <QTextStream>
 
@@ -124,7 +125,7 @@ QString printBody(const model::Body &body, const QString &where, std::vector<Pri
     const QString language = languageName(body.language());
     if (warnings) {
         warnings->push_back({where,
-            QStringLiteral("%1 is written in %2, which has no IEC text form; its body was left out.")
+            QCoreApplication::translate("iec::interp::Compiler", "%1 is written in %2, which has no IEC text form; its body was left out.")
                 .arg(where, language)});
     }
     return QStringLiteral("(* The %1 body of %2 has no IEC text form and was left out. *)\n").arg(language, where);
@@ -303,7 +304,7 @@ QString printPou(const model::Pou &pou, std::vector<PrintWarning> *warnings)
         text += *chart;
         if (warnings && !dropped.isEmpty())
             warnings->push_back({pou.name,
-                QStringLiteral("The entry, exit and active actions and the times of steps %1 have no IEC text form and were left out.")
+                QCoreApplication::translate("iec::interp::Compiler", "The entry, exit and active actions and the times of steps %1 have no IEC text form and were left out.")
                     .arg(dropped.join(QStringLiteral(", ")))});
     } else if (body) { // a chart the text form cannot say (chartProblem) stays a comment
         text += printBody(*body, pou.name, warnings);

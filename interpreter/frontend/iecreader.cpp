@@ -7,6 +7,7 @@
 #include "interpreter/frontend/iecprinter.h"
 #include "interpreter/sfc/sfctext.h"
 
+#include <QCoreApplication>
 #include <QRegularExpression>
 
 namespace iec::interp::frontend {
@@ -183,7 +184,7 @@ std::vector<model::VarList> toModel(const std::vector<ast::VarSection> &sections
         const auto kind = listKind(section.kind);
         if (!kind) {
             diagnostics.warning(owner, section.location,
-                QStringLiteral("VAR_CONFIG cannot be stored in a PLCopen project yet and was left out."));
+                QCoreApplication::translate("iec::interp::Compiler", "VAR_CONFIG cannot be stored in a PLCopen project yet and was left out."));
             continue;
         }
         model::VarList list;
@@ -214,7 +215,7 @@ model::Task toModel(const ast::TaskDecl &decl, const QString &owner, Diagnostics
         task.priority = exprText(*decl.priority).toUInt(&ok);
         if (!ok || task.priority > 65535)
             diagnostics.warning(owner, decl.priority->location,
-                QStringLiteral("The priority of task %1 must be a number from 0 to 65535; 0 is used.").arg(decl.name));
+                QCoreApplication::translate("iec::interp::Compiler", "The priority of task %1 must be a number from 0 to 65535; 0 is used.").arg(decl.name));
     }
     return task;
 }
@@ -224,7 +225,7 @@ void addProgram(
 {
     if (!program.args.empty()) {
         diagnostics.warning(owner, program.location,
-            QStringLiteral(
+            QCoreApplication::translate("iec::interp::Compiler",
                 "The arguments of program instance %1 cannot be stored in a PLCopen project and were left out.")
                 .arg(program.instance));
     }
@@ -469,7 +470,7 @@ TextReadResult readIecText(QStringView text, const QString &projectName)
         result.project.instances.configurations.push_back(toModel(configuration, text, result.diagnostics));
     if (!unit.globals.empty()) {
         result.diagnostics.warning({}, unit.globals.front().location,
-            QStringLiteral("VAR_GLOBAL outside a CONFIGURATION cannot be stored in a PLCopen project; put it inside "
+            QCoreApplication::translate("iec::interp::Compiler", "VAR_GLOBAL outside a CONFIGURATION cannot be stored in a PLCopen project; put it inside "
                            "the CONFIGURATION."));
     }
     return result;

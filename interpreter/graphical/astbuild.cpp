@@ -1,9 +1,12 @@
 #include "interpreter/graphical/astbuild.h"
 
 #include "interpreter/compiler/parser.h"
+#include "model/element.h"
 
+#include <QCoreApplication>
 #include <QRegularExpression>
 
+#include <array>
 #include <limits>
 
 namespace iec::interp::graphical {
@@ -14,6 +17,39 @@ SourceLocation elementLocation(quint64 localId)
     if (localId <= quint64(std::numeric_limits<qint64>::max()))
         at.localId = qint64(localId);
     return at;
+}
+
+QString elementKindName(const model::Element &element)
+{
+    // Same order as the Element variant (model::elementTagName).
+    static constexpr std::array<const char *, std::variant_size_v<model::Element>> kNames {
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "comment"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "unreadable element"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "connector"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "continuation"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "action block"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "vendor element"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "block"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "input variable"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "output variable"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "in-out variable"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "label"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "jump"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "return"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "left power rail"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "right power rail"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "coil"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "contact"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "step"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "macro step"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "jump"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "transition"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "selection divergence"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "selection convergence"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "simultaneous divergence"),
+        QT_TRANSLATE_NOOP("iec::interp::Compiler", "simultaneous convergence"),
+    };
+    return QCoreApplication::translate("iec::interp::Compiler", kNames[element.index()]);
 }
 
 ast::Expr nameExpr(const QString &name, SourceLocation at)
@@ -191,8 +227,8 @@ std::optional<ast::Expr> parseExpression(const QString &text, const QString &own
 {
     const QString trimmed = text.trimmed();
     if (trimmed.isEmpty() || trimmed == QLatin1String("???")) {
-        diagnostics.error(owner, at, QStringLiteral("An element has no variable or value written in it."),
-            QStringLiteral("enter a variable name or a constant"));
+        diagnostics.error(owner, at, QCoreApplication::translate("iec::interp::Compiler", "An element has no variable or value written in it."),
+            QCoreApplication::translate("iec::interp::Compiler", "enter a variable name or a constant"));
         return std::nullopt;
     }
     // Most contacts, coils and variables are plain names: no need for the parser.
@@ -207,8 +243,8 @@ std::optional<ast::Expr> parseExpression(const QString &text, const QString &own
     const bool single = parsed.size() == 1 && parsed.front().kind == ast::StmtKind::Assign
         && parsed.front().target.kind == ast::ExprKind::Name;
     if (local.hasErrors() || !single) {
-        diagnostics.error(owner, at, QStringLiteral("'%1' is not a variable or an expression.").arg(trimmed),
-            QStringLiteral("write a name such as Motor, Tank.Level or %QX0.1, or a constant such as T#5s"));
+        diagnostics.error(owner, at, QCoreApplication::translate("iec::interp::Compiler", "'%1' is not a variable or an expression.").arg(trimmed),
+            QCoreApplication::translate("iec::interp::Compiler", "write a name such as Motor, Tank.Level or %QX0.1, or a constant such as T#5s"));
         return std::nullopt;
     }
     ast::Expr value = std::move(parsed.front().value);

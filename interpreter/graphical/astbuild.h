@@ -2,6 +2,7 @@
 
 #include "interpreter/compiler/ast.h"
 #include "interpreter/compiler/diagnostics.h"
+#include "model/element.h"
 
 #include <QString>
 
@@ -15,6 +16,8 @@ namespace iec::interp::graphical {
 // The location of a graphical element: no line, its localId (64-bit: CODESYS writes ids around
 // 1e10; only ids above 2^63 stay unlocated).
 SourceLocation elementLocation(quint64 localId);
+// What the user calls the element's kind in messages ("selection divergence"), translated.
+QString elementKindName(const model::Element &element);
 
 ast::Expr nameExpr(const QString &name, SourceLocation at);
 ast::Expr boolLiteral(bool value, SourceLocation at);

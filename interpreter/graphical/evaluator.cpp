@@ -4,6 +4,7 @@
 #include "interpreter/graphical/astbuild.h"
 #include "interpreter/graphical/typeguess.h"
 
+#include <QCoreApplication>
 #include <QRegularExpression>
 
 namespace iec::interp::graphical {
@@ -139,12 +140,13 @@ void Evaluator::fail(std::size_t n, const QString &message, const QString &hint)
     m_state[n] = State::Failed;
 }
 
-bool Evaluator::canEmit(std::size_t n, const QString &what)
+bool Evaluator::canEmit(std::size_t n, const char *what)
 {
     if (m_sink)
         return true;
-    fail(n, QStringLiteral("%1 cannot be used in a condition wired into a chart.").arg(what),
-        QStringLiteral("write the condition as a named transition instead"));
+    fail(n, QCoreApplication::translate("iec::interp::Compiler", "%1 cannot be used in a condition wired into a chart.")
+                .arg(QCoreApplication::translate("iec::interp::Compiler", what)),
+        QCoreApplication::translate("iec::interp::Compiler", "write the condition as a named transition instead"));
     return false;
 }
 
@@ -189,7 +191,7 @@ std::optional<Signal> Evaluator::read(std::size_t consumer, const model::Connect
 {
     const auto source = m_network.indexOf(connection.refLocalId);
     if (!source) {
-        fail(consumer, QStringLiteral("A wire comes from element %1, which is not in this diagram.").arg(connection.refLocalId));
+        fail(consumer, QCoreApplication::translate("iec::interp::Compiler", "A wire comes from element %1, which is not in this diagram.").arg(connection.refLocalId));
         return std::nullopt;
     }
     const Node &from = m_network.node(*source);
@@ -217,8 +219,8 @@ std::optional<Signal> Evaluator::read(std::size_t consumer, const model::Connect
     }
     if (from.kind == NodeKind::Foreign || from.kind == NodeKind::Ignored || from.kind == NodeKind::Unsupported
         || from.kind == NodeKind::RightRail) {
-        fail(consumer, QStringLiteral("A wire comes from an element that gives no value (%1).")
-                           .arg(QLatin1String(model::elementTagName(*from.element))));
+        fail(consumer, QCoreApplication::translate("iec::interp::Compiler", "A wire comes from an element that gives no value (%1).")
+                           .arg(elementKindName(*from.element)));
         return std::nullopt;
     }
     ensure(*source);
@@ -230,11 +232,11 @@ std::optional<Signal> Evaluator::read(std::size_t consumer, const model::Connect
     const auto found = m_outputs.find({*source, key});
     if (found == m_outputs.end()) {
         if (from.kind == NodeKind::Block) {
-            fail(consumer, QStringLiteral("A wire comes from the output '%1', which %2 does not have.")
+            fail(consumer, QCoreApplication::translate("iec::interp::Compiler", "A wire comes from the output '%1', which %2 does not have.")
                                .arg(connection.formalParameter.value_or(QString()), std::get<model::Block>(*from.element).typeName));
         } else {
-            fail(consumer, QStringLiteral("A wire comes from a %1, which gives no value.")
-                               .arg(QLatin1String(model::elementTagName(*from.element))));
+            fail(consumer, QCoreApplication::translate("iec::interp::Compiler", "A wire comes from a %1, which gives no value.")
+                               .arg(elementKindName(*from.element)));
         }
         return std::nullopt;
     }
@@ -245,7 +247,7 @@ std::optional<Signal> Evaluator::input(std::size_t n, const std::optional<model:
     const QString &missing)
 {
     if (!connected(point)) {
-        fail(n, missing, QStringLiteral("draw a wire to it"));
+        fail(n, missing, QCoreApplication::translate("iec::interp::Compiler", "draw a wire to it"));
         return std::nullopt;
     }
     if (point->connections.empty()) {
@@ -262,8 +264,8 @@ std::optional<Signal> Evaluator::input(std::size_t n, const std::optional<model:
         powerOnly = powerOnly && (kind == NodeKind::LeftRail || kind == NodeKind::Contact || kind == NodeKind::Coil);
     }
     if (point->connections.size() > 1 && !m_ladder && !powerOnly) {
-        fail(n, QStringLiteral("%1 wires end at one input; an input takes exactly one.").arg(point->connections.size()),
-            QStringLiteral("combine them with an OR block"));
+        fail(n, QCoreApplication::translate("iec::interp::Compiler", "%1 wires end at one input; an input takes exactly one.").arg(point->connections.size()),
+            QCoreApplication::translate("iec::interp::Compiler", "combine them with an OR block"));
         return std::nullopt;
     }
     for (const model::Connection &connection : point->connections) {
@@ -280,12 +282,12 @@ std::optional<Signal> Evaluator::valueOf(const model::ConnectionPointIn &point, 
     const auto node = m_network.indexOf(localId);
     if (!node) {
         m_context.diagnostics.error(m_context.owner, elementLocation(localId),
-            QStringLiteral("%1 is not connected.").arg(where));
+            QCoreApplication::translate("iec::interp::Compiler", "%1 is not connected.").arg(where));
         return std::nullopt;
     }
     const bool ladder = m_ladder;
     m_ladder = true; // contacts in parallel in front of a transition are ORed
-    auto value = input(*node, point, QStringLiteral("%1 is not connected.").arg(where));
+    auto value = input(*node, point, QCoreApplication::translate("iec::interp::Compiler", "%1 is not connected.").arg(where));
     m_ladder = ladder;
     return value;
 }
@@ -308,7 +310,7 @@ Signal Evaluator::variableSignal(ast::Expr expr) const
 
 std::optional<Signal> Evaluator::trigger(std::size_t n, const Signal &value, bool rising)
 {
-    if (!canEmit(n, QStringLiteral("An edge detection")))
+    if (!canEmit(n, QT_TRANSLATE_NOOP("iec::interp::Compiler", "An edge detection")))
         return std::nullopt;
     const quint64 id = m_network.node(n).localId;
     const QString name = hiddenVariable(QStringLiteral("%1trig%2").arg(rising ? QLatin1Char('r') : QLatin1Char('f')).arg(id),
@@ -415,7 +417,7 @@ void Evaluator::evaluate(std::size_t n)
     case NodeKind::Connector: {
         const auto &connector = std::get<model::Connector>(element);
         auto value = input(n, connector.connectionPointIn,
-            QStringLiteral("Nothing is wired to the connector '%1'.").arg(connector.name));
+            QCoreApplication::translate("iec::interp::Compiler", "Nothing is wired to the connector '%1'.").arg(connector.name));
         if (value)
             setOutput(n, QString(), std::move(*value));
         break;
@@ -448,7 +450,7 @@ void Evaluator::evaluate(std::size_t n)
 void Evaluator::evaluateContact(std::size_t n, const model::Contact &contact)
 {
     auto power = input(n, contact.connectionPointIn,
-        QStringLiteral("The contact '%1' has no wire on its left.").arg(contact.variable));
+        QCoreApplication::translate("iec::interp::Compiler", "The contact '%1' has no wire on its left.").arg(contact.variable));
     if (!power)
         return;
     auto expr = variable(n, contact.variable);
@@ -469,7 +471,7 @@ void Evaluator::evaluateContact(std::size_t n, const model::Contact &contact)
 void Evaluator::evaluateCoil(std::size_t n, const model::Coil &coil)
 {
     auto power = input(n, coil.connectionPointIn,
-        QStringLiteral("The coil '%1' has no wire on its left.").arg(coil.variable));
+        QCoreApplication::translate("iec::interp::Compiler", "The coil '%1' has no wire on its left.").arg(coil.variable));
     if (!power)
         return;
     auto target = variable(n, coil.variable);
@@ -477,7 +479,7 @@ void Evaluator::evaluateCoil(std::size_t n, const model::Coil &coil)
         return;
     if (m_network.readers(n, QString()) > 0)
         *power = materialize(n, QStringLiteral("p"), std::move(*power));
-    if (!canEmit(n, QStringLiteral("A coil")))
+    if (!canEmit(n, QT_TRANSLATE_NOOP("iec::interp::Compiler", "A coil")))
         return;
     store(*target, *power, coil.negated, coil.edge, coil.storage, n);
     m_outputs[{n, QString()}] = std::move(*power);
@@ -485,11 +487,11 @@ void Evaluator::evaluateCoil(std::size_t n, const model::Coil &coil)
 
 void Evaluator::evaluateOutVariable(std::size_t n, const model::OutVariable &out)
 {
-    auto value = input(n, out.connectionPointIn, QStringLiteral("Nothing is wired to the output '%1'.").arg(out.expression));
+    auto value = input(n, out.connectionPointIn, QCoreApplication::translate("iec::interp::Compiler", "Nothing is wired to the output '%1'.").arg(out.expression));
     if (!value)
         return;
     auto target = variable(n, out.expression);
-    if (!target || !canEmit(n, QStringLiteral("An output variable")))
+    if (!target || !canEmit(n, QT_TRANSLATE_NOOP("iec::interp::Compiler", "An output variable")))
         return;
     store(*target, *value, out.negated, out.edge, out.storage, n);
 }
@@ -501,7 +503,7 @@ void Evaluator::evaluateInOutVariable(std::size_t n, const model::InOutVariable 
         return;
     if (connected(inOut.connectionPointIn)) {
         auto value = input(n, inOut.connectionPointIn, QString());
-        if (!value || !canEmit(n, QStringLiteral("A variable that is written")))
+        if (!value || !canEmit(n, QT_TRANSLATE_NOOP("iec::interp::Compiler", "A variable that is written")))
             return;
         store(*target, *value, inOut.negatedIn, inOut.edgeIn, inOut.storageIn, n);
     }
@@ -540,8 +542,8 @@ void Evaluator::evaluateBlock(std::size_t n, const model::Block &block)
         if (!connected(pin.connectionPointIn)) {
             if (isInstance)
                 continue; // an open input of a function block keeps its value
-            fail(n, QStringLiteral("The input %1 of %2 is not connected.").arg(pin.formalParameter, type),
-                QStringLiteral("draw a wire to it or write a constant"));
+            fail(n, QCoreApplication::translate("iec::interp::Compiler", "The input %1 of %2 is not connected.").arg(pin.formalParameter, type),
+                QCoreApplication::translate("iec::interp::Compiler", "draw a wire to it or write a constant"));
             return;
         }
         auto value = input(n, pin.connectionPointIn, QString());
@@ -586,7 +588,7 @@ void Evaluator::evaluateBlock(std::size_t n, const model::Block &block)
             m_outputs[{n, QStringLiteral("ENO")}] = enable;
     }
     if (isInstance) {
-        if (!canEmit(n, QStringLiteral("A function block")))
+        if (!canEmit(n, QT_TRANSLATE_NOOP("iec::interp::Compiler", "A function block")))
             return;
         const QString instance = block.instanceName->trimmed();
         ast::Stmt call = callStmt(callExpr(instance, std::move(args), at(n)));
@@ -612,9 +614,9 @@ void Evaluator::evaluateBlock(std::size_t n, const model::Block &block)
             resultPin = &pin;
             resultKey = pin.formalParameter.trimmed().toUpper();
         } else if (m_network.readers(n, pin.formalParameter.trimmed().toUpper()) > 0) {
-            fail(n, QStringLiteral("Only the result of the function %1 can be wired; its output %2 cannot yet.")
+            fail(n, QCoreApplication::translate("iec::interp::Compiler", "Only the result of the function %1 can be wired; its output %2 cannot yet.")
                         .arg(type, pin.formalParameter),
-                QStringLiteral("call %1 from ST to use its other outputs").arg(type));
+                QCoreApplication::translate("iec::interp::Compiler", "call %1 from ST to use its other outputs").arg(type));
             return;
         }
     }
@@ -625,18 +627,18 @@ void Evaluator::evaluateBlock(std::size_t n, const model::Block &block)
         result.size += in.size;
     if (m_network.readers(n, resultKey) == 0 && !standard) {
         // Nobody reads the result: call the function for what it does (VAR_IN_OUT, globals).
-        if (!canEmit(n, QStringLiteral("A function call")))
+        if (!canEmit(n, QT_TRANSLATE_NOOP("iec::interp::Compiler", "A function call")))
             return;
         ast::Stmt call = callStmt(std::move(result.expr));
         push(gated ? ifStmt(enable.expr, {std::move(call)}) : std::move(call));
         return;
     }
     if (gated) {
-        if (!canEmit(n, QStringLiteral("A function with EN")))
+        if (!canEmit(n, QT_TRANSLATE_NOOP("iec::interp::Compiler", "A function with EN")))
             return;
         if (!result.type) {
-            fail(n, QStringLiteral("The result type of %1 cannot be told here, so it cannot run under EN.").arg(type),
-                QStringLiteral("wire its output to a variable, or leave EN open"));
+            fail(n, QCoreApplication::translate("iec::interp::Compiler", "The result type of %1 cannot be told here, so it cannot run under EN.").arg(type),
+                QCoreApplication::translate("iec::interp::Compiler", "wire its output to a variable, or leave EN open"));
             return;
         }
         const QString name = hiddenVariable(QStringLiteral("v%1_%2").arg(m_network.node(n).localId).arg(resultKey), *result.type);
@@ -654,16 +656,16 @@ void Evaluator::evaluateExecuteBox(std::size_t n, const model::Block &block, con
 {
     const auto code = executeCode(block);
     if (!code) {
-        fail(n, QStringLiteral("This EXECUTE box holds no ST code."));
+        fail(n, QCoreApplication::translate("iec::interp::Compiler", "This EXECUTE box holds no ST code."));
         return;
     }
     Diagnostics local;
     std::vector<ast::Stmt> statements = parseStBody(*code, m_context.owner, local);
     if (local.hasErrors()) {
-        fail(n, QStringLiteral("The ST code of this EXECUTE box does not parse: %1").arg(local.all().front().message));
+        fail(n, QCoreApplication::translate("iec::interp::Compiler", "The ST code of this EXECUTE box does not parse: %1").arg(local.all().front().message));
         return;
     }
-    if (!canEmit(n, QStringLiteral("An EXECUTE box")))
+    if (!canEmit(n, QT_TRANSLATE_NOOP("iec::interp::Compiler", "An EXECUTE box")))
         return;
     relocate(statements, at(n));
     if (isBoolLiteral(enable.expr, true)) {
@@ -678,16 +680,16 @@ void Evaluator::evaluateExecuteBox(std::size_t n, const model::Block &block, con
 void Evaluator::evaluateJump(std::size_t n, const model::Jump &jump)
 {
     auto condition = input(n, jump.connectionPointIn,
-        QStringLiteral("The jump to '%1' has no condition wired to it.").arg(jump.label));
+        QCoreApplication::translate("iec::interp::Compiler", "The jump to '%1' has no condition wired to it.").arg(jump.label));
     if (!condition)
         return;
     const auto target = m_labels.find(jump.label.trimmed().toUpper());
     if (target == m_labels.end()) {
-        fail(n, QStringLiteral("There is no label '%1' to jump to.").arg(jump.label),
-            QStringLiteral("add a label with that name, or correct the jump"));
+        fail(n, QCoreApplication::translate("iec::interp::Compiler", "There is no label '%1' to jump to.").arg(jump.label),
+            QCoreApplication::translate("iec::interp::Compiler", "add a label with that name, or correct the jump"));
         return;
     }
-    if (!canEmit(n, QStringLiteral("A jump")))
+    if (!canEmit(n, QT_TRANSLATE_NOOP("iec::interp::Compiler", "A jump")))
         return;
     std::vector<ast::Stmt> go;
     go.push_back(assignStmt(nameExpr(m_jumpVariable, at(n)), intLiteral(target->second, at(n))));
@@ -702,8 +704,8 @@ void Evaluator::evaluateJump(std::size_t n, const model::Jump &jump)
 
 void Evaluator::evaluateReturn(std::size_t n, const model::Return &ret)
 {
-    auto condition = input(n, ret.connectionPointIn, QStringLiteral("The return has no condition wired to it."));
-    if (!condition || !canEmit(n, QStringLiteral("A return")))
+    auto condition = input(n, ret.connectionPointIn, QCoreApplication::translate("iec::interp::Compiler", "The return has no condition wired to it."));
+    if (!condition || !canEmit(n, QT_TRANSLATE_NOOP("iec::interp::Compiler", "A return")))
         return;
     ast::Stmt leave = simpleStmt(ast::StmtKind::Return, at(n));
     if (isBoolLiteral(condition->expr, true))

@@ -65,7 +65,8 @@ private:
     void push(ast::Stmt statement);
     void store(const ast::Expr &target, const Signal &value, bool negated, model::EdgeModifier edge,
         model::StorageModifier storage, std::size_t n);
-    bool canEmit(std::size_t n, const QString &what);
+    // what: a QT_TRANSLATE_NOOP text in the context iec::interp::Compiler, translated only on failure.
+    bool canEmit(std::size_t n, const char *what);
     void fail(std::size_t n, const QString &message, const QString &hint = {});
 
     std::optional<ast::TypeSpec> declaredType(const ast::Expr &expr) const;

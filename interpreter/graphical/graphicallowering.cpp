@@ -6,6 +6,8 @@
 
 #include "model/plcopen/reader.h"
 
+#include <QCoreApplication>
+
 namespace iec::interp::graphical {
 
 namespace {
@@ -19,13 +21,13 @@ bool reportForeignElements(const Network &network, LoweringContext &context)
             continue;
         QString message;
         if (const auto *vendor = std::get_if<model::VendorElement>(node.element)) {
-            message = QStringLiteral("The vendor element '%1' cannot run in this version.")
+            message = QCoreApplication::translate("iec::interp::Compiler", "The vendor element '%1' cannot run in this version.")
                           .arg(vendor->alternativeText.text.trimmed());
         } else if (std::holds_alternative<model::Error>(*node.element)) {
-            message = QStringLiteral("This element could not be read from the file, so it cannot run.");
+            message = QCoreApplication::translate("iec::interp::Compiler", "This element could not be read from the file, so it cannot run.");
         } else {
-            message = QStringLiteral("A %1 belongs in an SFC chart, not in an LD or FBD network.")
-                          .arg(QLatin1String(model::elementTagName(*node.element)));
+            message = QCoreApplication::translate("iec::interp::Compiler", "A %1 belongs in an SFC chart, not in an LD or FBD network.")
+                          .arg(elementKindName(*node.element));
         }
         context.diagnostics.error(context.owner, elementLocation(node.localId), message);
         ok = false;
@@ -46,7 +48,7 @@ std::map<QString, int> labelSegments(const Network &network, const std::vector<s
         ++segment;
         if (!labels.try_emplace(label->label.trimmed().toUpper(), segment).second) {
             context.diagnostics.error(context.owner, elementLocation(network.node(root).localId),
-                QStringLiteral("Two labels are called '%1'.").arg(label->label), QStringLiteral("rename one of them"));
+                QCoreApplication::translate("iec::interp::Compiler", "Two labels are called '%1'.").arg(label->label), QCoreApplication::translate("iec::interp::Compiler", "rename one of them"));
         }
     }
     return labels;
@@ -141,7 +143,7 @@ std::optional<ast::Expr> InputLowering::lower(const model::ConnectionPointIn &in
     }
     Evaluator evaluator(*m_network, context, true);
     evaluator.setSink(context.setup);
-    auto value = evaluator.valueOf(input, owner, QStringLiteral("This condition"));
+    auto value = evaluator.valueOf(input, owner, QCoreApplication::translate("iec::interp::Compiler", "This condition"));
     evaluator.declareHidden();
     if (!value)
         return std::nullopt;

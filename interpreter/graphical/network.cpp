@@ -2,6 +2,8 @@
 
 #include "interpreter/graphical/astbuild.h"
 
+#include <QCoreApplication>
+
 #include <algorithm>
 #include <limits>
 #include <numeric>
@@ -95,8 +97,8 @@ Network::Network(const std::vector<model::Element> &elements, const QString &own
         node.fileIndex = i;
         if (m_index.contains(node.localId)) {
             diagnostics.error(owner, elementLocation(node.localId),
-                QStringLiteral("Two elements have the same localId %1.").arg(node.localId),
-                QStringLiteral("give every element its own localId"));
+                QCoreApplication::translate("iec::interp::Compiler", "Two elements have the same localId %1.").arg(node.localId),
+                QCoreApplication::translate("iec::interp::Compiler", "give every element its own localId"));
             m_ok = false;
         } else {
             m_index.insert(node.localId, i);
@@ -127,8 +129,8 @@ Network::Network(const std::vector<model::Element> &elements, const QString &own
             const auto connector = connectors.find(continuation->name.trimmed().toUpper());
             if (connector == connectors.end()) {
                 diagnostics.error(owner, elementLocation(node.localId),
-                    QStringLiteral("There is no connector named '%1' for this continuation.").arg(continuation->name),
-                    QStringLiteral("add a connector with that name where the wire starts"));
+                    QCoreApplication::translate("iec::interp::Compiler", "There is no connector named '%1' for this continuation.").arg(continuation->name),
+                    QCoreApplication::translate("iec::interp::Compiler", "add a connector with that name where the wire starts"));
                 m_ok = false;
                 continue;
             }
@@ -235,10 +237,10 @@ bool Network::breakLoops(const QString &owner, Diagnostics &diagnostics)
         if (variable == cycle->end()) {
             const std::size_t first = *std::ranges::min_element(*cycle);
             diagnostics.error(owner, elementLocation(m_nodes[first].localId),
-                QStringLiteral("The wires make a loop through %1 elements with no variable to keep the value "
+                QCoreApplication::translate("iec::interp::Compiler", "The wires make a loop through %1 elements with no variable to keep the value "
                                "from one scan to the next.")
                     .arg(cycle->size()),
-                QStringLiteral("put a feedback variable (an in-out variable) into the loop"));
+                QCoreApplication::translate("iec::interp::Compiler", "put a feedback variable (an in-out variable) into the loop"));
             return false;
         }
         const std::size_t reader = variable == cycle->begin() ? cycle->back() : *(variable - 1);

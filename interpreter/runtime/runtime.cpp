@@ -1,5 +1,7 @@
 #include "interpreter/runtime/runtime.h"
 
+#include <QCoreApplication>
+
 #include <algorithm>
 #include <cstring>
 
@@ -152,7 +154,7 @@ std::optional<QString> Runtime::write(const QString &name, const QString &litera
 {
     const auto ref = find(name);
     if (!ref)
-        return QStringLiteral("There is no variable called %1.").arg(name);
+        return QCoreApplication::translate("iec::interp::Runtime", "There is no variable called %1.").arg(name);
     return writeLiteral(*ref, literal, m_vm.memory().data(), image(ref->imageArea ? ref->imageArea : 'M').data());
 }
 

@@ -4,6 +4,7 @@
 #include "interpreter/compiler/literals.h"
 #include "interpreter/runtime/valueformat.h"
 
+#include <QCoreApplication>
 #include <QRegularExpression>
 
 #include <cmath>
@@ -308,7 +309,7 @@ std::optional<QString> outOfRange(const Type &type, const IntegerValue &value, b
         const auto [low, high] = *type.subrange;
         if (compare(value, low) >= 0 && compare(value, high) <= 0)
             return std::nullopt;
-        return QStringLiteral("%1 is out of the range of %2 (%3..%4).").arg(text, typeName(&type)).arg(low).arg(high);
+        return QCoreApplication::translate("iec::interp::Runtime", "%1 is out of the range of %2 (%3..%4).").arg(text, typeName(&type)).arg(low).arg(high);
     }
     const unsigned bits = std::min(8 * type.size, 64u);
     if (bits == 0)
@@ -321,9 +322,9 @@ std::optional<QString> outOfRange(const Type &type, const IntegerValue &value, b
     if (compare(value, low) >= 0 && (negative || value.magnitude <= high))
         return std::nullopt;
     if (based)
-        return QStringLiteral("%1 does not fit the %2 bits of %3.").arg(text).arg(bits).arg(typeName(&type));
+        return QCoreApplication::translate("iec::interp::Runtime", "%1 does not fit the %2 bits of %3.").arg(text).arg(bits).arg(typeName(&type));
     const std::uint64_t signedHigh = isUnsigned ? high : (std::uint64_t(1) << (bits - 1)) - 1;
-    return QStringLiteral("%1 is out of the range of %2 (%3..%4).").arg(text, typeName(&type)).arg(low).arg(signedHigh);
+    return QCoreApplication::translate("iec::interp::Runtime", "%1 is out of the range of %2 (%3..%4).").arg(text, typeName(&type)).arg(low).arg(signedHigh);
 }
 
 } // namespace
@@ -333,7 +334,7 @@ std::optional<QString> writeLiteral(const VariableRef &ref, const QString &input
     std::uint8_t *p = (ref.imageArea ? image : memory) + ref.offset;
     const Type *type = ref.type;
     const QString text = input.trimmed();
-    const auto bad = [&] { return QStringLiteral("'%1' is not a valid %2.").arg(text, typeName(type)); };
+    const auto bad = [&] { return QCoreApplication::translate("iec::interp::Runtime", "'%1' is not a valid %2.").arg(text, typeName(type)); };
     if (type->kind == TypeKind::String) {
         QString value = text;
         if (text.startsWith(QLatin1Char('\'')) || text.startsWith(QLatin1Char('"'))) {
@@ -343,7 +344,7 @@ std::optional<QString> writeLiteral(const VariableRef &ref, const QString &input
             value = *decoded;
         }
         if (value.size() > qsizetype(type->capacity))
-            return QStringLiteral("The text is longer than the %1 characters of the string.").arg(type->capacity);
+            return QCoreApplication::translate("iec::interp::Runtime", "The text is longer than the %1 characters of the string.").arg(type->capacity);
         put<std::uint16_t>(p + 2, static_cast<std::uint16_t>(value.size()));
         for (qsizetype i = 0; i < value.size(); ++i) {
             if (type->wide)
@@ -354,7 +355,7 @@ std::optional<QString> writeLiteral(const VariableRef &ref, const QString &input
         return std::nullopt;
     }
     if (!type->isElementary())
-        return QStringLiteral("Only elementary variables and strings can be written.");
+        return QCoreApplication::translate("iec::interp::Runtime", "Only elementary variables and strings can be written.");
     const LiteralParts parts = splitTypedLiteral(text);
     const Elem e = type->elem;
     if (type->kind == TypeKind::Enum) {
@@ -413,7 +414,7 @@ std::optional<QString> writeLiteral(const VariableRef &ref, const QString &input
         if (!value)
             return bad();
         if (e == Elem::Real && std::isfinite(*value) && std::fabs(*value) > double(std::numeric_limits<float>::max()))
-            return QStringLiteral("%1 is out of the range of REAL (about ±3.4E38).").arg(text);
+            return QCoreApplication::translate("iec::interp::Runtime", "%1 is out of the range of REAL (about ±3.4E38).").arg(text);
         if (e == Elem::Real)
             put<float>(p, static_cast<float>(*value));
         else

@@ -2,6 +2,7 @@
 
 #include "interpreter/graphical/astbuild.h"
 
+#include <QCoreApplication>
 #include <QHash>
 #include <QSet>
 
@@ -53,7 +54,7 @@ std::vector<const model::ConnectionPointIn *> flowInputs(const model::Element &e
 
 QString kindName(const model::Element &element)
 {
-    return QString::fromLatin1(model::elementTagName(element));
+    return graphical::elementKindName(element);
 }
 
 QString key(const QString &name)
@@ -134,9 +135,9 @@ private:
     int addStep(const QString &name, quint64 localId, bool initial, const model::StepOptions &options, int macro)
     {
         if (name.trimmed().isEmpty()) {
-            error(localId, QStringLiteral("A step has no name."), QStringLiteral("give every step a unique name"));
+            error(localId, QCoreApplication::translate("iec::interp::Compiler", "A step has no name."), QCoreApplication::translate("iec::interp::Compiler", "give every step a unique name"));
         } else if (m_stepByName.contains(key(name))) {
-            error(localId, QStringLiteral("Two steps are called %1; every step of a chart needs its own name.").arg(name));
+            error(localId, QCoreApplication::translate("iec::interp::Compiler", "Two steps are called %1; every step of a chart needs its own name.").arg(name));
         }
         ChartStep step;
         step.name = name;
@@ -166,7 +167,7 @@ private:
                     if (macro->body && (*macro->body)->elements()
                         && (*macro->body)->language() == model::BodyLanguage::SFC) {
                         if (m_stepByName.contains(key(name)) || m_macroNames.contains(key(name)))
-                            error(macro->localId, QStringLiteral("Two steps are called %1; every step of a chart needs its own name.").arg(name));
+                            error(macro->localId, QCoreApplication::translate("iec::interp::Compiler", "Two steps are called %1; every step of a chart needs its own name.").arg(name));
                         m_macroNames.insert(key(name));
                         ChartMacro chartMacro;
                         chartMacro.name = name;
@@ -212,7 +213,7 @@ private:
             if (m_macroEntry[m] < 0 && !m_chart.macros[m].inner.empty())
                 m_macroEntry[m] = m_chart.macros[m].inner.front();
             if (m_chart.macros[m].inner.empty())
-                error(m_chart.macros[m].localId, QStringLiteral("Macro step %1 has no steps inside.").arg(m_chart.macros[m].name));
+                error(m_chart.macros[m].localId, QCoreApplication::translate("iec::interp::Compiler", "Macro step %1 has no steps inside.").arg(m_chart.macros[m].name));
         }
     }
 
@@ -240,7 +241,7 @@ private:
             m_visited.insert(c.refLocalId);
             const model::Element *e = find(scope, c.refLocalId);
             if (!e) {
-                error(transition, QStringLiteral("The transition is connected to element %1, which the chart does not have.").arg(c.refLocalId));
+                error(transition, QCoreApplication::translate("iec::interp::Compiler", "The transition is connected to element %1, which the chart does not have.").arg(c.refLocalId));
                 continue;
             }
             if (std::holds_alternative<model::Step>(*e) || std::holds_alternative<model::MacroStep>(*e)) {
@@ -257,7 +258,7 @@ private:
                     upstream(s, i, transition, steps, depth + 1);
             } else {
                 error(transition,
-                    QStringLiteral("A transition must come after a step, a selection divergence or a simultaneous "
+                    QCoreApplication::translate("iec::interp::Compiler", "A transition must come after a step, a selection divergence or a simultaneous "
                                    "convergence, not after a %1.")
                         .arg(kindName(*e)));
             }
@@ -296,10 +297,10 @@ private:
                 || std::holds_alternative<model::SelectionConvergence>(e)) {
                 downstream(s, id, transition, steps, depth + 1);
             } else if (std::holds_alternative<model::Transition>(e)) {
-                error(id, QStringLiteral("Two transitions follow each other; put a step between them."));
+                error(id, QCoreApplication::translate("iec::interp::Compiler", "Two transitions follow each other; put a step between them."));
             } else {
                 error(transition,
-                    QStringLiteral("A transition must lead to a step, a jump, a simultaneous divergence or a selection "
+                    QCoreApplication::translate("iec::interp::Compiler", "A transition must lead to a step, a jump, a simultaneous divergence or a selection "
                                    "convergence, not to a %1.")
                         .arg(kindName(e)));
             }
@@ -335,14 +336,14 @@ private:
         dedupe(transition.sources);
         dedupe(transition.targets);
         if (transition.sources.empty())
-            error(t.localId, QStringLiteral("This transition has no step before it."),
-                QStringLiteral("connect it below a step"));
+            error(t.localId, QCoreApplication::translate("iec::interp::Compiler", "This transition has no step before it."),
+                QCoreApplication::translate("iec::interp::Compiler", "connect it below a step"));
         if (transition.targets.empty())
-            error(t.localId, QStringLiteral("This transition leads to no step."),
-                QStringLiteral("connect a step or a jump below it"));
+            error(t.localId, QCoreApplication::translate("iec::interp::Compiler", "This transition leads to no step."),
+                QCoreApplication::translate("iec::interp::Compiler", "connect a step or a jump below it"));
         if (!t.condition)
-            error(t.localId, QStringLiteral("This transition has no condition."),
-                QStringLiteral("write a condition such as TRUE or Start AND NOT Stop"));
+            error(t.localId, QCoreApplication::translate("iec::interp::Compiler", "This transition has no condition."),
+                QCoreApplication::translate("iec::interp::Compiler", "write a condition such as TRUE or Start AND NOT Stop"));
         m_chart.transitions.push_back(std::move(transition));
     }
 
@@ -366,31 +367,31 @@ private:
                 return; // the last step of a macro hands over to the transition after the macro
         }
         if (!hasFollowingTransition(scope, localId))
-            error(localId, QStringLiteral("Step %1 has no transition after it.").arg(name),
-                QStringLiteral("add a transition below it, or a jump back"));
+            error(localId, QCoreApplication::translate("iec::interp::Compiler", "Step %1 has no transition after it.").arg(name),
+                QCoreApplication::translate("iec::interp::Compiler", "add a transition below it, or a jump back"));
     }
 
     void resolve(int, const model::JumpStep &jump)
     {
         const bool known = m_stepByName.contains(key(jump.targetName)) || m_macroNames.contains(key(jump.targetName));
         if (!known)
-            error(jump.localId, QStringLiteral("The jump goes to step %1, which the chart does not have.").arg(jump.targetName));
+            error(jump.localId, QCoreApplication::translate("iec::interp::Compiler", "The jump goes to step %1, which the chart does not have.").arg(jump.targetName));
     }
 
     void resolve(int s, const model::SelectionDivergence &div)
     {
         const auto branches = after(s, div.localId);
         if (branches.size() < 2)
-            warning(div.localId, QStringLiteral("This selection divergence has only %1 branch.").arg(branches.size()));
+            warning(div.localId, QCoreApplication::translate("iec::interp::Compiler", "This selection divergence needs at least two branches; it has %1.").arg(branches.size()));
         for (const model::Element *e : branches) {
             if (!std::holds_alternative<model::Transition>(*e))
-                error(div.localId, QStringLiteral("Each branch of a selection divergence must begin with a transition, not a %1.").arg(kindName(*e)));
+                error(div.localId, QCoreApplication::translate("iec::interp::Compiler", "Each branch of a selection divergence must begin with a transition, not a %1.").arg(kindName(*e)));
         }
         if (div.connectionPointIn) {
             for (const model::Element *e : before(s, *div.connectionPointIn)) {
                 if (!std::holds_alternative<model::Step>(*e) && !std::holds_alternative<model::MacroStep>(*e)
                     && !std::holds_alternative<model::SimultaneousConvergence>(*e))
-                    error(div.localId, QStringLiteral("A selection divergence must come after a step, not after a %1.").arg(kindName(*e)));
+                    error(div.localId, QCoreApplication::translate("iec::interp::Compiler", "A selection divergence must come after a step, not after a %1.").arg(kindName(*e)));
             }
         }
     }
@@ -399,16 +400,16 @@ private:
     {
         const auto branches = after(s, div.localId);
         if (branches.size() < 2)
-            warning(div.localId, QStringLiteral("This simultaneous divergence has only %1 branch.").arg(branches.size()));
+            warning(div.localId, QCoreApplication::translate("iec::interp::Compiler", "This simultaneous divergence needs at least two branches; it has %1.").arg(branches.size()));
         for (const model::Element *e : branches) {
             if (std::holds_alternative<model::Transition>(*e) || std::holds_alternative<model::SelectionDivergence>(*e)
                 || std::holds_alternative<model::SimultaneousConvergence>(*e))
-                error(div.localId, QStringLiteral("Each branch of a simultaneous divergence must begin with a step, not a %1.").arg(kindName(*e)));
+                error(div.localId, QCoreApplication::translate("iec::interp::Compiler", "Each branch of a simultaneous divergence must begin with a step, not a %1.").arg(kindName(*e)));
         }
         if (div.connectionPointIn) {
             for (const model::Element *e : before(s, *div.connectionPointIn)) {
                 if (!std::holds_alternative<model::Transition>(*e) && !std::holds_alternative<model::SelectionConvergence>(*e))
-                    error(div.localId, QStringLiteral("A simultaneous divergence must come after a transition, not after a %1.").arg(kindName(*e)));
+                    error(div.localId, QCoreApplication::translate("iec::interp::Compiler", "A simultaneous divergence must come after a transition, not after a %1.").arg(kindName(*e)));
             }
         }
     }
@@ -416,46 +417,46 @@ private:
     void resolve(int s, const model::SelectionConvergence &join)
     {
         if (join.connectionPointIns.size() < 2)
-            warning(join.localId, QStringLiteral("This selection convergence joins only %1 branch.").arg(join.connectionPointIns.size()));
+            warning(join.localId, QCoreApplication::translate("iec::interp::Compiler", "This selection convergence needs at least two branches; it joins %1.").arg(join.connectionPointIns.size()));
         for (const model::ConnectionPointIn &in : join.connectionPointIns) {
             for (const model::Element *e : before(s, in)) {
                 // CODESYS closes a branch that ends in a jump with the convergence line too.
                 if (!std::holds_alternative<model::Transition>(*e) && !std::holds_alternative<model::JumpStep>(*e))
-                    error(join.localId, QStringLiteral("Each branch of a selection convergence must end with a transition, not a %1.").arg(kindName(*e)));
+                    error(join.localId, QCoreApplication::translate("iec::interp::Compiler", "Each branch of a selection convergence must end with a transition, not a %1.").arg(kindName(*e)));
             }
         }
         for (const model::Element *e : after(s, join.localId)) {
             if (std::holds_alternative<model::Transition>(*e) || std::holds_alternative<model::SelectionDivergence>(*e))
-                error(join.localId, QStringLiteral("A selection convergence must lead to a step, not to a %1.").arg(kindName(*e)));
+                error(join.localId, QCoreApplication::translate("iec::interp::Compiler", "A selection convergence must lead to a step, not to a %1.").arg(kindName(*e)));
         }
     }
 
     void resolve(int s, const model::SimultaneousConvergence &join)
     {
         if (join.connectionPointIns.size() < 2)
-            warning(join.localId, QStringLiteral("This simultaneous convergence joins only %1 branch.").arg(join.connectionPointIns.size()));
+            warning(join.localId, QCoreApplication::translate("iec::interp::Compiler", "This simultaneous convergence needs at least two branches; it joins %1.").arg(join.connectionPointIns.size()));
         for (const model::ConnectionPointIn &in : join.connectionPointIns) {
             for (const model::Element *e : before(s, in)) {
                 if (!std::holds_alternative<model::Step>(*e) && !std::holds_alternative<model::MacroStep>(*e))
-                    error(join.localId, QStringLiteral("Each branch of a simultaneous convergence must end with a step, not a %1.").arg(kindName(*e)));
+                    error(join.localId, QCoreApplication::translate("iec::interp::Compiler", "Each branch of a simultaneous convergence must end with a step, not a %1.").arg(kindName(*e)));
             }
         }
         for (const model::Element *e : after(s, join.localId)) {
             if (!std::holds_alternative<model::Transition>(*e) && !std::holds_alternative<model::SelectionDivergence>(*e))
-                error(join.localId, QStringLiteral("A simultaneous convergence must lead to a transition, not to a %1.").arg(kindName(*e)));
+                error(join.localId, QCoreApplication::translate("iec::interp::Compiler", "A simultaneous convergence must lead to a transition, not to a %1.").arg(kindName(*e)));
         }
     }
 
     void resolve(int s, const model::ActionBlock &block)
     {
         if (!block.connectionPointIn || block.connectionPointIn->connections.empty()) {
-            error(block.localId, QStringLiteral("This action block is not connected to a step."));
+            error(block.localId, QCoreApplication::translate("iec::interp::Compiler", "This action block is not connected to a step."));
             return;
         }
         const quint64 stepId = block.connectionPointIn->connections.front().refLocalId;
         const auto step = m_stepOf.constFind({s, stepId});
         if (step == m_stepOf.constEnd()) {
-            error(block.localId, QStringLiteral("An action block must be connected to a step."));
+            error(block.localId, QCoreApplication::translate("iec::interp::Compiler", "An action block must be connected to a step."));
             return;
         }
         for (const model::ActionBlockAction &action : block.actions)
@@ -479,15 +480,15 @@ private:
             association.inlineBody = &**action.inlineBody;
         }
         if (association.action.isEmpty()) {
-            error(action.localId, QStringLiteral("This action of step %1 names no action.").arg(m_chart.steps[size_t(step)].name));
+            error(action.localId, QCoreApplication::translate("iec::interp::Compiler", "This action of step %1 names no action.").arg(m_chart.steps[size_t(step)].name));
             return;
         }
         if (!isKnownQualifier(association.qualifier)) {
-            error(action.localId, QStringLiteral("%1 is not an action qualifier; use N, R, S, L, D, P, P0, P1, SD, DS or SL.").arg(association.qualifier));
+            error(action.localId, QCoreApplication::translate("iec::interp::Compiler", "%1 is not an action qualifier; use N, R, S, L, D, P, P0, P1, SD, DS or SL.").arg(association.qualifier));
             return;
         }
         if (isTimedQualifier(association.qualifier) && association.duration.isEmpty()) {
-            error(action.localId, QStringLiteral("The qualifier %1 of action %2 needs a duration, e.g. T#5s.").arg(association.qualifier, association.action));
+            error(action.localId, QCoreApplication::translate("iec::interp::Compiler", "The qualifier %1 of action %2 needs a duration, e.g. T#5s.").arg(association.qualifier, association.action));
             return;
         }
         if (!isTimedQualifier(association.qualifier))
@@ -522,15 +523,15 @@ private:
                 initial.push_back(i);
         }
         if (initial.empty()) {
-            m_diagnostics.error(m_pou, {}, QStringLiteral("The chart of %1 has no initial step.").arg(m_pou),
-                QStringLiteral("make one step the initial step (double frame)"));
+            m_diagnostics.error(m_pou, {}, QCoreApplication::translate("iec::interp::Compiler", "The chart of %1 has no initial step.").arg(m_pou),
+                QCoreApplication::translate("iec::interp::Compiler", "make one step the initial step (double frame)"));
             return;
         }
         m_chart.initialStep = initial.front();
         for (size_t i = 1; i < initial.size(); ++i) {
             const ChartStep &step = m_chart.steps[size_t(initial[i])];
             error(step.localId,
-                QStringLiteral("Step %1 is a second initial step; a chart has exactly one (the first is %2).")
+                QCoreApplication::translate("iec::interp::Compiler", "Step %1 is a second initial step; a chart has exactly one (the first is %2).")
                     .arg(step.name, m_chart.steps[size_t(initial.front())].name));
         }
     }

@@ -201,7 +201,7 @@ private:
         if (local.hasErrors()) {
             // Only user text inside (a duration, a variable name) can make it fail.
             m_diagnostics.error(m_pou.name, at(localId),
-                QStringLiteral("The chart's code for this element does not parse: %1").arg(local.all().front().message));
+                QCoreApplication::translate("iec::interp::Compiler", "The chart's code for this element does not parse: %1").arg(local.all().front().message));
             m_failed = true;
             return {};
         }
@@ -289,7 +289,7 @@ private:
             const QString userType = m_declared.value(key(name));
             if (!type.startsWith(QLatin1String("STRUCT")) && userType == type.section(QLatin1Char(' '), 0, 0).toUpper())
                 return; // CoDeSys 2.3: "_timeStep1 : TIME;" declared by hand
-            error(localId, QStringLiteral("%1 is the name of a variable and of the chart's implicit variable; rename one of them.").arg(name));
+            error(localId, QCoreApplication::translate("iec::interp::Compiler", "%1 is the name of a variable and of the chart's implicit variable; rename one of them.").arg(name));
             return;
         }
         m_declared.insert(key(name), type);
@@ -327,7 +327,7 @@ private:
             = parseDeclarations(named(QStringLiteral("VAR\n") + text + QStringLiteral("END_VAR\n")), m_pou.name, local);
         if (local.hasErrors()) {
             m_diagnostics.error(m_pou.name, {},
-                QStringLiteral("The chart's variables cannot be declared: %1").arg(local.all().front().message));
+                QCoreApplication::translate("iec::interp::Compiler", "The chart's variables cannot be declared: %1").arg(local.all().front().message));
             m_failed = true;
             return;
         }
@@ -420,8 +420,8 @@ private:
         case model::BodyLanguage::IL: {
             const QString name = owner.section(QLatin1Char('.'), -1);
             if (owner == m_pou.name) { // an inline action body has no name to call
-                error(localId, QStringLiteral("This inline action is written in IL; an inline action must be written in ST, LD or FBD."),
-                    QStringLiteral("make it an action of %1 and name it in the step").arg(m_pou.name));
+                error(localId, QCoreApplication::translate("iec::interp::Compiler", "This inline action is written in IL; an inline action must be written in ST, LD or FBD."),
+                    QCoreApplication::translate("iec::interp::Compiler", "make it an action of %1 and name it in the step").arg(m_pou.name));
                 return std::nullopt;
             }
             ast::Body parsed;
@@ -483,7 +483,7 @@ private:
             return {};
         const model::PouAction *action = m_pouActions.value(key(name));
         if (!action) {
-            error(step.localId, QStringLiteral("Step %1 runs action %2, which %3 does not have.").arg(step.name, name, m_pou.name));
+            error(step.localId, QCoreApplication::translate("iec::interp::Compiler", "Step %1 runs action %2, which %3 does not have.").arg(step.name, name, m_pou.name));
             return {};
         }
         auto statements = actionBody(action->body, m_pou.name + QLatin1Char('.') + action->name, step.localId);
@@ -588,14 +588,14 @@ private:
                     QCoreApplication::translate("iec::interp::Compiler", "split it into several statements, with variables for the parts"));
                 return std::nullopt;
             }
-            error(localId, QStringLiteral("This IL condition uses jumps, parentheses or calls, which a transition cannot run yet."),
-                QStringLiteral("write the condition as an ST expression"));
+            error(localId, QCoreApplication::translate("iec::interp::Compiler", "This IL condition uses jumps, parentheses or calls, which a transition cannot run yet."),
+                QCoreApplication::translate("iec::interp::Compiler", "write the condition as an ST expression"));
             return std::nullopt;
         }
         case model::BodyLanguage::LD:
         case model::BodyLanguage::FBD: {
             if (name.isEmpty()) {
-                error(localId, QStringLiteral("A graphical transition condition needs a name: its network assigns that name."));
+                error(localId, QCoreApplication::translate("iec::interp::Compiler", "A graphical transition condition needs a name: its network assigns that name."));
                 return std::nullopt;
             }
             graphical::LoweringContext context {m_result, owner, m_diagnostics};
@@ -606,7 +606,7 @@ private:
         case model::BodyLanguage::SFC:
             break;
         }
-        error(localId, QStringLiteral("A transition condition cannot be an SFC chart."));
+        error(localId, QCoreApplication::translate("iec::interp::Compiler", "A transition condition cannot be an SFC chart."));
         return std::nullopt;
     }
 
@@ -621,7 +621,7 @@ private:
             } else if (declared(reference->name)) {
                 expr = graphical::nameExpr(reference->name, {});
             } else {
-                error(t.localId, QStringLiteral("The transition refers to %1, which is neither a transition of %2 nor a variable.").arg(reference->name, m_pou.name));
+                error(t.localId, QCoreApplication::translate("iec::interp::Compiler", "The transition refers to %1, which is neither a transition of %2 nor a variable.").arg(reference->name, m_pou.name));
             }
         } else if (const auto *inl = std::get_if<model::InlineCondition>(&c.kind)) {
             expr = bodyCondition(*inl->body, owner, inl->name, t.localId, pre, t.localId);
@@ -652,7 +652,7 @@ private:
             }
         }
         if (wire.connections.empty()) {
-            error(t.localId, QStringLiteral("The condition of this transition is not connected."));
+            error(t.localId, QCoreApplication::translate("iec::interp::Compiler", "The condition of this transition is not connected."));
             return std::nullopt;
         }
         // Blocks in the network (function block calls, edge detectors) run before the condition
@@ -672,7 +672,7 @@ private:
         Diagnostics local;
         auto statements = parseStBody(QString(QStringLiteral("__sfc_cond := ") + text + QStringLiteral(";")), m_pou.name, local);
         if (local.hasErrors() || statements.size() != 1) {
-            error(localId, QStringLiteral("The condition %1 is not an expression: %2").arg(text, local.all().empty() ? QString() : local.all().front().message));
+            error(localId, QCoreApplication::translate("iec::interp::Compiler", "The condition %1 is not an expression: %2").arg(text, local.all().empty() ? QString() : local.all().front().message));
             return std::nullopt;
         }
         graphical::relocate(statements, at(localId)); // point at the chart element
@@ -812,13 +812,15 @@ private:
         return text;
     }
 
-    bool checkDuration(const QString &duration, quint64 localId, const QString &what)
+    // what: a QT_TRANSLATE_NOOP text in the context iec::interp::Compiler.
+    bool checkDuration(const QString &duration, quint64 localId, const char *what)
     {
         Diagnostics local;
         const auto parsed = parseStBody(QString(QStringLiteral("__sfc_d := ") + duration + QStringLiteral(";")), m_pou.name, local);
         if (local.hasErrors()) {
-            error(localId, QStringLiteral("%1 %2 is not a TIME literal or variable.").arg(what, duration),
-                QStringLiteral("write e.g. T#5s"));
+            error(localId, QCoreApplication::translate("iec::interp::Compiler", "%1 %2 is not a TIME literal or variable.")
+                      .arg(QCoreApplication::translate("iec::interp::Compiler", what), duration),
+                QCoreApplication::translate("iec::interp::Compiler", "write e.g. T#5s"));
             return false;
         }
         return true;
@@ -834,7 +836,7 @@ private:
             QString step = QStringLiteral("IF %3 THEN\nIF %1 THEN %2 := __sfc_now; END_IF;\n%4 := __sfc_now - %2;\n")
                                .arg(hidden("s", i, "en"), hidden("s", i, "start"), stepActive(s), stepTime(s));
             const QString max = s.options.maxTime.trimmed();
-            if (!max.isEmpty() && checkDuration(max, s.localId, QStringLiteral("The maximum time"))) {
+            if (!max.isEmpty() && checkDuration(max, s.localId, QT_TRANSLATE_NOOP("iec::interp::Compiler", "The maximum time"))) {
                 QString raise = QStringLiteral("__sfc_error := TRUE;\n");
                 if (hasFlag("SFCError"))
                     raise += QStringLiteral("SFCError := TRUE;\n");
@@ -845,7 +847,7 @@ private:
                 step += QStringLiteral("IF NOT __sfc_error%1 AND %2 > %3 THEN\n%4END_IF;\n").arg(enabled, stepTime(s), max, raise);
             }
             if (!s.options.minTime.trimmed().isEmpty())
-                checkDuration(s.options.minTime.trimmed(), s.localId, QStringLiteral("The minimum time"));
+                checkDuration(s.options.minTime.trimmed(), s.localId, QT_TRANSLATE_NOOP("iec::interp::Compiler", "The minimum time"));
             step += stepActionText(s.options.activeAction, s);
             step += QStringLiteral("END_IF;\n");
             text += located(step, s.localId);
@@ -906,7 +908,7 @@ private:
         for (const ChartAssociation *a : associations) {
             inputs[a->qualifier] << stepActive(m_chart.steps[size_t(a->step)]);
             if (isTimedQualifier(a->qualifier)) {
-                if (checkDuration(a->duration, a->localId, QStringLiteral("The duration")))
+                if (checkDuration(a->duration, a->localId, QT_TRANSLATE_NOOP("iec::interp::Compiler", "The duration")))
                     timed.push_back(a);
             }
             if (!a->indicator.isEmpty())
@@ -1135,7 +1137,7 @@ void lowerChart(const model::Pou &pou, ast::Pou &result, Diagnostics &diagnostic
 {
     if (pou.kind == model::PouKind::Function) {
         diagnostics.error(pou.name, {},
-            QStringLiteral("%1 is a function written in SFC; a chart keeps its state, so it must be a program or a function block.").arg(pou.name));
+            QCoreApplication::translate("iec::interp::Compiler", "%1 is a function written in SFC; a chart keeps its state, so it must be a program or a function block.").arg(pou.name));
         return;
     }
     Lowering(pou, result, diagnostics, parsedActions).run();

@@ -6,6 +6,7 @@
 
 #include "model/layout.h"
 
+#include <QCoreApplication>
 #include <QHash>
 
 namespace iec::interp::sfc {
@@ -72,7 +73,7 @@ private:
         for (size_t s = 0; s < m_chart.steps.size(); ++s) {
             const QString key = m_chart.steps[s].name.toUpper();
             if (m_stepIndex.contains(key))
-                m_diagnostics.error(m_pou, m_chart.steps[s].location, QStringLiteral("Two steps are called %1.").arg(m_chart.steps[s].name));
+                m_diagnostics.error(m_pou, m_chart.steps[s].location, QCoreApplication::translate("iec::interp::Compiler", "Two steps are called %1.").arg(m_chart.steps[s].name));
             else
                 m_stepIndex.insert(key, int(s));
         }
@@ -116,7 +117,7 @@ private:
         for (const QString &name : names) {
             const auto it = m_stepIndex.constFind(name.toUpper());
             if (it == m_stepIndex.constEnd())
-                m_diagnostics.error(m_pou, transition.location, QStringLiteral("The transition refers to step %1, which the chart does not have.").arg(name));
+                m_diagnostics.error(m_pou, transition.location, QCoreApplication::translate("iec::interp::Compiler", "The transition refers to step %1, which the chart does not have.").arg(name));
             else
                 result.push_back(*it);
         }

@@ -12,10 +12,13 @@
 #include "model/plcopen/writer.h"
 #include "model/sfcoptions.h"
 
+#include "chartelements.h"
+
 #include <QTest>
 
 using namespace iec;
 using namespace iec::interp;
+using namespace iec::testing::sfcchart;
 
 Q_DECLARE_METATYPE(iec::model::Pou)
 Q_DECLARE_METATYPE(iec::model::StepOptions)
@@ -43,72 +46,6 @@ private Q_SLOTS:
 
 namespace {
 
-model::ConnectionPointIn from(quint64 source)
-{
-    model::ConnectionPointIn in;
-    in.connections.push_back({source, {}, {}, {}, {}, {}});
-    return in;
-}
-
-model::Element step(quint64 id, const QString &name, std::optional<quint64> before = {}, bool initial = false)
-{
-    model::Step s;
-    s.localId = id;
-    s.name = name;
-    s.initialStep = initial;
-    s.connectionPointIn = before ? from(*before) : model::ConnectionPointIn {};
-    s.connectionPointOut = model::ConnectionPointOut {};
-    return s;
-}
-
-model::Element transition(quint64 id, std::optional<quint64> before, const QString &condition = QStringLiteral("TRUE"))
-{
-    model::Transition t;
-    t.localId = id;
-    if (before)
-        t.connectionPointIn = from(*before);
-    model::ConnectionPointIn wire;
-    wire.expression = condition;
-    t.condition = model::Condition {false, wire};
-    return t;
-}
-
-model::Element jump(quint64 id, quint64 before, const QString &target)
-{
-    model::JumpStep j;
-    j.localId = id;
-    j.targetName = target;
-    j.connectionPointIn = from(before);
-    return j;
-}
-
-template<typename Kind> model::Element split(quint64 id, quint64 before)
-{
-    Kind k;
-    k.localId = id;
-    k.connectionPointIn = from(before);
-    return k;
-}
-
-template<typename Kind> model::Element join(quint64 id, std::vector<quint64> before)
-{
-    Kind k;
-    k.localId = id;
-    for (quint64 b : before)
-        k.connectionPointIns.push_back(from(b));
-    return k;
-}
-
-model::Pou chart(std::vector<model::Element> elements)
-{
-    model::Pou pou;
-    pou.name = QStringLiteral("Main");
-    model::Body body = model::Body::withLanguage(model::BodyLanguage::SFC);
-    *body.elements() = std::move(elements);
-    pou.bodies.push_back(std::move(body));
-    return pou;
-}
-
 // "localId: message" per error.
 QStringList errors(const model::Pou &pou)
 {
@@ -118,13 +55,6 @@ QStringList errors(const model::Pou &pou)
     for (const Diagnostic &d : diagnostics.all())
         lines << QStringLiteral("%1: %2").arg(d.location.localId).arg(d.message);
     return lines;
-}
-
-// Init(1) -T(2)-> S1(3) -T(4)-> jump(5) to Init: a correct chart to break in each row.
-std::vector<model::Element> loop()
-{
-    return {step(1, QStringLiteral("Init"), {}, true), transition(2, 1), step(3, QStringLiteral("S1"), 2), transition(4, 3),
-        jump(5, 4, QStringLiteral("Init"))};
 }
 
 } // namespace
@@ -165,8 +95,8 @@ void TestSfcChart::diagnostics_data()
         << chart({step(1, QStringLiteral("Init"), {}, true), split<model::SimultaneousDivergence>(2, 1), transition(3, 2),
                transition(4, 2), step(5, QStringLiteral("A"), 3), step(6, QStringLiteral("B"), 4), transition(7, 5),
                transition(8, 6), jump(9, 7, QStringLiteral("Init")), jump(10, 8, QStringLiteral("Init"))})
-        << QStringList {QStringLiteral("3: A transition must come after a step, a selection divergence or a simultaneous convergence, not after a simultaneousDivergence."),
-               QStringLiteral("4: A transition must come after a step, a selection divergence or a simultaneous convergence, not after a simultaneousDivergence."),
+        << QStringList {QStringLiteral("3: A transition must come after a step, a selection divergence or a simultaneous convergence, not after a simultaneous divergence."),
+               QStringLiteral("4: A transition must come after a step, a selection divergence or a simultaneous convergence, not after a simultaneous divergence."),
                QStringLiteral("2: Each branch of a simultaneous divergence must begin with a step, not a transition."),
                QStringLiteral("2: Each branch of a simultaneous divergence must begin with a step, not a transition."),
                QStringLiteral("2: A simultaneous divergence must come after a transition, not after a step."),
@@ -182,7 +112,7 @@ void TestSfcChart::diagnostics_data()
         << chart({step(1, QStringLiteral("Init"), {}, true), split<model::SelectionDivergence>(2, 1), transition(3, 2),
                transition(4, 2), step(5, QStringLiteral("A"), 3), step(6, QStringLiteral("B"), 4),
                join<model::SelectionConvergence>(7, {5, 6}), transition(8, 7), jump(9, 8, QStringLiteral("Init"))})
-        << QStringList {QStringLiteral("8: A transition must come after a step, a selection divergence or a simultaneous convergence, not after a selectionConvergence."),
+        << QStringList {QStringLiteral("8: A transition must come after a step, a selection divergence or a simultaneous convergence, not after a selection convergence."),
                QStringLiteral("7: Each branch of a selection convergence must end with a transition, not a step."),
                QStringLiteral("7: Each branch of a selection convergence must end with a transition, not a step."),
                QStringLiteral("7: A selection convergence must lead to a step, not to a transition."),
