@@ -718,6 +718,10 @@ Automatisch gespeichert: %2</translation>
             <source>Errors: %1, warnings: %2</source>
             <translation>Fehler: %1, Warnungen: %2</translation>
         </message>
+        <message>
+            <source>%1, element %2, column %3</source>
+            <translation>%1, Element %2, Spalte %3</translation>
+        </message>
     </context>
     <context>
         <name>iec::app::NewProjectDialog</name>
@@ -3020,6 +3024,10 @@ Automatisch gespeichert: %2</translation>
             <source>Move Down</source>
             <translation>Nach unten</translation>
         </message>
+        <message>
+            <source>BOOL variable</source>
+            <translation>BOOL-Variable</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::sfc::SfcEditor</name>
@@ -3333,6 +3341,10 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>The copied elements are not one chain of steps and transitions: nothing was pasted.</source>
             <translation>Die kopierten Elemente sind keine Kette aus Schritten und Transitionen: Es wurde nichts eingefügt.</translation>
+        </message>
+        <message>
+            <source>'%1' is not a valid action name: use letters, digits and single underscores, starting with a letter.</source>
+            <translation>'%1' ist kein gültiger Aktionsname: Verwenden Sie Buchstaben, Ziffern und einzelne Unterstriche, beginnend mit einem Buchstaben.</translation>
         </message>
     </context>
     <context>
@@ -5190,6 +5202,10 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>This simultaneous convergence needs at least two branches; it joins %1.</source>
             <translation>Diese Parallelzusammenführung braucht mindestens zwei Zweige; sie führt %1 zusammen.</translation>
+        </message>
+        <message>
+            <source>The condition %1 is incomplete: something is missing at its end.</source>
+            <translation>Die Bedingung %1 ist unvollständig: An ihrem Ende fehlt etwas.</translation>
         </message>
     </context>
     <context>

@@ -717,6 +717,10 @@ Autosaved: %2</source>
             <source>Errors: %1, warnings: %2</source>
             <translation>错误：%1，警告：%2</translation>
         </message>
+        <message>
+            <source>%1, element %2, column %3</source>
+            <translation>%1，元素 %2，第 %3 列</translation>
+        </message>
     </context>
     <context>
         <name>iec::app::NewProjectDialog</name>
@@ -3015,6 +3019,10 @@ Autosaved: %2</source>
             <source>Move Down</source>
             <translation>下移</translation>
         </message>
+        <message>
+            <source>BOOL variable</source>
+            <translation>BOOL 变量</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::sfc::SfcEditor</name>
@@ -3328,6 +3336,10 @@ Autosaved: %2</source>
         <message>
             <source>The copied elements are not one chain of steps and transitions: nothing was pasted.</source>
             <translation>复制的元素不是一条由步和转换组成的链：未粘贴任何内容。</translation>
+        </message>
+        <message>
+            <source>'%1' is not a valid action name: use letters, digits and single underscores, starting with a letter.</source>
+            <translation>'%1' 不是有效的动作名称：请使用字母、数字和单个下划线，并以字母开头。</translation>
         </message>
     </context>
     <context>
@@ -5185,6 +5197,10 @@ Autosaved: %2</source>
         <message>
             <source>This simultaneous convergence needs at least two branches; it joins %1.</source>
             <translation>该并行合并至少需要合并两个分支，现在只有 %1 个。</translation>
+        </message>
+        <message>
+            <source>The condition %1 is incomplete: something is missing at its end.</source>
+            <translation>条件 %1 不完整：其末尾缺少内容。</translation>
         </message>
     </context>
     <context>
