@@ -48,11 +48,22 @@ UndoStacks *undoStacksOf(QWidget *window, QObject *owner)
 }
 
 // A tab's text editor: the tab itself (actions, transitions) or the body below the declarations.
+// Windows the document opened (a dialog) are not searched: focus changes while a dialog is being
+// destroyed ask for the text editor, and the dialog's children are half gone by then.
 editors::TextEditorWidget *textWidgetIn(QWidget *document)
 {
+    if (!document)
+        return nullptr;
     if (auto *textWidget = qobject_cast<editors::TextEditorWidget *>(document))
         return textWidget;
-    return document ? document->findChild<editors::TextEditorWidget *>() : nullptr;
+    for (QObject *child : document->children()) {
+        auto *widget = qobject_cast<QWidget *>(child);
+        if (!widget || widget->isWindow())
+            continue;
+        if (auto *textWidget = textWidgetIn(widget))
+            return textWidget;
+    }
+    return nullptr;
 }
 
 // The instance a body's variables belong to online: a program's own name; for a function block

@@ -266,9 +266,7 @@ std::vector<Element> copyAtCursor(const LadderDocument &document, const LdCursor
     LeftPowerRail left;
     left.localId = spare + 1;
     left.addData.push_back(AddDataEntry {kRangeMarker, QStringLiteral("discard"), QStringLiteral("<range/>")});
-    ConnectionPointOut railOut;
-    railOut.formalParameter = QString();
-    left.connectionPointOuts.push_back(railOut);
+    left.connectionPointOuts.push_back(ConnectionPointOut {});
     RightPowerRail right;
     right.localId = spare + 2;
     std::vector<quint64> starts;

@@ -218,7 +218,10 @@ private:
         left.position = {kRailX - kRailWidth, g.rungTop};
         left.width = kRailWidth;
         left.height = g.rungHeight;
-        const QString formal = left.connectionPointOuts.empty() ? QString() : left.connectionPointOuts.front().formalParameter.value_or(QString());
+        // The rail's outputs keep the name they had; "" is no name (what the reader gives back).
+        std::optional<QString> formal = left.connectionPointOuts.empty() ? std::nullopt : left.connectionPointOuts.front().formalParameter;
+        if (formal && formal->isEmpty())
+            formal.reset();
         std::set<double> ys;
         for (const WireRun &run : g.wires)
             if (run.source == m_network.leftRail)
