@@ -3,6 +3,7 @@
 #include <QSet>
 
 #include <algorithm>
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -400,62 +401,109 @@ bool ProjectModel::changeElement(const BodyRef &ref, const Element &element)
 
 bool ProjectModel::replaceElements(const BodyRef &ref, std::vector<Element> target)
 {
+    return swapElements(ref, target);
+}
+
+namespace {
+
+struct ElementDiff {
+    QList<quint64> inserted;
+    QList<quint64> removed;
+    QList<quint64> changed;
+};
+
+bool hasDuplicateIds(const std::vector<Element> &elements)
+{
+    std::vector<quint64> ids;
+    ids.reserve(elements.size());
+    for (const Element &element : elements)
+        ids.push_back(header(element).localId);
+    std::ranges::sort(ids);
+    return std::ranges::adjacent_find(ids) != ids.end();
+}
+
+// What replacing `before` with `after` inserts, removes and changes, by localId; nullopt when
+// `after` holds two elements with one localId. An edit of a large body (an LD body of 10,000
+// elements) touches a few elements somewhere in the middle: the common head and tail (the same
+// ids in the same places) are compared in place, and only the window between them is hashed.
+std::optional<ElementDiff> diffElements(const std::vector<Element> &before, const std::vector<Element> &after)
+{
+    if (hasDuplicateIds(after))
+        return std::nullopt;
+    const auto idAt = [](const std::vector<Element> &list, std::size_t i) { return header(list[i]).localId; };
+    std::size_t head = 0;
+    while (head < before.size() && head < after.size() && idAt(before, head) == idAt(after, head))
+        ++head;
+    std::size_t tail = 0;
+    while (tail < before.size() - head && tail < after.size() - head
+        && idAt(before, before.size() - 1 - tail) == idAt(after, after.size() - 1 - tail))
+        ++tail;
+    const std::size_t beforeEnd = before.size() - tail;
+    const std::size_t afterEnd = after.size() - tail;
+
+    ElementDiff diff;
+    for (std::size_t i = 0; i < head; ++i)
+        if (!(before[i] == after[i]))
+            diff.changed.append(idAt(after, i));
+    QHash<quint64, const Element *> window;
+    window.reserve(qsizetype(beforeEnd - head));
+    for (std::size_t i = head; i < beforeEnd; ++i)
+        window.insert(idAt(before, i), &before[i]);
+    QSet<quint64> kept;
+    for (std::size_t i = head; i < afterEnd; ++i) {
+        const quint64 localId = idAt(after, i);
+        kept.insert(localId);
+        const auto it = window.constFind(localId);
+        if (it == window.cend())
+            diff.inserted.append(localId);
+        else if (!(*it.value() == after[i]))
+            diff.changed.append(localId);
+    }
+    for (std::size_t i = 0; i < tail; ++i)
+        if (!(before[beforeEnd + i] == after[afterEnd + i]))
+            diff.changed.append(idAt(after, afterEnd + i));
+    for (std::size_t i = head; i < beforeEnd; ++i)
+        if (!kept.contains(idAt(before, i)))
+            diff.removed.append(idAt(before, i));
+    // Survivors that changed places count as changed (the order is the file's, and FBD's
+    // evaluation order where no executionOrderId says otherwise). Head and tail kept theirs.
+    std::vector<quint64> survivorsBefore;
+    std::vector<quint64> survivorsAfter;
+    for (std::size_t i = head; i < beforeEnd; ++i)
+        if (kept.contains(idAt(before, i)))
+            survivorsBefore.push_back(idAt(before, i));
+    for (std::size_t i = head; i < afterEnd; ++i)
+        if (window.contains(idAt(after, i)))
+            survivorsAfter.push_back(idAt(after, i));
+    if (survivorsBefore != survivorsAfter) {
+        const QSet<quint64> alreadyChanged(diff.changed.begin(), diff.changed.end());
+        for (std::size_t i = 0; i < survivorsAfter.size(); ++i) {
+            if (survivorsAfter[i] != survivorsBefore[i] && !alreadyChanged.contains(survivorsAfter[i]))
+                diff.changed.append(survivorsAfter[i]);
+        }
+    }
+    return diff;
+}
+
+} // namespace
+
+bool ProjectModel::swapElements(const BodyRef &ref, std::vector<Element> &target)
+{
     Body *body = findMutableBody(ref);
     if (!body || !body->isGraphical())
         return false;
     std::vector<Element> &elements = *body->elements();
-    std::unordered_map<quint64, const Element *> current;
-    current.reserve(elements.size());
-    for (const Element &element : elements)
-        current.emplace(header(element).localId, &element);
-    std::unordered_set<quint64> kept;
-    kept.reserve(target.size());
-    QList<quint64> inserted;
-    QList<quint64> changed;
-    for (const Element &element : target) {
-        const quint64 localId = header(element).localId;
-        if (!kept.insert(localId).second)
-            return false; // two elements with one localId
-        const auto it = current.find(localId);
-        if (it == current.end())
-            inserted.append(localId);
-        else if (!(*it->second == element))
-            changed.append(localId);
-    }
-    QList<quint64> removed;
-    for (const Element &element : elements) {
-        if (!kept.contains(header(element).localId))
-            removed.append(header(element).localId);
-    }
-    // Survivors that changed places count as changed (the order is the file's, and FBD's
-    // evaluation order where no executionOrderId says otherwise).
-    std::vector<quint64> survivorsBefore;
-    std::vector<quint64> survivorsAfter;
-    for (const Element &element : elements) {
-        if (kept.contains(header(element).localId))
-            survivorsBefore.push_back(header(element).localId);
-    }
-    for (const Element &element : target) {
-        if (current.contains(header(element).localId))
-            survivorsAfter.push_back(header(element).localId);
-    }
-    if (survivorsBefore != survivorsAfter) {
-        const QSet<quint64> alreadyChanged(changed.begin(), changed.end());
-        for (std::size_t i = 0; i < survivorsAfter.size(); ++i) {
-            if (survivorsAfter[i] != survivorsBefore[i] && !alreadyChanged.contains(survivorsAfter[i]))
-                changed.append(survivorsAfter[i]);
-        }
-    }
-    if (inserted.isEmpty() && removed.isEmpty() && changed.isEmpty())
+    const std::optional<ElementDiff> diff = diffElements(elements, target);
+    if (!diff || (diff->inserted.isEmpty() && diff->removed.isEmpty() && diff->changed.isEmpty()))
         return false;
-    elements = std::move(target);
+    std::swap(elements, target);
     touch();
-    if (!removed.isEmpty())
-        Q_EMIT elementsRemoved(ref, removed);
-    if (!inserted.isEmpty())
-        Q_EMIT elementsInserted(ref, inserted);
-    if (!changed.isEmpty())
-        Q_EMIT elementsChanged(ref, changed);
+    if (!diff->removed.isEmpty())
+        Q_EMIT elementsRemoved(ref, diff->removed);
+    if (!diff->inserted.isEmpty())
+        Q_EMIT elementsInserted(ref, diff->inserted);
+    if (!diff->changed.isEmpty())
+        Q_EMIT elementsChanged(ref, diff->changed);
     return true;
 }
 

@@ -85,6 +85,9 @@ public:
     // localId concerned, in that order. `target` is taken as it is (its wires too); its localIds
     // must be distinct (false and no change otherwise).
     bool replaceElements(const BodyRef &ref, std::vector<Element> target);
+    // The same, giving the elements replaced back in `elements` (an undo command keeps them
+    // without copying a large body). Unchanged when it returns false.
+    bool swapElements(const BodyRef &ref, std::vector<Element> &elements);
     // Adds a connection to input point `pin` of `target` (pins in inputPoints() order).
     bool connect(const BodyRef &ref, quint64 target, int pin, const Connection &connection);
     // Removes the connection from `source` (and its formal parameter) on that pin.

@@ -4,6 +4,7 @@
 #include "editors/common/diagramscene.h"
 #include "editors/common/diagramview.h"
 #include "editors/common/overlaymapper.h"
+#include "editors/text/calltext.h"
 #include "model/projectmodel.h"
 #include "model/undo/bodyelementscommand.h"
 #include "model/undo/elementcommands.h"
@@ -12,6 +13,8 @@
 #include <QClipboard>
 #include <QGuiApplication>
 #include <QContextMenuEvent>
+#include <QDropEvent>
+#include <QMimeData>
 #include <QCoreApplication>
 #include <QFileDialog>
 #include <QKeyEvent>
@@ -44,6 +47,7 @@ DiagramEditor::DiagramEditor(model::ProjectModel &model, model::BodyRef ref, QUn
     m_view->setAlignment(Qt::AlignLeft | Qt::AlignTop);
     m_view->installEventFilter(this);
     m_view->viewport()->installEventFilter(this);
+    m_view->viewport()->setAcceptDrops(true); // boxes from the library pane (acceptsPouDrops)
     setGridSize(10);
     m_toolBar = new QToolBar;
     m_toolBar->setObjectName(QStringLiteral("diagramToolBar"));
@@ -66,6 +70,13 @@ DiagramEditor::DiagramEditor(model::ProjectModel &model, model::BodyRef ref, QUn
     connect(m_scene, &DiagramScene::elementShiftClicked, this, &DiagramEditor::extendSelection);
     connect(m_scene, &DiagramScene::rebuilt, this, &DiagramEditor::onSceneRefreshed);
     connect(m_scene, &DiagramScene::updated, this, &DiagramEditor::onSceneRefreshed);
+    // An overlay may paint only what is on screen (LD does): what scrolls into view gets the
+    // values too, also while the program is halted and no new snapshot comes.
+    for (QScrollBar *bar : {m_view->horizontalScrollBar(), m_view->verticalScrollBar()})
+        connect(bar, &QScrollBar::valueChanged, this, [this] {
+            if (m_snapshot && m_overlay)
+                m_overlay->apply(*m_scene, *m_snapshot, m_onlineInstance);
+        });
     connect(m_scene, &QGraphicsScene::selectionChanged, this, [this] {
         // A message about the last command no longer fits once the user looks elsewhere.
         if (!m_online)
@@ -299,16 +310,28 @@ EditOutcome DiagramEditor::prepareEdit(const ElementEdit &edit, std::vector<mode
 
 bool DiagramEditor::applyEdit(const QString &undoText, const ElementEdit &edit)
 {
+    return applyRewrite(undoText, [&](const std::vector<model::Element> &, std::vector<model::Element> &after) {
+        return prepareEdit(edit, after);
+    });
+}
+
+bool DiagramEditor::applyRewrite(const QString &undoText, const ElementRewrite &rewrite)
+{
     if (refuseWhileOnline())
         return false;
+    const std::vector<model::Element> *shown = m_scene->shownElements();
+    if (!shown) {
+        showError(tr("This body cannot be edited here."));
+        return false;
+    }
     std::vector<model::Element> after;
-    const EditOutcome outcome = prepareEdit(edit, after);
+    const EditOutcome outcome = rewrite(*shown, after);
     if (!outcome.ok()) {
         showError(outcome.error);
         return false;
     }
-    const model::Body *body = m_model.body(m_ref);
-    if (body && body->elements() && after != *body->elements())
+    // An edit that changes nothing pushes nothing (the command makes itself obsolete).
+    if (const model::Body *body = m_model.body(m_ref); body && body->elements())
         m_undoStack->push(new model::SetBodyElementsCommand(m_model, m_ref, std::move(after), undoText));
     showMessage(QString());
     m_scene->rebuildIfDirty();
@@ -427,7 +450,39 @@ bool DiagramEditor::eventFilter(QObject *watched, QEvent *event)
     if ((watched == m_view || watched == m_view->viewport()) && event->type() == QEvent::KeyPress
         && handleKey(static_cast<QKeyEvent *>(event)))
         return true;
+    if (watched == m_view->viewport() && handlePouDrop(event))
+        return true;
     return QWidget::eventFilter(watched, event);
+}
+
+bool DiagramEditor::handlePouDrop(QEvent *event)
+{
+    const QEvent::Type type = event->type();
+    if (type != QEvent::DragEnter && type != QEvent::DragMove && type != QEvent::Drop)
+        return false;
+    auto *drop = static_cast<QDropEvent *>(event);
+    const QString mimeType = QString::fromLatin1(kPouMimeType);
+    if (!acceptsPouDrops() || !drop->mimeData()->hasFormat(mimeType))
+        return false;
+    if (m_online) { // refused with the message every edit gives while online
+        if (type == QEvent::Drop)
+            refuseWhileOnline();
+        drop->ignore();
+        return true;
+    }
+    drop->setDropAction(Qt::CopyAction);
+    drop->accept();
+    if (type == QEvent::Drop) {
+        const QString typeName = QString::fromUtf8(drop->mimeData()->data(mimeType));
+        setFocus();
+        dropPou(typeName, m_view->mapToScene(drop->position().toPoint()));
+    }
+    return true;
+}
+
+bool DiagramEditor::dropPou(const QString &, QPointF)
+{
+    return false;
 }
 
 QPoint DiagramEditor::selectionMenuPosition() const

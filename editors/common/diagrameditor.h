@@ -39,6 +39,9 @@ class OverlayMapper;
 
 // An edit of the elements shown (a copy): changes them and says what to select, or refuses.
 using ElementEdit = std::function<EditOutcome(std::vector<model::Element> &elements)>;
+// An edit that builds the body's elements after the gesture itself from the shown ones (an
+// editor that keeps its own structure of them, as LD its networks, would only throw a copy away).
+using ElementRewrite = std::function<EditOutcome(const std::vector<model::Element> &shown, std::vector<model::Element> &after)>;
 
 // The base of every graphical editor (LD, FBD, CFC, SFC): the scene and view of one body, a tool
 // bar, a message line, and everything the languages share, so that a language only adds its
@@ -111,6 +114,8 @@ public:
     // one SetBodyElementsCommand named `undoText` and selects what the edit says. Refused while
     // online; a refusal of the edit is shown. Returns whether the edit was done.
     bool applyEdit(const QString &undoText, const ElementEdit &edit);
+    // The same path for an edit that writes the elements after it without a copy of the shown ones.
+    bool applyRewrite(const QString &undoText, const ElementRewrite &rewrite);
     // The same edit, prepared without pushing: the body's elements after it (for a gesture that
     // also does something else, e.g. adds an action). The outcome's error is not shown.
     EditOutcome prepareEdit(const ElementEdit &edit, std::vector<model::Element> &bodyElements) const;
@@ -187,6 +192,10 @@ protected:
     // The body's elements once the shown ones are `shown` (SFC: a macro step's inside put back
     // into the top level). Default: the shown ones are the body's.
     [[nodiscard]] virtual std::vector<model::Element> bodyElementsFor(std::vector<model::Element> shown) const;
+    // A function or function block dragged from the library pane (kPouMimeType) and dropped at
+    // `scenePos`: the language inserts its box there. Default: such drops are not accepted.
+    [[nodiscard]] virtual bool acceptsPouDrops() const { return false; }
+    virtual bool dropPou(const QString &typeName, QPointF scenePos);
     // Texts the subclass set itself (labels), on LanguageChange; the actions are done already.
     virtual void retranslate() { }
     // After the scene was rebuilt or updated: online styles and diagnostics are applied again by
@@ -210,6 +219,7 @@ private:
     void runAction(const ActionEntry &entry);
     const ActionEntry *entryFor(const QString &id) const;
     bool handleKey(QKeyEvent *event);
+    bool handlePouDrop(QEvent *event);
     void openContextMenu(QPoint globalPos);
     [[nodiscard]] QPoint selectionMenuPosition() const;
     void onSceneRefreshed();

@@ -31,6 +31,8 @@ public:
     }
     // Whether it needs the chart state of the instance (active steps: SFC).
     [[nodiscard]] virtual bool wantsChartState() const { return false; }
+    // Shows the snapshot on the scene's items. It may show it on the part a view shows only: the
+    // editor applies the last snapshot again when the view scrolls.
     virtual void apply(DiagramScene &scene, const interp::RuntimeSnapshot &snapshot, const QString &instance) = 0;
     virtual void clear(DiagramScene &scene) = 0;
 };

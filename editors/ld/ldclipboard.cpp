@@ -114,10 +114,10 @@ LdEditResult pasteNetworks(LadderDocument &document, const LdCursor &cursor, Lad
 {
     const int after = document.networks.empty() ? -1 : std::clamp(cursor.network, 0, int(document.networks.size()) - 1);
     const std::unordered_map<quint64, quint64> map = renumberInto(document, pasted.elements);
-    int fileIndex = fileIndexAfter(document, after);
-    for (Element &e : pasted.elements)
-        document.elements.insert(document.elements.begin() + fileIndex++, std::move(e));
-    document.reindex();
+    const int firstIndex = fileIndexAfter(document, after);
+    document.elements.insert(document.elements.begin() + firstIndex, std::make_move_iterator(pasted.elements.begin()),
+        std::make_move_iterator(pasted.elements.end()));
+    document.reindexFrom(std::size_t(firstIndex));
     int at = after + 1;
     for (LdNetwork network : pasted.networks) {
         for (quint64 &id : network.members)
@@ -150,12 +150,12 @@ LdEditResult pasteRange(LadderDocument &document, const LdCursor &cursor, Ladder
     const std::unordered_map<quint64, quint64> map = renumberInto(document, pasted.elements);
     RungNode nodes = source.rung;
     renumberNode(nodes, map);
-    int fileIndex = fileIndexAfter(document, cursor.network);
-    for (Element &e : pasted.elements) {
+    const int firstIndex = fileIndexAfter(document, cursor.network);
+    for (const Element &e : pasted.elements)
         network.members.push_back(header(e).localId);
-        document.elements.insert(document.elements.begin() + fileIndex++, std::move(e));
-    }
-    document.reindex();
+    document.elements.insert(document.elements.begin() + firstIndex, std::make_move_iterator(pasted.elements.begin()),
+        std::make_move_iterator(pasted.elements.end()));
+    document.reindexFrom(std::size_t(firstIndex));
     for (const auto &[box, pins] : pasted.boxPins)
         document.boxPins[mapped(map, box)] = pins;
     const quint64 first = rungElements(nodes).empty() ? 0 : rungElements(nodes).front();

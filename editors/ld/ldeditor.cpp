@@ -78,10 +78,15 @@ bool LdEditor::edit(const QString &undoText, const std::function<LdEditResult(La
     scene()->rebuildIfDirty();
     const LdCursor at = m_cursor;
     std::optional<LdCursor> next;
-    const bool ok = applyEdit(undoText, [&](std::vector<Element> &elements) -> EditOutcome {
+    const bool ok = applyRewrite(undoText, [&](const std::vector<Element> &elements, std::vector<Element> &after) -> EditOutcome {
         const LadderDocument &shown = ldPolicy().document();
         const bool current = shown.elements.size() == elements.size(); // the scene is up to date
-        LadderDocument doc = current ? shown : readLadder(elements, ldPolicy().layoutGenerated());
+        LadderDocument doc;
+        doc.elements.reserve(elements.size() + 64); // an edit adds a few: no reallocation of a large body
+        if (current)
+            doc = shown; // into the reserved room (a conditional expression would copy it twice)
+        else
+            doc = readLadder(elements, ldPolicy().layoutGenerated());
         const LdEditResult result = change(doc, at);
         if (!result.ok())
             return {result.error, {}};
@@ -89,7 +94,7 @@ bool LdEditor::edit(const QString &undoText, const std::function<LdEditResult(La
             writeLadder(doc, shown, ldPolicy().layout()); // untouched networks only move
         else
             writeLadder(doc);
-        elements = std::move(doc.elements);
+        after = std::move(doc.elements);
         next = result.cursor;
         m_cursor = result.cursor; // the scene refresh draws it
         return {{}, result.cursor.kind == LdCursor::Kind::Element ? result.cursor.elements : std::vector<quint64> {}};
@@ -117,9 +122,7 @@ void LdEditor::applyCursor()
     if (m_cursor.kind == LdCursor::Kind::Element)
         selected = QList<quint64>(m_cursor.elements.begin(), m_cursor.elements.end());
     select(selected);
-    for (QGraphicsItem *item : scene()->items())
-        if (auto *network = qgraphicsitem_cast<NetworkItem *>(item))
-            network->setCurrent(m_cursor.kind == LdCursor::Kind::Network && network->number() == m_cursor.network + 1);
+    ldPolicy().setCurrentNetwork(m_cursor.kind == LdCursor::Kind::Network ? m_cursor.network : -1);
     QRectF focus;
     if (m_cursor.kind == LdCursor::Kind::Wire && m_cursor.network < int(layout.size())) {
         for (const WirePoint &point : layout[std::size_t(m_cursor.network)].wirePoints) {
@@ -210,6 +213,22 @@ void LdEditor::clickAt(QPointF scenePos)
         setCursor(best ? LdCursor::atWire(int(n), *best) : LdCursor::atNetwork(int(n)));
         return;
     }
+}
+
+bool LdEditor::dropPou(const QString &typeName, QPointF scenePos)
+{
+    // The cursor goes where a click there puts it (the element, else the wire point or the
+    // network; below the last network, the last one), and the box is inserted as with F.
+    QGraphicsItem *hit = scene()->itemAt(scenePos, QTransform());
+    DiagramItem *item = hit ? diagramItemOf(hit) : nullptr;
+    const std::vector<NetworkGeometry> &layout = ldPolicy().layout();
+    if (item && item->flags().testFlag(QGraphicsItem::ItemIsSelectable))
+        setCursor(LdCursor::atElement(document().networkOf(item->localId()), item->localId()));
+    else if (!layout.empty() && scenePos.y() >= layout.back().top + layout.back().height)
+        setCursor(LdCursor::atNetwork(int(layout.size()) - 1));
+    else
+        clickAt(scenePos);
+    return insertBox(typeName, false);
 }
 
 bool LdEditor::eventFilter(QObject *watched, QEvent *event)

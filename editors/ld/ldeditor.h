@@ -61,6 +61,8 @@ protected:
     void activateElement(quint64 localId, QPointF scenePos) override;
     void extendSelection(quint64 localId) override;
     void sceneRefreshed() override;
+    [[nodiscard]] bool acceptsPouDrops() const override { return true; }
+    bool dropPou(const QString &typeName, QPointF scenePos) override;
     bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:

@@ -56,25 +56,17 @@ void placeInFile(LadderDocument &document, int network, quint64 id)
     const int from = document.indexOf(id);
     if (from < 0 || target == from || target == from + 1)
         return;
-    Element element = std::move(document.elements[std::size_t(from)]);
-    document.elements.erase(document.elements.begin() + from);
-    if (target > from)
-        --target;
-    document.elements.insert(document.elements.begin() + target, std::move(element));
-    document.reindex();
+    document.moveElement(from, target > from ? target - 1 : target);
 }
 
 // Moves an element right before another in the file (a box's variables before the box).
 void placeBefore(LadderDocument &document, quint64 id, quint64 anchor)
 {
     const int from = document.indexOf(id);
-    if (from < 0 || document.indexOf(anchor) < 0)
+    const int to = document.indexOf(anchor);
+    if (from < 0 || to < 0)
         return;
-    Element element = std::move(document.elements[std::size_t(from)]);
-    document.elements.erase(document.elements.begin() + from);
-    document.reindex();
-    document.elements.insert(document.elements.begin() + document.indexOf(anchor), std::move(element));
-    document.reindex();
+    document.moveElement(from, from < to ? to - 1 : to);
 }
 
 quint64 addMember(LadderDocument &document, int network, Element element)
@@ -348,10 +340,7 @@ LdEditResult setNetworkLabel(LadderDocument &document, int index, const QString 
         element.label = label;
         network.label = addMember(document, index, std::move(element));
         const int first = document.indexOf(network.members.front());
-        Element moved = std::move(document.elements[std::size_t(document.indexOf(network.label))]);
-        document.elements.erase(document.elements.begin() + document.indexOf(network.label));
-        document.elements.insert(document.elements.begin() + std::max(0, first), std::move(moved));
-        document.reindex();
+        document.moveElement(document.indexOf(network.label), std::max(0, first));
     } else
         std::get<Label>(*document.element(network.label)).label = label;
     return {{}, LdCursor::atNetwork(index)};

@@ -3,6 +3,7 @@
 #include "model/body.h"
 #include "model/element.h"
 
+#include <QHash>
 #include <QString>
 
 #include <unordered_map>
@@ -72,15 +73,22 @@ struct LadderDocument {
     // Gives the element a fresh localId and inserts it at `index` (-1: the end).
     quint64 add(model::Element element, int index = -1);
     void remove(const std::vector<quint64> &localIds);
+    // Moves the element at `from` so that it ends up at index `to` of `elements`.
+    void moveElement(int from, int to);
     // The network an element belongs to, -1 for none.
     [[nodiscard]] int networkOf(quint64 localId) const;
     // The rung pins of every box in a rung (read from its wires, or set by the edit that made it).
     std::unordered_map<quint64, RungPins> boxPins;
     [[nodiscard]] RungPins pinsOf(quint64 boxId) const;
     void reindex(); // after `elements` changed by hand
+    // After the elements from `first` on changed places or were inserted (cheaper than reindex on
+    // a large body: the ids before `first` keep their entries).
+    void reindexFrom(std::size_t first, std::size_t last = std::size_t(-1));
 
 private:
-    std::unordered_map<quint64, std::size_t> m_index;
+    // A QHash, not a std::unordered_map: the editor copies the document on every command, and a
+    // QHash copies its buckets in a few blocks instead of one allocation per element.
+    QHash<quint64, std::size_t> m_index;
 };
 
 // Our own addData on the rails of a network the editor laid out: such a rail belongs to one

@@ -6,7 +6,10 @@
 #include "editors/text/onlinevalues.h"
 #include "interpreter/runtime/snapshot.h"
 
+#include <QGraphicsView>
 #include <QRegularExpression>
+
+#include <algorithm>
 
 namespace iec::editors::ld {
 
@@ -81,6 +84,27 @@ QStringList LdOverlayMapper::names(const DiagramScene &, const QString &instance
     return names;
 }
 
+namespace {
+
+// The networks [first, last) that any view of the scene shows; all of them when no view does
+// (an export). Networks are laid out top to bottom.
+std::pair<std::size_t, std::size_t> visibleNetworks(const DiagramScene &scene, const std::vector<NetworkGeometry> &layout)
+{
+    QRectF visible;
+    for (const QGraphicsView *view : scene.views())
+        visible |= view->mapToScene(view->viewport()->rect()).boundingRect();
+    if (visible.isNull())
+        return {0, layout.size()};
+    const auto below = [](const NetworkGeometry &g, double y) { return g.top + g.height < y; };
+    const auto first = std::lower_bound(layout.begin(), layout.end(), visible.top(), below);
+    auto last = first;
+    while (last != layout.end() && last->top <= visible.bottom())
+        ++last;
+    return {std::size_t(first - layout.begin()), std::size_t(last - layout.begin())};
+}
+
+} // namespace
+
 void LdOverlayMapper::apply(DiagramScene &scene, const interp::RuntimeSnapshot &snapshot, const QString &instance)
 {
     // Edges show only when stepping one cycle at a time: then the last view is the cycle before.
@@ -90,11 +114,19 @@ void LdOverlayMapper::apply(DiagramScene &scene, const interp::RuntimeSnapshot &
         m_values.now = snapshot.values;
         m_lastCycle = snapshot.cycle;
     }
+    // Only what is on screen: a body of 1,000 networks shows a few of them, and the editor applies
+    // the snapshot again when the view scrolls.
+    const auto [first, last] = visibleNetworks(scene, m_policy.layout());
+    for (std::size_t n = first; n < last && n < m_policy.networkItems().size(); ++n)
+        applyToNetwork(scene, n, snapshot, instance);
+}
+
+void LdOverlayMapper::applyToNetwork(DiagramScene &scene, std::size_t index, const interp::RuntimeSnapshot &snapshot, const QString &instance)
+{
     const LadderDocument &document = m_policy.document();
+    const LdNetwork &network = document.networks[index];
     std::unordered_map<quint64, bool> wireSources; // element -> it passes power on
-    for (const LdNetwork &network : document.networks) {
-        if (network.freehand)
-            continue;
+    if (!network.freehand) {
         const PowerFlow flow = evaluateRung(network.rung, [&](quint64 id, bool in) -> std::optional<bool> {
             const Element *e = document.element(id);
             if (const auto *contact = std::get_if<Contact>(e))
@@ -129,11 +161,16 @@ void LdOverlayMapper::apply(DiagramScene &scene, const interp::RuntimeSnapshot &
                 item->setActive(in);
         }
     }
-    for (QGraphicsItem *item : scene.items()) {
+    const LdPolicy::NetworkItems &items = m_policy.networkItems()[index];
+    for (QGraphicsItem *item : items.wires) {
         if (auto *wire = qgraphicsitem_cast<WireItem *>(item)) {
             const auto it = wireSources.find(wire->source());
             wire->setPowered(it != wireSources.end() && it->second);
-        } else if (auto *box = dynamic_cast<BoxItem *>(item)) {
+        }
+    }
+    for (quint64 id : items.elements) {
+        DiagramItem *item = scene.itemFor(id);
+        if (auto *box = dynamic_cast<BoxItem *>(item)) {
             QHash<QString, QString> values;
             const auto names = pinNames(std::get<Block>(box->element()), instance);
             for (auto it = names.begin(); it != names.end(); ++it)

@@ -25,6 +25,8 @@ public:
     [[nodiscard]] QString value(const QString &name) const { return m_values.now.value(name); }
 
 private:
+    void applyToNetwork(DiagramScene &scene, std::size_t index, const interp::RuntimeSnapshot &snapshot, const QString &instance);
+
     const LdPolicy &m_policy;
     OnlineValues m_values;
     int m_lastCycle = -1;

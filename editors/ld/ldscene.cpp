@@ -138,6 +138,7 @@ const std::vector<Element> *LdPolicy::elements(const ProjectModel &model, const 
 
 void LdPolicy::populate(DiagramScene &scene, const std::vector<Element> &elements)
 {
+    m_previous.reset();
     m_document = readLadder(elements, m_layoutGenerated);
     m_layout = layoutLadder(m_document);
     m_items.clear();
@@ -146,9 +147,18 @@ void LdPolicy::populate(DiagramScene &scene, const std::vector<Element> &element
     m_rebuilt = int(m_document.networks.size());
 }
 
+LadderDocument LdPolicy::read(const std::vector<Element> &elements)
+{
+    // Undo and redo bring back the elements of the document before: reading is deterministic, so
+    // that document is the one reading them again would give (a large body reads in milliseconds).
+    if (m_previous && m_previousLayoutGenerated == m_layoutGenerated && m_previous->elements == elements)
+        return *std::exchange(m_previous, std::nullopt);
+    return readLadder(elements, m_layoutGenerated);
+}
+
 bool LdPolicy::update(DiagramScene &scene, const std::vector<Element> &elements, const ElementChanges &changes)
 {
-    LadderDocument document = readLadder(elements, m_layoutGenerated);
+    LadderDocument document = read(elements);
     std::unordered_map<quint64, std::size_t> oldByIdentity;
     for (std::size_t n = 0; n < m_document.networks.size(); ++n)
         oldByIdentity.emplace(identityOf(m_document.networks[n]), n);
@@ -180,7 +190,7 @@ bool LdPolicy::update(DiagramScene &scene, const std::vector<Element> &elements,
         if (old != oldByIdentity.end() && !reused[old->second] && unchanged(m_document.networks[n], document.networks[old->second])) {
             reused[old->second] = true;
             const double dy = top - m_layout[old->second].top;
-            layout.push_back(shifted(m_layout[old->second], dy));
+            layout.push_back(shifted(std::move(m_layout[old->second]), dy)); // m_layout is replaced below
             items[n] = std::move(m_items[old->second]);
             moveItems(scene, items[n], dy);
         } else {
@@ -199,7 +209,17 @@ bool LdPolicy::update(DiagramScene &scene, const std::vector<Element> &elements,
         items[n].band->setNumber(int(n) + 1);
     m_items = std::move(items);
     m_rebuilt = int(fresh.size());
+    m_previous = std::move(document);
+    m_previousLayoutGenerated = m_layoutGenerated;
     return true;
+}
+
+void LdPolicy::setCurrentNetwork(int index)
+{
+    // Every band, not only the last current one: a rebuild or update made new bands.
+    for (std::size_t n = 0; n < m_items.size(); ++n)
+        if (m_items[n].band)
+            m_items[n].band->setCurrent(int(n) == index);
 }
 
 void LdPolicy::removeItems(DiagramScene &scene, NetworkItems &items)

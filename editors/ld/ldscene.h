@@ -4,6 +4,8 @@
 #include "editors/ld/ldgeometry.h"
 #include "editors/ld/ldnetwork.h"
 
+#include <optional>
+
 // The LD policy of the shared scene: the body read as networks, laid out automatically, one item
 // per element, the rung's wires, and each network's band with its number, label and comment.
 // Rung networks are always drawn in the editor's layout (the model gets it with the first edit);
@@ -28,16 +30,22 @@ public:
     [[nodiscard]] const LadderDocument &document() const { return m_document; }
     [[nodiscard]] const std::vector<NetworkGeometry> &layout() const { return m_layout; }
     [[nodiscard]] bool layoutGenerated() const { return m_layoutGenerated; }
+    // Marks network `index` (0-based, -1 for none) as the cursor's; the others unmarked.
+    void setCurrentNetwork(int index);
     // How many networks the last update built again (for tests and the bench).
     [[nodiscard]] int networksRebuiltLastTime() const { return m_rebuilt; }
 
-private:
+    // The items of one network.
     struct NetworkItems {
         NetworkItem *band = nullptr;
         std::vector<quint64> elements;     // indexed in the scene
         std::vector<QGraphicsItem *> wires; // plain items
     };
+    [[nodiscard]] const std::vector<NetworkItems> &networkItems() const { return m_items; }
 
+private:
+
+    LadderDocument read(const std::vector<model::Element> &elements);
     NetworkItems addNetwork(DiagramScene &scene, std::size_t index);
     void addFreehandWires(DiagramScene &scene, const LdNetwork &network, const NetworkGeometry &g, NetworkItems &items);
     static void removeItems(DiagramScene &scene, NetworkItems &items);
@@ -45,6 +53,8 @@ private:
 
     mutable bool m_layoutGenerated = false;
     LadderDocument m_document;
+    std::optional<LadderDocument> m_previous; // the document the last update replaced
+    bool m_previousLayoutGenerated = false;
     std::vector<NetworkGeometry> m_layout;
     std::vector<NetworkItems> m_items;
     int m_rebuilt = 0;

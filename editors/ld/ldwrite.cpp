@@ -365,14 +365,11 @@ std::vector<NetworkGeometry> writeLadder(LadderDocument &document)
     return result;
 }
 
-std::vector<NetworkGeometry> writeLadder(LadderDocument &document, const LadderDocument &before,
-    const std::vector<NetworkGeometry> &beforeLayout)
+void writeLadder(LadderDocument &document, const LadderDocument &before, const std::vector<NetworkGeometry> &beforeLayout)
 {
     std::unordered_map<quint64, std::size_t> beforeByIdentity;
     for (std::size_t n = 0; n < before.networks.size() && n < beforeLayout.size(); ++n)
         beforeByIdentity.emplace(identityOf(before.networks[n]), n);
-    std::vector<NetworkGeometry> result;
-    result.reserve(document.networks.size());
     std::set<quint64> railsTaken;
     double top = 0;
     for (std::size_t n = 0; n < document.networks.size(); ++n) {
@@ -383,14 +380,12 @@ std::vector<NetworkGeometry> writeLadder(LadderDocument &document, const LadderD
             const double dy = top - beforeLayout[then->second].top;
             if (dy != 0)
                 moveNetwork(document, network, dy);
-            result.push_back(shifted(beforeLayout[then->second], dy));
             railsTaken.insert(network.leftRail);
             railsTaken.insert(network.rightRail);
+            top += beforeLayout[then->second].height;
         } else
-            result.push_back(NetworkWriter(document, n).write(top, railsTaken));
-        top += result.back().height;
+            top += NetworkWriter(document, n).write(top, railsTaken).height;
     }
-    return result;
 }
 
 } // namespace iec::editors::ld

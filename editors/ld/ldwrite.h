@@ -15,9 +15,9 @@ std::vector<NetworkGeometry> writeLadder(LadderDocument &document);
 
 // The same after an edit of `before` (whose layout is `beforeLayout`): a network the edit did not
 // touch, written already, keeps its layout and only moves (its elements' positions shift), so a
-// command in a long body lays out only what it changed.
-std::vector<NetworkGeometry> writeLadder(LadderDocument &document, const LadderDocument &before,
-    const std::vector<NetworkGeometry> &beforeLayout);
+// command in a long body lays out only what it changed. (The scene lays the result out again,
+// reusing the same unchanged networks, so no layout is returned.)
+void writeLadder(LadderDocument &document, const LadderDocument &before, const std::vector<NetworkGeometry> &beforeLayout);
 
 // The layout of a network moved down by dy.
 NetworkGeometry shifted(NetworkGeometry g, double dy);

@@ -6,21 +6,24 @@ SetBodyElementsCommand::SetBodyElementsCommand(
     ProjectModel &model, BodyRef ref, std::vector<Element> after, const QString &text, QUndoCommand *parent)
     : ModelCommand(model, parent)
     , m_ref(std::move(ref))
-    , m_after(std::move(after))
+    , m_other(std::move(after))
 {
-    if (const Body *body = model.body(m_ref); body && body->elements())
-        m_before = *body->elements();
     setText(text);
 }
 
 void SetBodyElementsCommand::redo()
 {
-    m_model.replaceElements(m_ref, m_after);
+    if (m_applied)
+        return;
+    m_applied = m_model.swapElements(m_ref, m_other);
+    if (!m_applied)
+        setObsolete(true); // nothing to undo: QUndoStack::push drops the command
 }
 
 void SetBodyElementsCommand::undo()
 {
-    m_model.replaceElements(m_ref, m_before);
+    if (m_applied && m_model.swapElements(m_ref, m_other))
+        m_applied = false;
 }
 
 } // namespace iec::model

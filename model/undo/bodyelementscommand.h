@@ -8,9 +8,10 @@ namespace iec::model {
 
 // Replaces every element of a graphical body with a new list in one step: what a structured edit
 // of any graphical editor produces (an SFC command, an LD network edit, a paste, a layout). The
-// command keeps the whole list before and after and applies it with
-// ProjectModel::replaceElements (linear time, one signal per kind of change), so undo restores
-// the exact elements in their exact order.
+// command keeps the list that is not in the body (the one after before redo, the one before
+// after it) and swaps it with the body's (ProjectModel::swapElements: linear time, one signal per
+// kind of change, no copy of a large body), so undo restores the exact elements in their exact
+// order. A command that changes nothing makes itself obsolete, and QUndoStack drops it.
 class SetBodyElementsCommand : public ModelCommand
 {
 public:
@@ -22,8 +23,8 @@ public:
 
 private:
     BodyRef m_ref;
-    std::vector<Element> m_before;
-    std::vector<Element> m_after;
+    std::vector<Element> m_other; // the elements that are not in the body now
+    bool m_applied = false;       // whether m_other holds the elements before the command
 };
 
 } // namespace iec::model

@@ -8,7 +8,10 @@
 #include "editors/common/diagramview.h"
 #include "editors/common/inplaceeditor.h"
 #include "editors/ld/ldeditor.h"
+#include "editors/text/calltext.h"
+#include "editors/ld/ldedits.h"
 #include "editors/ld/ldscene.h"
+#include "editors/ld/ldwrite.h"
 #include "interpreter/compiler/compiler.h"
 #include "interpreter/frontend/iecreader.h"
 #include "interpreter/frontend/projectsource.h"
@@ -20,6 +23,9 @@
 
 #include <QAction>
 #include <QDir>
+#include <QDropEvent>
+#include <QMimeData>
+#include <QScrollBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -360,6 +366,92 @@ private Q_SLOTS:
         QVERIFY(powered >= 4);
         m_editor->setOnlineSnapshot(nullptr);
         QVERIFY(!active(QStringLiteral("Start")));
+    }
+
+    // A function block dragged from the library pane onto a contact is inserted there (before the
+    // contact, as the F command does at that cursor) in one undo step; online the drop is refused.
+    void libraryDropInsertsABox()
+    {
+        open();
+        trigger("ldNetworkAfter");
+        trigger("ldContact");
+        type(QStringLiteral("Start"));
+        trigger("ldCoil");
+        type(QStringLiteral("Motor"));
+        const auto dropOn = [&](const QString &name) {
+            const editors::DiagramItem *target = m_editor->scene()->itemFor(m_editor->elementNamed(name));
+            const QPointF at = m_editor->view()->mapFromScene(target->frame().center());
+            QMimeData data;
+            data.setData(QString::fromLatin1(editors::kPouMimeType), QByteArrayLiteral("TON"));
+            QDropEvent drop(at, Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+            QCoreApplication::sendEvent(m_editor->view()->viewport(), &drop);
+            return drop.isAccepted();
+        };
+        const int steps = m_stack.count();
+        QVERIFY(dropOn(QStringLiteral("Start")));
+        QCOMPARE(m_stack.count(), steps + 1);
+        const LadderDocument &doc = m_editor->document();
+        QStringList rung;
+        for (quint64 id : rungElements(doc.networks.front().rung)) {
+            const model::Element *e = doc.element(id);
+            const auto *block = std::get_if<model::Block>(e);
+            rung << (block ? block->typeName : elementText(doc, id));
+        }
+        QCOMPARE(rung.join(QLatin1Char(' ')), QStringLiteral("TON Start Motor"));
+        if (editors::InPlaceEditor *field = m_editor->inPlaceEditor())
+            field->cancel();
+
+        interp::RuntimeSnapshot snapshot;
+        m_editor->setOnlineInstance(QStringLiteral("Main"));
+        m_editor->setOnlineSnapshot(&snapshot);
+        const model::Project before = m_model.project();
+        QVERIFY(dropOn(QStringLiteral("Start")) == false);
+        QCOMPARE(m_stack.count(), steps + 1);
+        QVERIFY(m_model.project() == before);
+        m_editor->setOnlineSnapshot(nullptr);
+    }
+
+    // A long body: the overlay paints the networks on screen only (a body of 1,000 networks must
+    // repaint in milliseconds), and what scrolls into view gets the values of the last snapshot,
+    // also when no new one comes (the program halted or stepped one cycle).
+    void onlineValuesFollowTheScroll()
+    {
+        LadderDocument doc = readLadder({});
+        for (int n = 0; n < 40; ++n) {
+            const LdCursor at = insertNetwork(doc, LdCursor::atNetwork(n - 1), true).cursor;
+            setElementText(doc, insertContact(doc, at).cursor.element(), QStringLiteral("C%1").arg(n));
+        }
+        writeLadder(doc);
+        model::Project project = emptyLadderProject();
+        for (model::Pou &pou : project.types.pous)
+            if (pou.name == QLatin1String("Main"))
+                *pou.bodies.front().elements() = doc.elements;
+        m_model.reset(project);
+        m_stack.clear();
+        m_editor = std::make_unique<LdEditor>(m_model, model::BodyRef {mainId()}, &m_stack);
+        m_editor->resize(1000, 700);
+        m_editor->show();
+        m_editor->scene()->rebuildIfDirty();
+        interp::RuntimeSnapshot snapshot;
+        snapshot.cycle = 1;
+        for (int n = 0; n < 40; ++n)
+            snapshot.values.insert(QStringLiteral("Main.C%1").arg(n), QStringLiteral("TRUE"));
+        const auto active = [&](int n) {
+            editors::DiagramItem *item = m_editor->scene()->itemFor(m_editor->elementNamed(QStringLiteral("C%1").arg(n)));
+            return item && item->isActive();
+        };
+        m_editor->setOnlineInstance(QStringLiteral("Main"));
+        m_editor->setOnlineSnapshot(&snapshot);
+        QVERIFY(active(0));
+        QVERIFY2(!active(39), "the last network is far below the window: not painted yet");
+        QScrollBar *bar = m_editor->view()->verticalScrollBar();
+        QVERIFY(bar->maximum() > 0);
+        bar->setValue(bar->maximum());
+        QVERIFY(active(39));
+        QVERIFY(active(0)); // what was shown keeps its state
+        m_editor->setOnlineSnapshot(nullptr);
+        QVERIFY(!active(0));
+        QVERIFY(!active(39));
     }
 };
 

@@ -410,6 +410,59 @@ private Q_SLOTS:
 
     // Beremiz draws one left and one right rail for all networks, with each network's comment
     // above it: the shared rails must not pull every comment into the first network.
+    // The id index follows every change of the pool without a full rebuild: after each step every
+    // element is found at its place, and removed ones are not found.
+    void indexFollowsThePool_data()
+    {
+        QTest::addColumn<QString>("steps");
+        QTest::addColumn<QString>("order");
+        QTest::newRow("append") << "add -1, add -1" << "1 2 3 4 5 6 7";
+        QTest::newRow("insert at the front") << "add 0" << "6 1 2 3 4 5";
+        QTest::newRow("insert in the middle") << "add 2, add 4" << "1 2 6 3 7 4 5";
+        QTest::newRow("move forward") << "move 0 3" << "2 3 4 1 5";
+        QTest::newRow("move back") << "move 4 1" << "1 5 2 3 4";
+        QTest::newRow("move to the same place") << "move 2 2" << "1 2 3 4 5";
+        QTest::newRow("remove the first") << "remove 1" << "2 3 4 5";
+        QTest::newRow("remove two") << "remove 2, remove 4" << "1 3 5";
+        QTest::newRow("remove then add") << "remove 3, add 1" << "1 6 2 4 5";
+        QTest::newRow("mixed") << "add 5, move 5 0, remove 2, move 1 3" << "6 3 4 1 5";
+    }
+    void indexFollowsThePool()
+    {
+        QFETCH(QString, steps);
+        QFETCH(QString, order);
+        LadderDocument doc;
+        for (int id = 1; id <= 5; ++id) {
+            model::Contact contact;
+            contact.localId = quint64(id);
+            doc.elements.push_back(contact);
+        }
+        doc.reindex();
+        std::set<quint64> removed;
+        for (const QString &step : steps.split(QStringLiteral(", "))) {
+            const QStringList words = step.split(QLatin1Char(' '));
+            if (words[0] == QLatin1String("add"))
+                doc.add(model::Contact {}, words[1].toInt());
+            else if (words[0] == QLatin1String("move"))
+                doc.moveElement(words[1].toInt(), words[2].toInt());
+            else {
+                doc.remove({words[1].toULongLong()});
+                removed.insert(words[1].toULongLong());
+            }
+            for (std::size_t i = 0; i < doc.elements.size(); ++i) {
+                const quint64 id = model::header(doc.elements[i]).localId;
+                QCOMPARE(doc.indexOf(id), int(i));
+                QCOMPARE(doc.element(id), &doc.elements[i]);
+            }
+            for (quint64 id : removed)
+                QCOMPARE(doc.indexOf(id), -1);
+        }
+        QStringList ids;
+        for (const Element &e : doc.elements)
+            ids << QString::number(model::header(e).localId);
+        QCOMPARE(ids.join(QLatin1Char(' ')), order);
+    }
+
     void sharedRailsKeepEachNetworksComment()
     {
         const model::plcopen::ReadResult read = model::plcopen::readProjectFile(QStringLiteral(IEC_SOURCE_DIR "/resources/examples/star_delta.xml"));

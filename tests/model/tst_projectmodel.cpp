@@ -348,6 +348,13 @@ void TestProjectModel::replaceElementsSignalsOnceAndKeepsOrder_data()
     QTest::newRow("two swapped") << "1 2 4 3 5" << "-" << "-" << "4 3";
     QTest::newRow("swapped and changed") << "1 2 4' 3 5" << "-" << "-" << "4 3";
     QTest::newRow("localId 0") << "0 1 2 3 4 5" << "-" << "0" << "-";
+    // The unchanged head and tail are compared in place, the window between them by id.
+    QTest::newRow("changed at both ends, inserted between") << "1' 2 7 3 4 5'" << "-" << "7" << "1 5";
+    QTest::newRow("removed at the end") << "1 2 3" << "4 5" << "-" << "-";
+    QTest::newRow("removed at the front") << "3 4 5" << "1 2" << "-" << "-";
+    QTest::newRow("removed between changed ends") << "1' 2 4 5'" << "3" << "-" << "1 5";
+    QTest::newRow("appended") << "1 2 3 4 5 6" << "-" << "6" << "-";
+    QTest::newRow("reversed") << "5 4 3 2 1" << "-" << "-" << "5 4 2 1";
 }
 
 void TestProjectModel::replaceElementsSignalsOnceAndKeepsOrder()
@@ -397,9 +404,17 @@ void TestProjectModel::replaceElementsCommandUndoesExactly()
     const BodyRef ref = commentBody(model);
     // Two elements with one localId are refused: the body stays as it was.
     QVERIFY(!model.replaceElements(ref, commentsFrom(QStringLiteral("1 1"))));
+    QVERIFY(!model.replaceElements(ref, commentsFrom(QStringLiteral("1 2 3 4 5 1")))); // the same id at both ends
     QVERIFY(!model.replaceElements({}, commentsFrom(QStringLiteral("1"))));
     const std::vector<Element> before = *model.body(ref)->elements();
+    QVERIFY(before == commentsFrom(QStringLiteral("1 2 3 4 5")));
     QUndoStack stack;
+    // An edit that changes nothing leaves no step to undo.
+    stack.push(new SetBodyElementsCommand(model, ref, before, QStringLiteral("nothing")));
+    QCOMPARE(stack.count(), 0);
+    stack.push(new SetBodyElementsCommand(model, ref, commentsFrom(QStringLiteral("2 2")), QStringLiteral("refused")));
+    QCOMPARE(stack.count(), 0);
+    QVERIFY(*model.body(ref)->elements() == before);
     stack.push(new SetBodyElementsCommand(model, ref, commentsFrom(QStringLiteral("6 2' 1 5")), QStringLiteral("edit")));
     QVERIFY(*model.body(ref)->elements() == commentsFrom(QStringLiteral("6 2' 1 5")));
     QCOMPARE(stack.undoText(), QStringLiteral("edit"));
