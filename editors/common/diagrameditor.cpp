@@ -119,6 +119,7 @@ void DiagramEditor::addViewActions()
     const ActionSpec specs[] = {
         {"zoomIn", QT_TR_NOOP("Zoom In"), "Ctrl++", ActionGroup::View, false, true, [this] { zoomIn(); }},
         {"zoomOut", QT_TR_NOOP("Zoom Out"), "Ctrl+-", ActionGroup::View, false, true, [this] { zoomOut(); }},
+        {"zoomReset", QT_TR_NOOP("Zoom 100 %"), "", ActionGroup::View, false, false, [this] { resetZoom(); }},
         {"fitToWindow", QT_TR_NOOP("Fit to Window"), "Ctrl+0", ActionGroup::View, false, true, [this] { fitToWindow(); }},
         {"exportPicture", QT_TR_NOOP("Export Picture…"), "", ActionGroup::View, false, false, [this] { exportInteractive(); }},
         {"printDiagram", QT_TR_NOOP("Print…"), "Ctrl+P", ActionGroup::View, false, false, [this] { print(); }},
@@ -519,6 +520,11 @@ void DiagramEditor::zoomOut()
     m_view->zoomOut();
 }
 
+void DiagramEditor::resetZoom()
+{
+    m_view->resetZoom();
+}
+
 int DiagramEditor::zoomPercent() const
 {
     return int(std::lround(m_view->zoom() * 100));
@@ -639,6 +645,10 @@ void DiagramEditor::setOnlineSnapshot(const interp::RuntimeSnapshot *snapshot)
 
 void DiagramEditor::onSceneRefreshed()
 {
+    // The drawing changed (an edit, undo or redo, another view of the body): a refusal shown
+    // before is about a chart that is not there any more. (Online nothing changes the body.)
+    if (!m_online)
+        showMessage(QString());
     if (m_snapshot && m_overlay)
         m_overlay->apply(*m_scene, *m_snapshot, m_onlineInstance);
     applyDiagnostics();

@@ -131,6 +131,7 @@ public:
     // ---- view
     void zoomIn();
     void zoomOut();
+    void resetZoom(); // 100 %
     [[nodiscard]] int zoomPercent() const;
     void fitToWindow();
     QString exportTo(const QString &path); // .svg .png .pdf; empty or a message
