@@ -13,6 +13,7 @@
 #include "model/projectmodel.h"
 
 #include <QApplication>
+#include <QContextMenuEvent>
 #include <QDir>
 #include <QPainter>
 #include <QTemporaryDir>
@@ -118,8 +119,13 @@ int main(int argc, char *argv[])
         const quint64 step = editor->stepId(stepName);
         iec::editors::DiagramView *view = editor->view();
         const QPoint at = view->mapFromScene(editor->scene()->itemFor(step)->frame().center());
-        shootModal(window, QStringLiteral("sfc_contextmenu_%1").arg(language),
-            [&] { QTest::mouseClick(view->viewport(), Qt::RightButton, {}, at); });
+        // A right-click: the press selects, the context menu event opens the menu (as the
+        // platform sends it; QTest's click does not).
+        shootModal(window, QStringLiteral("sfc_contextmenu_%1").arg(language), [&] {
+            QTest::mouseClick(view->viewport(), Qt::RightButton, {}, at);
+            QContextMenuEvent event(QContextMenuEvent::Mouse, at, view->viewport()->mapToGlobal(at));
+            QApplication::sendEvent(view->viewport(), &event);
+        });
         editor->select({step});
         shootModal(window, QStringLiteral("sfc_iecactions_%1").arg(language),
             [&] { editor->trigger(QStringLiteral("sfcActions")); });

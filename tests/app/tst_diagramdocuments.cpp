@@ -24,6 +24,7 @@
 #include <QStatusBar>
 #include <QWheelEvent>
 #include <QTest>
+#include <QToolBar>
 
 using namespace iec;
 using namespace iec::app;
@@ -265,6 +266,39 @@ private Q_SLOTS:
         // No diagram in front: no zoom to show.
         window.documents().openBody(bodyOf(window, "Flow"));
         QVERIFY(!label->isVisible());
+    }
+
+    void theToolBarKeepsItsViewCommandsInSightAt1600Pixels_data()
+    {
+        // Issue 13: at 1600 px Fit to Window, Arrange Chart and Export went into the tool bar's
+        // overflow menu, beside the project and library docks.
+        QTest::addColumn<QString>("pou");
+        QTest::addColumn<QStringList>("actions");
+        const QStringList view {QStringLiteral("zoomIn"), QStringLiteral("zoomOut"), QStringLiteral("fitToWindow"),
+            QStringLiteral("exportPicture")};
+        QTest::newRow("chart") << "Chart" << view + QStringList {QStringLiteral("sfcArrange"), QStringLiteral("sfcDelete")};
+    }
+
+    void theToolBarKeepsItsViewCommandsInSightAt1600Pixels()
+    {
+        QFETCH(QString, pou);
+        QFETCH(QStringList, actions);
+        MainWindow window;
+        window.projectModel().reset(project());
+        window.resize(1600, 900);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.documents().openBody(bodyOf(window, qPrintable(pou)));
+        editors::DiagramEditor *editor = window.documents().currentDiagramEditor();
+        QVERIFY(editor);
+        QCoreApplication::processEvents();
+        auto *bar = editor->findChild<QToolBar *>(QStringLiteral("diagramToolBar"));
+        QVERIFY(bar);
+        for (const QString &id : std::as_const(actions)) {
+            QWidget *button = bar->widgetForAction(editor->action(id));
+            QVERIFY2(button, qPrintable(id));
+            QVERIFY2(button->isVisible(), qPrintable(id + QStringLiteral(" is in the overflow")));
+        }
     }
 
     void buildMessagesMarkTheirElements()
