@@ -1,6 +1,7 @@
 #include "app/mainwindow.h"
 
 #include "app/buildcontroller.h"
+#include "app/diagrammenus.h"
 #include "app/documentarea.h"
 #include "app/editactions.h"
 #include "app/librarypane.h"
@@ -79,19 +80,9 @@ MainWindow::MainWindow(QWidget *parent)
     createToolBar();
     connect(m_documents, &QTabWidget::currentChanged, this, &MainWindow::updateActiveUndoStack);
     connect(qApp, &QApplication::focusChanged, this, &MainWindow::updateActiveUndoStack);
-    // While a diagram editor is the current tab, its insert commands join the Insert menu
-    // below a separator (CODESYS puts them there); another tab takes them out again.
-    QAction *chartSeparator = m_insertMenu->addSeparator();
-    chartSeparator->setVisible(false);
-    connect(m_documents, &QTabWidget::currentChanged, this, [this, chartSeparator] {
-        const QList<QAction *> entries = m_insertMenu->actions();
-        for (qsizetype i = entries.indexOf(chartSeparator) + 1; i < entries.size(); ++i)
-            m_insertMenu->removeAction(entries[i]);
-        editors::DiagramEditor *diagram = m_documents->currentDiagramEditor();
-        chartSeparator->setVisible(diagram != nullptr);
-        if (diagram)
-            m_insertMenu->addActions(diagram->insertActions());
-    });
+    // While a diagram editor is the current tab, its commands join the Insert, Edit and View
+    // menus (CODESYS puts them there) and its zoom shows in the status bar.
+    m_diagramMenus = new DiagramMenus(*m_documents, *m_insertMenu, *m_editMenu, *m_viewMenu, *statusBar(), this);
     // Online nothing of the project may change: the editors only show, the tree's commands,
     // Import and Undo/Redo are off, and the status bar says how to edit again.
     const auto sayLogOutToEdit = [this] { statusBar()->showMessage(tr("Log out to edit (Online → Logout)."), 10000); };
@@ -329,6 +320,7 @@ void MainWindow::retranslateUi()
     m_examplesMenu->setTitle(tr("&Examples"));
     m_toolBar->setWindowTitle(tr("Toolbar"));
     m_windowMenu->retranslate();
+    m_diagramMenus->retranslate();
     m_treeActions->retranslate();
     m_undoActions->retranslate();
     m_importExport->retranslate();

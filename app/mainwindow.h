@@ -1,5 +1,6 @@
 #pragma once
 
+#include "app/diagrammenus.h"
 #include "app/projecttemplates.h"
 #include "app/settings.h"
 
@@ -200,16 +201,16 @@ private:
     WatchPane *m_watch = nullptr;
     OnlineController *m_online = nullptr;
     EditActions *m_editActions = nullptr;
+    DiagramMenus *m_diagramMenus = nullptr;
     SearchActions *m_searchActions = nullptr;
     SearchResultsPane *m_searchResults = nullptr;
     QDockWidget *m_searchDock = nullptr;
     LiveDiagnostics *m_liveDiagnostics = nullptr;
     LibraryPane *m_library = nullptr;
     QDockWidget *m_libraryDock = nullptr;
-    QAction *m_textInsertSeparator = nullptr;
+    MenuSection m_textInsert; // the current text editor's Insert commands
     QAction *m_printDocumentationAction = nullptr;
     QAction *m_exportDocumentationAction = nullptr;
-    QList<QPointer<QAction>> m_textInsertActions; // owned by the editor, which may close first
 };
 
 } // namespace iec::app

@@ -91,29 +91,17 @@ void MainWindow::extendMenus()
     m_searchActions->addTo(m_editMenu);
     m_viewMenu->addAction(m_searchDock->toggleViewAction());
     m_viewMenu->addAction(m_libraryDock->toggleViewAction());
-    m_textInsertSeparator = m_insertMenu->addSeparator();
-    m_textInsertSeparator->setVisible(false);
+    m_textInsert = MenuSection::atEndOf(*m_insertMenu);
     connect(m_documents, &QTabWidget::currentChanged, this, &MainWindow::showTextInsertActions);
 }
 
 void MainWindow::showTextInsertActions()
 {
-    for (const QPointer<QAction> &action : std::as_const(m_textInsertActions)) {
-        if (action)
-            m_insertMenu->removeAction(action);
-    }
-    m_textInsertActions.clear();
     QWidget *current = m_documents->currentWidget();
     auto *text = qobject_cast<editors::TextEditorWidget *>(current);
     if (!text && current)
         text = current->findChild<editors::TextEditorWidget *>();
-    const QList<QAction *> actions = text ? text->insertActions() : QList<QAction *> {};
-    for (QAction *action : actions)
-        m_textInsertActions.append(action);
-    m_textInsertSeparator->setVisible(!actions.isEmpty());
-    const QList<QAction *> entries = m_insertMenu->actions();
-    const qsizetype next = entries.indexOf(m_textInsertSeparator) + 1;
-    m_insertMenu->insertActions(next < entries.size() ? entries[next] : nullptr, actions);
+    m_textInsert.show(text ? text->insertActions() : QList<QAction *> {});
 }
 
 void MainWindow::retranslateProjectTools()

@@ -2,6 +2,8 @@
 
 #include "app/namerules.h"
 #include "app/referencerename.h"
+#include "editors/common/editorregistry.h"
+#include "editors/standardeditors.h"
 #include "interpreter/compiler/lexer.h"
 #include "model/projectmodel.h"
 #include "model/undo/partcommands.h"
@@ -35,6 +37,14 @@ bool fail(QString *error, const QString &message)
 
 } // namespace
 
+model::Body startingBody(model::BodyLanguage language)
+{
+    editors::registerStandardEditors();
+    model::Body empty = model::Body::withLanguage(language);
+    const editors::EditorFactory *factory = editors::EditorRegistry::instance().forBody(empty);
+    return factory && factory->newBody ? factory->newBody() : empty;
+}
+
 model::Pou makePou(const NewPou &pou)
 {
     model::Pou value;
@@ -43,7 +53,7 @@ model::Pou makePou(const NewPou &pou)
     value.pouInterface = model::Interface {};
     if (pou.kind == model::PouKind::Function)
         value.pouInterface->returnType = dataTypeNamed(pou.returnType.trimmed());
-    value.bodies.push_back(model::Body::withLanguage(pou.language));
+    value.bodies.push_back(startingBody(pou.language));
     return value;
 }
 
@@ -80,7 +90,7 @@ std::optional<BodyRef> ProjectCommands::addPouPart(model::PouId pou, const NewPo
     }
     model::PouPart value;
     value.name = part.name;
-    value.body = model::Body::withLanguage(part.language);
+    value.body = startingBody(part.language);
     m_stack.push(new model::AddPouPartCommand(m_model, pou, part.part, std::move(value)));
     return BodyRef {pou, part.part, part.name};
 }

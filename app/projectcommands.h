@@ -67,7 +67,11 @@ private:
     std::function<void()> m_flushPendingEdits;
 };
 
-// The model's POU value for a new POU (its first body empty, functions with their return type).
+// What a new POU, action or transition of `language` starts with: what the language's editor
+// offers (SFC: an initial step "Init", a transition TRUE, a jump back), else an empty body.
+[[nodiscard]] model::Body startingBody(model::BodyLanguage language);
+// The model's POU value for a new POU (its first body the startingBody, functions with their
+// return type).
 [[nodiscard]] model::Pou makePou(const NewPou &pou);
 
 } // namespace iec::app

@@ -19,7 +19,8 @@ void registerStandardEditors()
         [](model::ProjectModel &model, const model::BodyRef &ref, QUndoStack *stack) -> DiagramEditor * {
             return new sfc::SfcEditor(model, ref, stack);
         },
-        [] { return std::unique_ptr<DiagramPolicy>(std::make_unique<sfc::SfcPolicy>()); }});
+        [] { return std::unique_ptr<DiagramPolicy>(std::make_unique<sfc::SfcPolicy>()); },
+        &sfc::newChartBody});
     registry.add({EditorLanguage::LD,
         [](model::ProjectModel &model, const model::BodyRef &ref, QUndoStack *stack) -> DiagramEditor * {
             return new ld::LdEditor(model, ref, stack);

@@ -130,8 +130,10 @@ void DiagramEditor::addViewActions()
     const ActionSpec specs[] = {
         {"zoomIn", QT_TR_NOOP("Zoom In"), "Ctrl++", ActionGroup::View, false, true, [this] { zoomIn(); }},
         {"zoomOut", QT_TR_NOOP("Zoom Out"), "Ctrl+-", ActionGroup::View, false, true, [this] { zoomOut(); }},
+        {"zoomReset", QT_TR_NOOP("Zoom 100 %"), "", ActionGroup::View, false, false, [this] { resetZoom(); }},
         {"fitToWindow", QT_TR_NOOP("Fit to Window"), "Ctrl+0", ActionGroup::View, false, true, [this] { fitToWindow(); }},
-        {"exportPicture", QT_TR_NOOP("Export Picture…"), "", ActionGroup::View, false, false, [this] { exportInteractive(); }},
+        {"exportPicture", QT_TR_NOOP("Export Picture…"), "", ActionGroup::View, false, true, [this] { exportInteractive(); },
+            {}, QT_TR_NOOP("Export…")},
         {"printDiagram", QT_TR_NOOP("Print…"), "Ctrl+P", ActionGroup::View, false, false, [this] { print(); }},
     };
     m_viewActionsStart = m_toolBar->addSeparator();
@@ -150,17 +152,27 @@ void DiagramEditor::addActionEntries(std::span<const ActionSpec> specs, const QB
         auto entry = std::make_unique<ActionEntry>(ActionEntry {spec, context, new QAction(this)});
         QAction *action = entry->action;
         action->setObjectName(QString::fromLatin1(spec.id));
-        action->setText(QCoreApplication::translate(context.constData(), spec.text));
         if (*spec.shortcut) {
             action->setShortcut(QKeySequence(QString::fromLatin1(spec.shortcut), QKeySequence::PortableText));
             action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
         }
         const ActionEntry *raw = entry.get();
+        translateAction(*raw);
         connect(action, &QAction::triggered, this, [this, raw] { runAction(*raw); });
         addAction(action);
         if (spec.onToolBar)
             m_toolBar->insertAction(before, action);
         m_actions.push_back(std::move(entry));
+    }
+}
+
+void DiagramEditor::translateAction(const ActionEntry &entry)
+{
+    const QString text = QCoreApplication::translate(entry.context.constData(), entry.spec.text);
+    entry.action->setText(text);
+    if (entry.spec.toolBarText) {
+        entry.action->setIconText(QCoreApplication::translate(entry.context.constData(), entry.spec.toolBarText));
+        entry.action->setToolTip(QString(text).remove(QStringLiteral("…")));
     }
 }
 
@@ -524,7 +536,7 @@ void DiagramEditor::changeEvent(QEvent *event)
 {
     if (event->type() == QEvent::LanguageChange) {
         for (const auto &entry : m_actions)
-            entry->action->setText(QCoreApplication::translate(entry->context.constData(), entry->spec.text));
+            translateAction(*entry);
         // A message was composed in the old language (with its arguments): it goes rather than
         // mixing two languages in one window.
         showMessage(QString());
@@ -572,6 +584,11 @@ void DiagramEditor::zoomIn()
 void DiagramEditor::zoomOut()
 {
     m_view->zoomOut();
+}
+
+void DiagramEditor::resetZoom()
+{
+    m_view->resetZoom();
 }
 
 int DiagramEditor::zoomPercent() const
@@ -694,6 +711,10 @@ void DiagramEditor::setOnlineSnapshot(const interp::RuntimeSnapshot *snapshot)
 
 void DiagramEditor::onSceneRefreshed()
 {
+    // The drawing changed (an edit, undo or redo, another view of the body): a refusal shown
+    // before is about a chart that is not there any more. (Online nothing changes the body.)
+    if (!m_online)
+        showMessage(QString());
     if (m_snapshot && m_overlay)
         m_overlay->apply(*m_scene, *m_snapshot, m_onlineInstance);
     applyDiagnostics();

@@ -76,6 +76,9 @@ public:
         bool onToolBar;
         std::function<void()> run;
         std::function<bool()> enabled = {}; // applies to the selection now; empty: always
+        // The tool bar's shorter label (QT_TR_NOOP; the full text becomes its tool tip), so that
+        // the bar fits beside the docks; nullptr: the text.
+        const char *toolBarText = nullptr;
     };
 
     ~DiagramEditor() override;
@@ -136,6 +139,7 @@ public:
     // ---- view
     void zoomIn();
     void zoomOut();
+    void resetZoom(); // 100 %
     [[nodiscard]] int zoomPercent() const;
     void fitToWindow();
     QString exportTo(const QString &path); // .svg .png .pdf; empty or a message
@@ -217,6 +221,7 @@ private:
     void addActionEntries(std::span<const ActionSpec> specs, const QByteArray &context, QAction *before);
     void addViewActions();
     void runAction(const ActionEntry &entry);
+    static void translateAction(const ActionEntry &entry);
     const ActionEntry *entryFor(const QString &id) const;
     bool handleKey(QKeyEvent *event);
     bool handlePouDrop(QEvent *event);

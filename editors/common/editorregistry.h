@@ -30,6 +30,9 @@ struct EditorFactory {
     std::function<DiagramEditor *(model::ProjectModel &model, const model::BodyRef &ref, QUndoStack *undoStack)> createEditor;
     // A policy that draws the body without an editor (a DiagramScene on it renders offscreen).
     std::function<std::unique_ptr<DiagramPolicy>()> createPolicy;
+    // What a new body of this language (a new POU, action or transition) starts with, so that it
+    // opens on something valid to build on (SFC: an initial step); empty: an empty body.
+    std::function<model::Body()> newBody = {};
 };
 
 class EditorRegistry

@@ -33,33 +33,35 @@ void SfcEditor::createActions()
     const auto transition = [this] { return selectedOfKind(false) != 0; };
     const auto hasTransition = [this] { return selectionHas(&isTransition); };
     const auto hasStep = [this] { return selectionHas(&isStepLike); };
+    // The tool bar carries the everyday commands with short labels, so that it fits beside the
+    // window's docks at 1600 px (issue 13); every command is in the menus with its full name.
     const ActionSpec specs[] = {
-        {"sfcNewChart", QT_TR_NOOP("Initial Step"), "", G::Insert, true, true,
+        {"sfcNewChart", QT_TR_NOOP("Initial Step"), "", G::Insert, true, false,
             [this] { edit(tr("New chart"), [](ChartDocument &d, const auto &) { return createDefaultChart(d); }); },
             [this] { return document().chart.isEmpty(); }},
         {"sfcStepAfter", QT_TR_NOOP("Step-Transition (after)"), "Ctrl+T", G::Insert, true, true,
             [this] { edit(tr("Insert step-transition"), [](ChartDocument &d, const auto &s) { return insertStepTransition(d, s, true); }); },
-            [this] { return !selection().isEmpty() || document().chart.isEmpty(); }},
+            [this] { return !selection().isEmpty() || document().chart.isEmpty(); }, QT_TR_NOOP("Step")},
         {"sfcStepBefore", QT_TR_NOOP("Step-Transition (before)"), "Ctrl+Shift+T", G::Insert, true, false,
             [this] { edit(tr("Insert step-transition"), [](ChartDocument &d, const auto &s) { return insertStepTransition(d, s, false); }); },
             any},
         {"sfcAltRight", QT_TR_NOOP("Alternative Branch (right)"), "Ctrl+A", G::Insert, true, true,
             [this] { edit(tr("Insert alternative branch"), [](ChartDocument &d, const auto &s) { return insertAlternativeBranch(d, s, true); }); },
-            hasTransition},
+            hasTransition, QT_TR_NOOP("Alternative")},
         {"sfcAltLeft", QT_TR_NOOP("Alternative Branch (left)"), "", G::Insert, true, false,
             [this] { edit(tr("Insert alternative branch"), [](ChartDocument &d, const auto &s) { return insertAlternativeBranch(d, s, false); }); },
             hasTransition},
         {"sfcParRight", QT_TR_NOOP("Parallel Branch (right)"), "Ctrl+L", G::Insert, true, true,
             [this] { edit(tr("Insert parallel branch"), [](ChartDocument &d, const auto &s) { return insertParallelBranch(d, s, true); }); },
-            hasStep},
+            hasStep, QT_TR_NOOP("Parallel")},
         {"sfcParLeft", QT_TR_NOOP("Parallel Branch (left)"), "", G::Insert, true, false,
             [this] { edit(tr("Insert parallel branch"), [](ChartDocument &d, const auto &s) { return insertParallelBranch(d, s, false); }); },
             hasStep},
         {"sfcJump", QT_TR_NOOP("Jump…"), "", G::Insert, true, true, [this] { chooseJumpTarget(false); }, any},
-        {"sfcTransitionJump", QT_TR_NOOP("Transition-Jump…"), "", G::Insert, true, true, [this] { chooseJumpTarget(true); }, any},
+        {"sfcTransitionJump", QT_TR_NOOP("Transition-Jump…"), "", G::Insert, true, false, [this] { chooseJumpTarget(true); }, any},
         {"sfcMacro", QT_TR_NOOP("Macro Step"), "", G::Insert, true, true,
             [this] { edit(tr("Insert macro step"), [](ChartDocument &d, const auto &s) { return insertMacroStep(d, s, true); }); },
-            any},
+            any, QT_TR_NOOP("Macro")},
         {"sfcProperties", QT_TR_NOOP("Step Properties…"), "", G::Element, true, true,
             [this] {
                 if (const quint64 id = selectedOfKind(true))
@@ -67,7 +69,7 @@ void SfcEditor::createActions()
                 else
                     showError(tr("Select a step first."));
             },
-            step},
+            step, QT_TR_NOOP("Properties…")},
         {"sfcActions", QT_TR_NOOP("IEC Actions…"), "", G::Element, true, true,
             [this] {
                 if (const quint64 id = selectedOfKind(true))
@@ -75,7 +77,7 @@ void SfcEditor::createActions()
                 else
                     showError(tr("Select a step first."));
             },
-            step},
+            step, QT_TR_NOOP("Actions…")},
         {"sfcCondition", QT_TR_NOOP("Edit Condition"), "", G::Element, true, false,
             [this] {
                 if (const quint64 id = selectedOfKind(false))
@@ -95,7 +97,7 @@ void SfcEditor::createActions()
         {"sfcZoomOutOfMacro", QT_TR_NOOP("Leave Macro"), "", G::Element, false, true, [this] { leaveMacro(); },
             [this] { return !macroPath().empty(); }},
         {"sfcArrange", QT_TR_NOOP("Arrange Chart"), "", G::Element, true, true, [this] { arrangeChart(); },
-            [this] { return !document().chart.isEmpty(); }},
+            [this] { return !document().chart.isEmpty(); }, QT_TR_NOOP("Arrange")},
         {"sfcCut", QT_TR_NOOP("Cut"), "Ctrl+X", G::Edit, true, false, [this] { cutSelection(); }, any},
         {"sfcCopy", QT_TR_NOOP("Copy"), "Ctrl+C", G::Edit, false, false, [this] { copySelection(); }, any},
         {"sfcPaste", QT_TR_NOOP("Paste"), "Ctrl+V", G::Edit, true, false, [this] { paste(); },

@@ -49,6 +49,17 @@ QStringList partNames(const ProjectModel &model, PouId pou, bool actions)
 
 } // namespace
 
+Body newChartBody()
+{
+    ChartDocument document = readChart({});
+    createDefaultChart(document);
+    wireChart(document);
+    layoutChart(document);
+    Body body = Body::withLanguage(BodyLanguage::SFC);
+    *body.elements() = std::move(document.elements);
+    return body;
+}
+
 SfcEditor::SfcEditor(ProjectModel &model, BodyRef ref, QUndoStack *undoStack, QWidget *parent)
     : DiagramEditor(model, std::move(ref), undoStack, std::make_unique<SfcPolicy>(), parent)
 {

@@ -10,6 +10,10 @@ class QLabel;
 
 namespace iec::editors::sfc {
 
+// The body a new SFC POU or action starts with, as in CODESYS: the initial step "Init", a
+// transition TRUE and a jump back to Init, wired and laid out (valid PLCopen that compiles).
+[[nodiscard]] model::Body newChartBody();
+
 // The SFC editor: the chart of one body on the shared diagram framework, edited with the
 // structured commands of CoDeSys 2.3 / RunPro. Every command is a pure edit of sfcedits.h run
 // through edit() (which keeps the chart valid, places what it adds without moving the rest more

@@ -1,7 +1,7 @@
 // Graphical bodies open through the editor registry (DESIGN.md): the document area asks it by
 // editor language and wires what it gets (grid, online instance, completion, opening actions),
-// the Insert menu shows the current editor's insert commands, build messages on elements mark
-// them; a language without an editor keeps the placeholder. A test language (the boxes of
+// the Insert, Edit and View menus show the current editor's commands and the status bar its
+// zoom, build messages on elements mark them; a language without an editor keeps the placeholder. A test language (the boxes of
 // tests/editors/boxdiagram.h, registered for FBD) stands in for the editors still to come.
 #include "app/buildcontroller.h"
 #include "app/documentarea.h"
@@ -17,10 +17,14 @@
 #include "tests/editors/boxdiagram.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
+#include <QStatusBar>
+#include <QWheelEvent>
 #include <QTest>
+#include <QToolBar>
 
 using namespace iec;
 using namespace iec::app;
@@ -155,19 +159,146 @@ private Q_SLOTS:
         QVERIFY2(label->text().contains(QStringLiteral("written in %1.").arg(language)), qPrintable(label->text()));
     }
 
-    void theInsertMenuFollowsTheCurrentDiagramEditor()
+    void theMenusFollowTheCurrentDiagramEditor_data()
     {
+        // Every diagram editor's table reaches the window's menus through the base: its Insert
+        // commands the Insert menu, its element commands the Edit menu, its view commands the
+        // View menu (issue 13: the SFC commands were missing from Edit, the zoom from View).
+        QTest::addColumn<QString>("pou");
+        QTest::addColumn<QString>("menu");
+        QTest::addColumn<QStringList>("actions");
+        const QStringList view {QStringLiteral("zoomIn"), QStringLiteral("zoomOut"), QStringLiteral("zoomReset"),
+            QStringLiteral("fitToWindow"), QStringLiteral("exportPicture")};
+        QTest::newRow("boxes insert") << "Boxes" << "insertMenu" << QStringList {QStringLiteral("boxAdd")};
+        QTest::newRow("boxes edit") << "Boxes" << "editMenu" << QStringList {QStringLiteral("boxOpen")};
+        QTest::newRow("boxes view") << "Boxes" << "viewMenu" << view;
+        QTest::newRow("ladder view") << "Ladder" << "viewMenu" << view;
+        QTest::newRow("chart insert") << "Chart" << "insertMenu"
+                                      << QStringList {QStringLiteral("sfcStepAfter"), QStringLiteral("sfcAltRight"),
+                                             QStringLiteral("sfcParRight"), QStringLiteral("sfcJump")};
+        QTest::newRow("chart edit") << "Chart" << "editMenu"
+                                    << QStringList {QStringLiteral("sfcProperties"), QStringLiteral("sfcActions"),
+                                           QStringLiteral("sfcCondition"), QStringLiteral("sfcPriority"),
+                                           QStringLiteral("sfcArrange")};
+        QTest::newRow("chart view") << "Chart" << "viewMenu" << view;
+    }
+
+    void theMenusFollowTheCurrentDiagramEditor()
+    {
+        QFETCH(QString, pou);
+        QFETCH(QString, menu);
+        QFETCH(QStringList, actions);
         MainWindow window;
         window.projectModel().reset(project());
         window.show();
-        auto *insertMenu = window.menuBar()->findChild<QMenu *>(QStringLiteral("insertMenu"));
-        window.documents().openBody(bodyOf(window, "Boxes"));
+        auto *menuWidget = window.menuBar()->findChild<QMenu *>(menu);
+        QVERIFY(menuWidget);
+        window.documents().openBody(bodyOf(window, qPrintable(pou)));
+        editors::DiagramEditor *editor = window.documents().currentDiagramEditor();
+        QVERIFY(editor);
+        QList<QAction *> shown;
+        for (const QString &id : std::as_const(actions)) {
+            QAction *action = editor->action(id);
+            QVERIFY2(action, qPrintable(id));
+            QVERIFY2(menuWidget->actions().contains(action), qPrintable(id));
+            shown << action;
+        }
+        // Cut, Copy, Paste and Delete are the window's own entries (EditActions), not twice.
+        for (QAction *action : editor->actionsIn(editors::DiagramEditor::ActionGroup::Edit))
+            QVERIFY2(!menuWidget->actions().contains(action), qPrintable(action->objectName()));
+        // Another document in front takes them out again: the placeholder of a CFC diagram.
+        window.documents().openBody(bodyOf(window, "Flow"));
+        QVERIFY(!window.documents().currentDiagramEditor());
+        for (QAction *action : std::as_const(shown))
+            QVERIFY2(!menuWidget->actions().contains(action), qPrintable(action->objectName()));
+    }
+
+    void theStatusBarShowsTheCurrentDiagramsZoom_data()
+    {
+        QTest::addColumn<QString>("pou");
+        QTest::newRow("boxes") << "Boxes";
+        QTest::newRow("ladder") << "Ladder";
+        QTest::newRow("chart") << "Chart";
+    }
+
+    void theStatusBarShowsTheCurrentDiagramsZoom()
+    {
+        // Issue 13: the View menu had no zoom entries and the zoom was nowhere to be seen. The
+        // status bar shows the current diagram's zoom, whether the View menu, a key or the wheel
+        // changed it.
+        QFETCH(QString, pou);
+        MainWindow window;
+        window.projectModel().reset(project());
+        window.show();
+        auto *label = window.statusBar()->findChild<QLabel *>(QStringLiteral("zoomLabel"));
+        QVERIFY(label);
+        QVERIFY(!label->isVisible());
+        window.documents().openBody(bodyOf(window, qPrintable(pou)));
+        editors::DiagramEditor *editor = window.documents().currentDiagramEditor();
+        QVERIFY(editor);
+        QVERIFY(label->isVisible());
+        QCOMPARE(label->text(), QStringLiteral("Zoom: 100 %"));
+        auto *viewMenu = window.menuBar()->findChild<QMenu *>(QStringLiteral("viewMenu"));
+        const auto viewEntry = [&](const char *id) {
+            QAction *action = editor->action(QString::fromLatin1(id));
+            return viewMenu->actions().contains(action) ? action : nullptr;
+        };
+        QVERIFY(viewEntry("zoomIn"));
+        viewEntry("zoomIn")->trigger();
+        QCOMPARE(label->text(), QStringLiteral("Zoom: %1 %").arg(editor->zoomPercent()));
+        QVERIFY(editor->zoomPercent() > 100);
+        viewEntry("zoomReset")->trigger();
+        QCOMPARE(editor->zoomPercent(), 100);
+        QCOMPARE(label->text(), QStringLiteral("Zoom: 100 %"));
+        // Ctrl+wheel and the keys, in the view.
+        QWidget *viewport = editor->view()->viewport();
+        const QPointF at(viewport->width() / 2.0, viewport->height() / 2.0);
+        QWheelEvent wheel(at, viewport->mapToGlobal(at), QPoint(), QPoint(0, -120), Qt::NoButton, Qt::ControlModifier,
+            Qt::NoScrollPhase, false);
+        QApplication::sendEvent(viewport, &wheel);
+        QVERIFY(editor->zoomPercent() < 100);
+        QCOMPARE(label->text(), QStringLiteral("Zoom: %1 %").arg(editor->zoomPercent()));
+        editor->view()->setFocus();
+        editor->resetZoom();
+        viewEntry("zoomOut")->trigger();
+        viewEntry("fitToWindow")->trigger();
+        QCOMPARE(label->text(), QStringLiteral("Zoom: %1 %").arg(editor->zoomPercent()));
+        // No diagram in front: no zoom to show.
+        window.documents().openBody(bodyOf(window, "Flow"));
+        QVERIFY(!label->isVisible());
+    }
+
+    void theToolBarKeepsItsViewCommandsInSightAt1600Pixels_data()
+    {
+        // Issue 13: at 1600 px Fit to Window, Arrange Chart and Export went into the tool bar's
+        // overflow menu, beside the project and library docks.
+        QTest::addColumn<QString>("pou");
+        QTest::addColumn<QStringList>("actions");
+        const QStringList view {QStringLiteral("zoomIn"), QStringLiteral("zoomOut"), QStringLiteral("fitToWindow"),
+            QStringLiteral("exportPicture")};
+        QTest::newRow("chart") << "Chart" << view + QStringList {QStringLiteral("sfcArrange"), QStringLiteral("sfcDelete")};
+    }
+
+    void theToolBarKeepsItsViewCommandsInSightAt1600Pixels()
+    {
+        QFETCH(QString, pou);
+        QFETCH(QStringList, actions);
+        MainWindow window;
+        window.projectModel().reset(project());
+        window.resize(1600, 900);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.documents().openBody(bodyOf(window, qPrintable(pou)));
+        editors::DiagramEditor *editor = window.documents().currentDiagramEditor();
+        QVERIFY(editor);
         QCoreApplication::processEvents();
-        QAction *add = window.documents().currentDiagramEditor()->action(QStringLiteral("boxAdd"));
-        QVERIFY(insertMenu->actions().contains(add));
-        window.documents().openBody(bodyOf(window, "Ladder"));
-        QCoreApplication::processEvents();
-        QVERIFY(!insertMenu->actions().contains(add));
+        auto *bar = editor->findChild<QToolBar *>(QStringLiteral("diagramToolBar"));
+        QVERIFY(bar);
+        for (const QString &id : std::as_const(actions)) {
+            QWidget *button = bar->widgetForAction(editor->action(id));
+            QVERIFY2(button, qPrintable(id));
+            QVERIFY2(button->isVisible(), qPrintable(id + QStringLiteral(" is in the overflow")));
+        }
     }
 
     void buildMessagesMarkTheirElements()

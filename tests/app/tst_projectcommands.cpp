@@ -1,10 +1,12 @@
 #include "app/addpoudialog.h"
+#include "app/buildcontroller.h"
 #include "app/addpoupartdialog.h"
 #include "app/namerules.h"
 #include "app/projectcommands.h"
 #include "app/referencerename.h"
 #include "app/renamedialog.h"
 #include "model/projectmodel.h"
+#include "tests/model/roundtrip.h"
 
 #include <QComboBox>
 #include <QStyle>
@@ -31,6 +33,8 @@ private Q_SLOTS:
     void renameIdentifierInText_data();
     void renameIdentifierInText();
     void eachOperationRedoUndoRedo();
+    void newBodiesStartAsTheirEditorOffers_data();
+    void newBodiesStartAsTheirEditorOffers();
     void renameUpdatesReferencesInOneStep();
     void renamingAnActionOrTransitionUpdatesTheChart();
     void refusedOperationsChangeNothing_data();
@@ -87,7 +91,81 @@ struct Fixture {
     [[nodiscard]] PouId idOf(const QString &name) const { return model.project().findPou(name)->id; }
 };
 
+// One line per element of a body, in order: "Step Init initial", "Transition TRUE", "Jump Init";
+// a text body gives its text.
+QStringList bodyOutline(const Body &body)
+{
+    if (!body.elements())
+        return {QStringLiteral("text ") + body.text()};
+    QStringList lines;
+    for (const Element &element : *body.elements()) {
+        if (const auto *step = std::get_if<Step>(&element))
+            lines << QStringLiteral("Step %1%2").arg(step->name, step->initialStep ? QStringLiteral(" initial") : QString());
+        else if (const auto *transition = std::get_if<Transition>(&element)) {
+            const auto *inlined = transition->condition ? std::get_if<InlineCondition>(&transition->condition->kind) : nullptr;
+            lines << QStringLiteral("Transition ") + (inlined ? inlined->body->text() : QStringLiteral("?"));
+        } else if (const auto *jump = std::get_if<JumpStep>(&element))
+            lines << QStringLiteral("Jump ") + jump->targetName;
+        else
+            lines << QStringLiteral("other");
+    }
+    return lines;
+}
+
 } // namespace
+
+void TestProjectCommands::newBodiesStartAsTheirEditorOffers_data()
+{
+    // Issue 13: a new SFC POU opened on an empty canvas with no hint, and saved an empty chart.
+    // It starts as in CODESYS: the initial step Init, a transition TRUE, a jump back to Init.
+    QTest::addColumn<int>("part"); // BodyRef::Part
+    QTest::addColumn<int>("language");
+    QTest::addColumn<QStringList>("outline");
+    const QStringList chart {QStringLiteral("Step Init initial"), QStringLiteral("Transition TRUE"), QStringLiteral("Jump Init")};
+    QTest::newRow("SFC program") << int(BodyRef::Part::Pou) << int(BodyLanguage::SFC) << chart;
+    QTest::newRow("SFC action") << int(BodyRef::Part::Action) << int(BodyLanguage::SFC) << chart;
+    QTest::newRow("ST program") << int(BodyRef::Part::Pou) << int(BodyLanguage::ST) << QStringList {QStringLiteral("text ")};
+    QTest::newRow("LD action") << int(BodyRef::Part::Action) << int(BodyLanguage::LD) << QStringList {};
+    QTest::newRow("FBD program") << int(BodyRef::Part::Pou) << int(BodyLanguage::FBD) << QStringList {};
+}
+
+void TestProjectCommands::newBodiesStartAsTheirEditorOffers()
+{
+    QFETCH(int, part);
+    QFETCH(int, language);
+    QFETCH(QStringList, outline);
+    ProjectModel model;
+    Project start;
+    start.types.pous.push_back(makePou({.name = QStringLiteral("Main"), .language = BodyLanguage::ST}));
+    model.reset(start);
+    QUndoStack stack;
+    ProjectCommands commands {model, stack};
+    const Project before = model.project();
+    const PouId main = model.project().types.pous.front().id;
+
+    QString error;
+    const Body *body = nullptr;
+    if (BodyRef::Part(part) == BodyRef::Part::Pou) {
+        const std::optional<PouId> id = commands.addPou({.name = QStringLiteral("Chart"), .language = BodyLanguage(language)}, &error);
+        QVERIFY2(id, qPrintable(error));
+        body = model.body({*id, BodyRef::Part::Pou, {}});
+    } else {
+        const std::optional<BodyRef> ref = commands.addPouPart(main,
+            {.part = BodyRef::Part(part), .name = QStringLiteral("Sequence"), .language = BodyLanguage(language)}, &error);
+        QVERIFY2(ref, qPrintable(error));
+        body = model.body(*ref);
+    }
+    QVERIFY(body);
+    QCOMPARE(bodyOutline(*body), outline);
+    // Valid as it is: the file validates and the build finds nothing to complain about.
+    QCOMPARE(iec::test::savedSchemaErrors(model.project()), QString());
+    for (const Message &message : compileMessages(model.project()))
+        QVERIFY2(message.severity == Message::Severity::Info, qPrintable(message.text));
+    // One step: undo takes the POU or action away with its chart.
+    QCOMPARE(stack.count(), 1);
+    stack.undo();
+    QVERIFY(model.project() == before);
+}
 
 void TestProjectCommands::identifierRules_data()
 {
@@ -322,6 +400,7 @@ void TestProjectCommands::renamingAnActionOrTransitionUpdatesTheChart()
     // action calls Fill.
     Project project;
     Pou chart = makePou({.name = QStringLiteral("Chart"), .language = BodyLanguage::SFC});
+    chart.bodies = {Body::withLanguage(BodyLanguage::SFC)}; // this chart only, not the new one's Init
     ActionBlock block;
     block.localId = 2;
     block.actions.push_back({.localId = 0, .qualifier = QStringLiteral("N"), .reference = Reference {QStringLiteral("Fill")}});

@@ -200,6 +200,56 @@ private Q_SLOTS:
         QVERIFY(!f.editor->trigger(QStringLiteral("noSuchAction")));
     }
 
+    void aRefusalGoesOnceTheSituationChanged_data()
+    {
+        // Issue 13: refusals stayed on the message line after the situation they were about had
+        // changed. Each row: a refusal, then a change that ends it.
+        QTest::addColumn<QString>("change");
+        QTest::newRow("another selection") << "select";
+        QTest::newRow("offline again") << "offline";
+        QTest::newRow("undo changes the diagram") << "undo";
+        QTest::newRow("redo changes the diagram") << "redo";
+        QTest::newRow("another language") << "language";
+    }
+
+    void aRefusalGoesOnceTheSituationChanged()
+    {
+        QFETCH(QString, change);
+        Fixture f;
+        f.editor->show();
+        f.editor->select({1});
+        QVERIFY(f.editor->trigger(QStringLiteral("boxRename")));
+        if (change == QLatin1String("redo"))
+            f.stack.undo();
+        QCoreApplication::processEvents();
+        // The refusal: online any edit, else deleting two boxes at once.
+        const bool online = change == QLatin1String("offline");
+        if (online)
+            f.goOnline();
+        f.editor->select({1, 2});
+        QVERIFY(!f.editor->trigger(QStringLiteral("boxDelete")));
+        QCOMPARE(f.editor->lastMessage(),
+            online ? QStringLiteral("The diagram cannot be changed while online. Log out first (Online → Logout).")
+                   : QStringLiteral("One at a time."));
+        // A change that keeps the selection as it is, except "select".
+        if (change == QLatin1String("select"))
+            f.editor->select({2});
+        else if (change == QLatin1String("offline"))
+            f.editor->setOnlineSnapshot(nullptr);
+        else if (change == QLatin1String("undo"))
+            f.stack.undo();
+        else if (change == QLatin1String("redo"))
+            f.stack.redo();
+        else {
+            QEvent languageChange(QEvent::LanguageChange);
+            QCoreApplication::sendEvent(f.editor.get(), &languageChange);
+        }
+        QCoreApplication::processEvents();
+        if (change != QLatin1String("select"))
+            QCOMPARE(f.editor->selection(), (QList<quint64> {1, 2}));
+        QCOMPARE(f.editor->lastMessage(), QString());
+    }
+
     void everyActionThatChangesTheModelIsRefusedOnline()
     {
         Fixture f;
