@@ -257,6 +257,13 @@
         </message>
     </context>
     <context>
+        <name>iec::app::DiagramMenus</name>
+        <message>
+            <source>Zoom: %1 %</source>
+            <translation>Zoom: %1 %</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::app::DocumentArea</name>
         <message>
             <source>This body is written in %1. Its editor is not available in this version; the body is kept unchanged when the project is saved.</source>
@@ -1910,6 +1917,14 @@ Automatisch gespeichert: %2</translation>
             <source>SVG picture (*.svg);;PNG picture (*.png);;PDF document (*.pdf)</source>
             <translation>SVG-Bild (*.svg);;PNG-Bild (*.png);;PDF-Dokument (*.pdf)</translation>
         </message>
+        <message>
+            <source>Zoom 100 %</source>
+            <translation>Zoom 100 %</translation>
+        </message>
+        <message>
+            <source>Export…</source>
+            <translation>Exportieren…</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::DiagramExport</name>
@@ -2850,6 +2865,22 @@ Automatisch gespeichert: %2</translation>
             <source>&amp;Delete</source>
             <translation>&amp;Löschen</translation>
         </message>
+        <message>
+            <source>Network</source>
+            <translation>Netzwerk</translation>
+        </message>
+        <message>
+            <source>Parallel</source>
+            <translation>Parallel</translation>
+        </message>
+        <message>
+            <source>Box…</source>
+            <translation>Baustein…</translation>
+        </message>
+        <message>
+            <source>S/R</source>
+            <translation>S/R</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::ld::LdEdits</name>
@@ -3206,6 +3237,34 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>Initial Step</source>
             <translation>Initialschritt</translation>
+        </message>
+        <message>
+            <source>Step</source>
+            <translation>Schritt</translation>
+        </message>
+        <message>
+            <source>Alternative</source>
+            <translation>Alternativ</translation>
+        </message>
+        <message>
+            <source>Parallel</source>
+            <translation>Parallel</translation>
+        </message>
+        <message>
+            <source>Macro</source>
+            <translation>Makro</translation>
+        </message>
+        <message>
+            <source>Properties…</source>
+            <translation>Eigenschaften…</translation>
+        </message>
+        <message>
+            <source>Actions…</source>
+            <translation>Aktionen…</translation>
+        </message>
+        <message>
+            <source>Arrange</source>
+            <translation>Anordnen</translation>
         </message>
     </context>
     <context>

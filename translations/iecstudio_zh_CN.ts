@@ -256,6 +256,13 @@
         </message>
     </context>
     <context>
+        <name>iec::app::DiagramMenus</name>
+        <message>
+            <source>Zoom: %1 %</source>
+            <translation>缩放：%1 %</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::app::DocumentArea</name>
         <message>
             <source>This body is written in %1. Its editor is not available in this version; the body is kept unchanged when the project is saved.</source>
@@ -1907,6 +1914,14 @@ Autosaved: %2</source>
             <source>SVG picture (*.svg);;PNG picture (*.png);;PDF document (*.pdf)</source>
             <translation>SVG 图片 (*.svg);;PNG 图片 (*.png);;PDF 文档 (*.pdf)</translation>
         </message>
+        <message>
+            <source>Zoom 100 %</source>
+            <translation>缩放 100 %</translation>
+        </message>
+        <message>
+            <source>Export…</source>
+            <translation>导出…</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::DiagramExport</name>
@@ -2845,6 +2860,22 @@ Autosaved: %2</source>
             <source>&amp;Delete</source>
             <translation>删除(&amp;D)</translation>
         </message>
+        <message>
+            <source>Network</source>
+            <translation>节</translation>
+        </message>
+        <message>
+            <source>Parallel</source>
+            <translation>并联</translation>
+        </message>
+        <message>
+            <source>Box…</source>
+            <translation>功能块…</translation>
+        </message>
+        <message>
+            <source>S/R</source>
+            <translation>S/R</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::ld::LdEdits</name>
@@ -3201,6 +3232,34 @@ Autosaved: %2</source>
         <message>
             <source>Initial Step</source>
             <translation>初始步</translation>
+        </message>
+        <message>
+            <source>Step</source>
+            <translation>步</translation>
+        </message>
+        <message>
+            <source>Alternative</source>
+            <translation>选择分支</translation>
+        </message>
+        <message>
+            <source>Parallel</source>
+            <translation>并行</translation>
+        </message>
+        <message>
+            <source>Macro</source>
+            <translation>宏步</translation>
+        </message>
+        <message>
+            <source>Properties…</source>
+            <translation>属性…</translation>
+        </message>
+        <message>
+            <source>Actions…</source>
+            <translation>动作…</translation>
+        </message>
+        <message>
+            <source>Arrange</source>
+            <translation>整理</translation>
         </message>
     </context>
     <context>

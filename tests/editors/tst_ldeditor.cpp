@@ -383,6 +383,11 @@ private Q_SLOTS:
             const QPointF at = m_editor->view()->mapFromScene(target->frame().center());
             QMimeData data;
             data.setData(QString::fromLatin1(editors::kPouMimeType), QByteArrayLiteral("TON"));
+            // As a drag does: an enter (which makes the viewport the drop target), then the drop.
+            QDragEnterEvent enter(at.toPoint(), Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+            QCoreApplication::sendEvent(m_editor->view()->viewport(), &enter);
+            if (!enter.isAccepted())
+                return false;
             QDropEvent drop(at, Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
             QCoreApplication::sendEvent(m_editor->view()->viewport(), &drop);
             return drop.isAccepted();
