@@ -268,7 +268,9 @@ WatchPane::WatchPane(QWidget *parent)
     const auto addAction = [this, tools](const QKeySequence &keys, auto slot) {
         auto *action = new QAction(this);
         action->setShortcut(keys);
-        action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+        // Window-wide, as in CODESYS: a value prepared from an editor (a double-click on a
+        // contact) is written with Ctrl+F7 while the editor keeps the focus.
+        action->setShortcutContext(Qt::WindowShortcut);
         connect(action, &QAction::triggered, this, slot);
         tools->addAction(action);
         return action;

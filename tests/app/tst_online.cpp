@@ -100,6 +100,7 @@ private Q_SLOTS:
     void textEditorShowsValuesAndRefusesEditing();
     void logoutRestoresEditors();
     void addToWatchFromTheEditor();
+    void writeAndForceKeysWorkFromTheEditor();
     void documentOpenedWhileOnlineAsksForItsValues();
     void watchCompletionOffersSymbols();
     void threadedRunStaysResponsiveAndStops();
@@ -585,6 +586,34 @@ void TestOnline::addToWatchFromTheEditor()
     editors::TextEditorWidget *widget = textWidgetOf(*window, QStringLiteral("Main"));
     Q_EMIT widget->editor()->addToWatchRequested(QStringLiteral("Level"));
     QCOMPARE(window->watchPane().model().names(), QStringList{QStringLiteral("Main.Level")});
+}
+
+// Write (Ctrl+F7), force (F7) and release (Alt+F7) reach the watch pane from wherever the focus
+// is, as in CODESYS: a value prepared from an editor is written without clicking the pane first.
+void TestOnline::writeAndForceKeysWorkFromTheEditor()
+{
+    auto window = windowWithProgram();
+    window->show();
+    QApplication::setActiveWindow(window.get());
+    OnlineController &online = window->online();
+    WatchPane &watch = window->watchPane();
+    watch.addVariable(QStringLiteral("Main.Start"));
+    watch.addVariable(QStringLiteral("Main.Count"));
+    online.singleCycle();
+    editors::TextEditorWidget *widget = textWidgetOf(*window, QStringLiteral("Main"));
+    widget->editor()->setFocus();
+    QVERIFY(QTest::qWaitForWindowActive(window.get()));
+    watch.model().setPrepared(0, QStringLiteral("TRUE"));
+    QTest::keyClick(widget->editor(), Qt::Key_F7, Qt::ControlModifier);
+    QCOMPARE(watch.model().prepared(0), QString());
+    online.singleCycle();
+    QCOMPARE(watch.model().value(0), QStringLiteral("TRUE"));
+    watch.model().setPrepared(1, QStringLiteral("42"));
+    QTest::keyClick(widget->editor(), Qt::Key_F7);
+    QVERIFY(watch.model().isForced(1));
+    watch.view()->selectionModel()->select(watch.model().index(1, 0), QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    QTest::keyClick(widget->editor(), Qt::Key_F7, Qt::AltModifier);
+    QVERIFY(!watch.model().isForced(1));
 }
 
 void TestOnline::watchCompletionOffersSymbols()
