@@ -1925,6 +1925,18 @@ Automatisch gespeichert: %2</translation>
             <source>Export…</source>
             <translation>Exportieren…</translation>
         </message>
+        <message>
+            <source>Zoom +</source>
+            <translation>Zoom +</translation>
+        </message>
+        <message>
+            <source>Zoom −</source>
+            <translation>Zoom −</translation>
+        </message>
+        <message>
+            <source>Fit</source>
+            <translation>Einpassen</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::DiagramExport</name>
@@ -3265,6 +3277,10 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>Arrange</source>
             <translation>Anordnen</translation>
+        </message>
+        <message>
+            <source>Leave</source>
+            <translation>Verlassen</translation>
         </message>
     </context>
     <context>

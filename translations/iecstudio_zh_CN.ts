@@ -1922,6 +1922,18 @@ Autosaved: %2</source>
             <source>Export…</source>
             <translation>导出…</translation>
         </message>
+        <message>
+            <source>Zoom +</source>
+            <translation>放大</translation>
+        </message>
+        <message>
+            <source>Zoom −</source>
+            <translation>缩小</translation>
+        </message>
+        <message>
+            <source>Fit</source>
+            <translation>适合窗口</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::DiagramExport</name>
@@ -3260,6 +3272,10 @@ Autosaved: %2</source>
         <message>
             <source>Arrange</source>
             <translation>整理</translation>
+        </message>
+        <message>
+            <source>Leave</source>
+            <translation>退出宏</translation>
         </message>
     </context>
     <context>

@@ -128,10 +128,11 @@ DiagramEditor::~DiagramEditor()
 void DiagramEditor::addViewActions()
 {
     const ActionSpec specs[] = {
-        {"zoomIn", QT_TR_NOOP("Zoom In"), "Ctrl++", ActionGroup::View, false, true, [this] { zoomIn(); }},
-        {"zoomOut", QT_TR_NOOP("Zoom Out"), "Ctrl+-", ActionGroup::View, false, true, [this] { zoomOut(); }},
+        {"zoomIn", QT_TR_NOOP("Zoom In"), "Ctrl++", ActionGroup::View, false, true, [this] { zoomIn(); }, {}, QT_TR_NOOP("Zoom +")},
+        {"zoomOut", QT_TR_NOOP("Zoom Out"), "Ctrl+-", ActionGroup::View, false, true, [this] { zoomOut(); }, {}, QT_TR_NOOP("Zoom −")},
         {"zoomReset", QT_TR_NOOP("Zoom 100 %"), "", ActionGroup::View, false, false, [this] { resetZoom(); }},
-        {"fitToWindow", QT_TR_NOOP("Fit to Window"), "Ctrl+0", ActionGroup::View, false, true, [this] { fitToWindow(); }},
+        {"fitToWindow", QT_TR_NOOP("Fit to Window"), "Ctrl+0", ActionGroup::View, false, true, [this] { fitToWindow(); }, {},
+            QT_TR_NOOP("Fit")},
         {"exportPicture", QT_TR_NOOP("Export Picture…"), "", ActionGroup::View, false, true, [this] { exportInteractive(); },
             {}, QT_TR_NOOP("Export…")},
         {"printDiagram", QT_TR_NOOP("Print…"), "Ctrl+P", ActionGroup::View, false, false, [this] { print(); }},

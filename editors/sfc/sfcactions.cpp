@@ -95,7 +95,7 @@ void SfcEditor::createActions()
             },
             transition},
         {"sfcZoomOutOfMacro", QT_TR_NOOP("Leave Macro"), "", G::Element, false, true, [this] { leaveMacro(); },
-            [this] { return !macroPath().empty(); }},
+            [this] { return !macroPath().empty(); }, QT_TR_NOOP("Leave")},
         {"sfcArrange", QT_TR_NOOP("Arrange Chart"), "", G::Element, true, true, [this] { arrangeChart(); },
             [this] { return !document().chart.isEmpty(); }, QT_TR_NOOP("Arrange")},
         {"sfcCut", QT_TR_NOOP("Cut"), "Ctrl+X", G::Edit, true, false, [this] { cutSelection(); }, any},

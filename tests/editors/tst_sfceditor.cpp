@@ -419,7 +419,7 @@ private Q_SLOTS:
             QCOMPARE(e.action(QStringLiteral("sfcStepAfter"))->text(), QStringLiteral("[Step-Transition (after)]"));
             // The tool bar's short label, translated too.
             QCOMPARE(buttonText("sfcStepAfter"), QStringLiteral("[Step]"));
-            QCOMPARE(buttonText("zoomIn"), QStringLiteral("[Zoom In]"));
+            QCOMPARE(buttonText("zoomIn"), QStringLiteral("[Zoom +]"));
             QStringList bracketed;
             for (const QString &text : english)
                 bracketed << QLatin1Char('[') + text + QLatin1Char(']');
