@@ -1,6 +1,8 @@
 #include "editors/standardeditors.h"
 
 #include "editors/common/editorregistry.h"
+#include "editors/fbd/fbdeditor.h"
+#include "editors/fbd/fbdscene.h"
 #include "editors/ld/ldeditor.h"
 #include "editors/ld/ldscene.h"
 #include "editors/sfc/sfceditor.h"
@@ -26,6 +28,11 @@ void registerStandardEditors()
             return new ld::LdEditor(model, ref, stack);
         },
         [] { return std::unique_ptr<DiagramPolicy>(std::make_unique<ld::LdPolicy>()); }});
+    registry.add({EditorLanguage::FBD,
+        [](model::ProjectModel &model, const model::BodyRef &ref, QUndoStack *stack) -> DiagramEditor * {
+            return new fbd::FbdEditor(model, ref, stack);
+        },
+        [] { return std::unique_ptr<DiagramPolicy>(std::make_unique<fbd::FbdPolicy>()); }});
 }
 
 } // namespace iec::editors

@@ -2672,6 +2672,308 @@ Automatisch gespeichert: %2</translation>
         </message>
     </context>
     <context>
+        <name>iec::editors::fbd::FbdEditor</name>
+        <message>
+            <source>Prepare Value</source>
+            <translation>Wert vorbereiten</translation>
+        </message>
+        <message>
+            <source>New value of %1 (now %2):</source>
+            <translation>Neuer Wert für %1 (jetzt %2):</translation>
+        </message>
+        <message>
+            <source>Prepared %1 := %2. Write it with Ctrl+F7 or force it with F7.</source>
+            <translation>%1 := %2 vorbereitet. Mit Strg+F7 schreiben oder mit F7 forcen.</translation>
+        </message>
+        <message>
+            <source>Insert network</source>
+            <translation>Netzwerk einfügen</translation>
+        </message>
+        <message>
+            <source>Insert %1</source>
+            <translation>%1 einfügen</translation>
+        </message>
+        <message>
+            <source>Change box to %1</source>
+            <translation>Baustein in %1 ändern</translation>
+        </message>
+        <message>
+            <source>Insert input</source>
+            <translation>Eingang einfügen</translation>
+        </message>
+        <message>
+            <source>Insert output</source>
+            <translation>Ausgang einfügen</translation>
+        </message>
+        <message>
+            <source>Insert assignment</source>
+            <translation>Zuweisung einfügen</translation>
+        </message>
+        <message>
+            <source>Insert jump</source>
+            <translation>Sprung einfügen</translation>
+        </message>
+        <message>
+            <source>Insert return</source>
+            <translation>Rücksprung einfügen</translation>
+        </message>
+        <message>
+            <source>Change label</source>
+            <translation>Marke ändern</translation>
+        </message>
+        <message>
+            <source>Change comment</source>
+            <translation>Kommentar ändern</translation>
+        </message>
+        <message>
+            <source>Negate</source>
+            <translation>Negieren</translation>
+        </message>
+        <message>
+            <source>Set/Reset</source>
+            <translation>Setzen/Rücksetzen</translation>
+        </message>
+        <message>
+            <source>Edge</source>
+            <translation>Flanke</translation>
+        </message>
+        <message>
+            <source>Rename</source>
+            <translation>Umbenennen</translation>
+        </message>
+        <message>
+            <source>Delete</source>
+            <translation>Löschen</translation>
+        </message>
+        <message>
+            <source>Paste</source>
+            <translation>Einfügen</translation>
+        </message>
+        <message>
+            <source>Network Label</source>
+            <translation>Netzwerkmarke</translation>
+        </message>
+        <message>
+            <source>Label of network %1 (empty: none):</source>
+            <translation>Marke von Netzwerk %1 (leer: keine):</translation>
+        </message>
+        <message>
+            <source>Network Comment</source>
+            <translation>Netzwerkkommentar</translation>
+        </message>
+        <message>
+            <source>Comment of network %1:</source>
+            <translation>Kommentar von Netzwerk %1:</translation>
+        </message>
+        <message>
+            <source>Jump</source>
+            <translation>Sprung</translation>
+        </message>
+        <message>
+            <source>Jump to the network with the label:</source>
+            <translation>Sprung zum Netzwerk mit der Marke:</translation>
+        </message>
+        <message>
+            <source>&amp;Network Before</source>
+            <translation>Netzwerk &amp;davor</translation>
+        </message>
+        <message>
+            <source>Network Aft&amp;er</source>
+            <translation>Netzwerk &amp;danach</translation>
+        </message>
+        <message>
+            <source>Network</source>
+            <translation>Netzwerk</translation>
+        </message>
+        <message>
+            <source>&amp;Operator</source>
+            <translation>&amp;Operator</translation>
+        </message>
+        <message>
+            <source>Operator</source>
+            <translation>Operator</translation>
+        </message>
+        <message>
+            <source>Box with E&amp;N…</source>
+            <translation>Baustein mit E&amp;N…</translation>
+        </message>
+        <message>
+            <source>&amp;Input</source>
+            <translation>&amp;Eingang</translation>
+        </message>
+        <message>
+            <source>O&amp;utput</source>
+            <translation>&amp;Ausgang</translation>
+        </message>
+        <message>
+            <source>&amp;Assignment</source>
+            <translation>&amp;Zuweisung</translation>
+        </message>
+        <message>
+            <source>&amp;Jump…</source>
+            <translation>&amp;Sprung…</translation>
+        </message>
+        <message>
+            <source>&amp;Return</source>
+            <translation>&amp;Rücksprung</translation>
+        </message>
+        <message>
+            <source>La&amp;bel…</source>
+            <translation>&amp;Marke…</translation>
+        </message>
+        <message>
+            <source>Co&amp;mment…</source>
+            <translation>&amp;Kommentar…</translation>
+        </message>
+        <message>
+            <source>Ne&amp;gate</source>
+            <translation>&amp;Negieren</translation>
+        </message>
+        <message>
+            <source>&amp;Set/Reset</source>
+            <translation>&amp;Setzen/Rücksetzen</translation>
+        </message>
+        <message>
+            <source>S/R</source>
+            <translation>S/R</translation>
+        </message>
+        <message>
+            <source>E&amp;dge (Rising/Falling)</source>
+            <translation>&amp;Flanke (steigend/fallend)</translation>
+        </message>
+        <message>
+            <source>Edit &amp;Name</source>
+            <translation>&amp;Namen bearbeiten</translation>
+        </message>
+        <message>
+            <source>Cu&amp;t</source>
+            <translation>&amp;Ausschneiden</translation>
+        </message>
+        <message>
+            <source>&amp;Copy</source>
+            <translation>&amp;Kopieren</translation>
+        </message>
+        <message>
+            <source>&amp;Paste</source>
+            <translation>&amp;Einfügen</translation>
+        </message>
+        <message>
+            <source>&amp;Delete</source>
+            <translation>&amp;Löschen</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::fbd::FbdEdits</name>
+        <message>
+            <source>Insert a network first (Network After, Ctrl+T).</source>
+            <translation>Fügen Sie zuerst ein Netzwerk ein (Netzwerk danach, Strg+T).</translation>
+        </message>
+        <message>
+            <source>This network was drawn freely in another tool: it is not a tree of boxes, so boxes, inputs and outputs cannot be inserted into it. Its elements can still be renamed, negated or deleted.</source>
+            <translation>Dieses Netzwerk wurde in einem anderen Werkzeug frei gezeichnet: Es ist kein Baum aus Bausteinen, daher lassen sich keine Bausteine, Eingänge oder Ausgänge einfügen. Seine Elemente können weiterhin umbenannt, negiert oder gelöscht werden.</translation>
+        </message>
+        <message>
+            <source>Nothing is wired to this input yet.</source>
+            <translation>An diesem Eingang ist noch nichts angeschlossen.</translation>
+        </message>
+        <message>
+            <source>Nothing is wired to this element yet.</source>
+            <translation>An diesem Element ist noch nichts angeschlossen.</translation>
+        </message>
+        <message>
+            <source>This box has no output.</source>
+            <translation>Dieser Baustein hat keinen Ausgang.</translation>
+        </message>
+        <message>
+            <source>The last box of this network has no output.</source>
+            <translation>Der letzte Baustein dieses Netzwerks hat keinen Ausgang.</translation>
+        </message>
+        <message>
+            <source>Select a box or one of its inputs first.</source>
+            <translation>Wählen Sie zuerst einen Baustein oder einen seiner Eingänge.</translation>
+        </message>
+        <message>
+            <source>%1 has a fixed number of inputs.</source>
+            <translation>%1 hat eine feste Anzahl von Eingängen.</translation>
+        </message>
+        <message>
+            <source>Select a box first.</source>
+            <translation>Wählen Sie zuerst einen Baustein.</translation>
+        </message>
+        <message>
+            <source>%1 has no output to feed the input with.</source>
+            <translation>%1 hat keinen Ausgang, der den Eingang speisen könnte.</translation>
+        </message>
+        <message>
+            <source>%1 has no output to feed the assignment with.</source>
+            <translation>%1 hat keinen Ausgang für die Zuweisung.</translation>
+        </message>
+        <message>
+            <source>%1 has no output to pass the value on.</source>
+            <translation>%1 hat keinen Ausgang, um den Wert weiterzugeben.</translation>
+        </message>
+        <message>
+            <source>Select an input, an output, an assignment, a jump or a return first.</source>
+            <translation>Wählen Sie zuerst einen Eingang, einen Ausgang, eine Zuweisung, einen Sprung oder einen Rücksprung.</translation>
+        </message>
+        <message>
+            <source>The value in front of this jump or return goes elsewhere too: negate the output that feeds it, or insert a NOT.</source>
+            <translation>Der Wert vor diesem Sprung oder Rücksprung wird auch anderswo verwendet: Negieren Sie den Ausgang, der ihn liefert, oder fügen Sie ein NOT ein.</translation>
+        </message>
+        <message>
+            <source>Select an assignment (an output variable) first.</source>
+            <translation>Wählen Sie zuerst eine Zuweisung (eine Ausgangsvariable).</translation>
+        </message>
+        <message>
+            <source>Select an input of a box first (edge detection works on BOOL inputs).</source>
+            <translation>Wählen Sie zuerst einen Eingang eines Bausteins (die Flankenerkennung wirkt auf BOOL-Eingänge).</translation>
+        </message>
+        <message>
+            <source>There is no such element.</source>
+            <translation>Dieses Element gibt es nicht.</translation>
+        </message>
+        <message>
+            <source>Type a name or a value.</source>
+            <translation>Geben Sie einen Namen oder einen Wert ein.</translation>
+        </message>
+        <message>
+            <source>This element has no name to type.</source>
+            <translation>Dieses Element hat keinen Namen, der sich eingeben ließe.</translation>
+        </message>
+        <message>
+            <source>Select an element of the network first.</source>
+            <translation>Wählen Sie zuerst ein Element des Netzwerks.</translation>
+        </message>
+        <message>
+            <source>There is no assignment on this output to delete.</source>
+            <translation>An diesem Ausgang gibt es keine Zuweisung zum Löschen.</translation>
+        </message>
+        <message>
+            <source>Select an input of a box first.</source>
+            <translation>Wählen Sie zuerst einen Eingang eines Bausteins.</translation>
+        </message>
+        <message>
+            <source>Select what to delete first: an element, an input, an output or a network.</source>
+            <translation>Wählen Sie zuerst, was gelöscht werden soll: ein Element, einen Eingang, einen Ausgang oder ein Netzwerk.</translation>
+        </message>
+        <message>
+            <source>There is nothing to copy here.</source>
+            <translation>Hier gibt es nichts zu kopieren.</translation>
+        </message>
+        <message>
+            <source>Select a network, a box or an input to copy.</source>
+            <translation>Wählen Sie zum Kopieren ein Netzwerk, einen Baustein oder einen Eingang.</translation>
+        </message>
+        <message>
+            <source>There is nothing to paste.</source>
+            <translation>Es gibt nichts einzufügen.</translation>
+        </message>
+        <message>
+            <source>The clipboard holds elements of another language (not a function block diagram): nothing was pasted.</source>
+            <translation>Die Zwischenablage enthält Elemente einer anderen Sprache (kein Funktionsbausteindiagramm): Es wurde nichts eingefügt.</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::editors::ld::LdEditor</name>
         <message>
             <source>free</source>

@@ -2667,6 +2667,308 @@ Autosaved: %2</source>
         </message>
     </context>
     <context>
+        <name>iec::editors::fbd::FbdEditor</name>
+        <message>
+            <source>Prepare Value</source>
+            <translation>准备数值</translation>
+        </message>
+        <message>
+            <source>New value of %1 (now %2):</source>
+            <translation>%1 的新值(当前 %2):</translation>
+        </message>
+        <message>
+            <source>Prepared %1 := %2. Write it with Ctrl+F7 or force it with F7.</source>
+            <translation>已准备 %1 := %2。按 Ctrl+F7 写入,或按 F7 强制。</translation>
+        </message>
+        <message>
+            <source>Insert network</source>
+            <translation>插入节</translation>
+        </message>
+        <message>
+            <source>Insert %1</source>
+            <translation>插入 %1</translation>
+        </message>
+        <message>
+            <source>Change box to %1</source>
+            <translation>将方块改为 %1</translation>
+        </message>
+        <message>
+            <source>Insert input</source>
+            <translation>插入输入</translation>
+        </message>
+        <message>
+            <source>Insert output</source>
+            <translation>插入输出</translation>
+        </message>
+        <message>
+            <source>Insert assignment</source>
+            <translation>插入赋值</translation>
+        </message>
+        <message>
+            <source>Insert jump</source>
+            <translation>插入跳转</translation>
+        </message>
+        <message>
+            <source>Insert return</source>
+            <translation>插入返回</translation>
+        </message>
+        <message>
+            <source>Change label</source>
+            <translation>修改标号</translation>
+        </message>
+        <message>
+            <source>Change comment</source>
+            <translation>修改注释</translation>
+        </message>
+        <message>
+            <source>Negate</source>
+            <translation>反向</translation>
+        </message>
+        <message>
+            <source>Set/Reset</source>
+            <translation>置位/复位</translation>
+        </message>
+        <message>
+            <source>Edge</source>
+            <translation>边沿</translation>
+        </message>
+        <message>
+            <source>Rename</source>
+            <translation>重命名</translation>
+        </message>
+        <message>
+            <source>Delete</source>
+            <translation>删除</translation>
+        </message>
+        <message>
+            <source>Paste</source>
+            <translation>粘贴</translation>
+        </message>
+        <message>
+            <source>Network Label</source>
+            <translation>节标号</translation>
+        </message>
+        <message>
+            <source>Label of network %1 (empty: none):</source>
+            <translation>第 %1 节的标号(留空:无):</translation>
+        </message>
+        <message>
+            <source>Network Comment</source>
+            <translation>节注释</translation>
+        </message>
+        <message>
+            <source>Comment of network %1:</source>
+            <translation>第 %1 节的注释:</translation>
+        </message>
+        <message>
+            <source>Jump</source>
+            <translation>跳转</translation>
+        </message>
+        <message>
+            <source>Jump to the network with the label:</source>
+            <translation>跳转到带有此标号的节:</translation>
+        </message>
+        <message>
+            <source>&amp;Network Before</source>
+            <translation>前节(&amp;N)</translation>
+        </message>
+        <message>
+            <source>Network Aft&amp;er</source>
+            <translation>后节(&amp;E)</translation>
+        </message>
+        <message>
+            <source>Network</source>
+            <translation>节</translation>
+        </message>
+        <message>
+            <source>&amp;Operator</source>
+            <translation>运算符(&amp;O)</translation>
+        </message>
+        <message>
+            <source>Operator</source>
+            <translation>运算符</translation>
+        </message>
+        <message>
+            <source>Box with E&amp;N…</source>
+            <translation>使能运算符(&amp;N)</translation>
+        </message>
+        <message>
+            <source>&amp;Input</source>
+            <translation>输入(&amp;I)</translation>
+        </message>
+        <message>
+            <source>O&amp;utput</source>
+            <translation>输出(&amp;U)</translation>
+        </message>
+        <message>
+            <source>&amp;Assignment</source>
+            <translation>赋值(&amp;A)</translation>
+        </message>
+        <message>
+            <source>&amp;Jump…</source>
+            <translation>跳转(&amp;J)…</translation>
+        </message>
+        <message>
+            <source>&amp;Return</source>
+            <translation>返回(&amp;R)</translation>
+        </message>
+        <message>
+            <source>La&amp;bel…</source>
+            <translation>标号(&amp;B)…</translation>
+        </message>
+        <message>
+            <source>Co&amp;mment…</source>
+            <translation>注释(&amp;M)…</translation>
+        </message>
+        <message>
+            <source>Ne&amp;gate</source>
+            <translation>反向(&amp;G)</translation>
+        </message>
+        <message>
+            <source>&amp;Set/Reset</source>
+            <translation>置位/复位(&amp;S)</translation>
+        </message>
+        <message>
+            <source>S/R</source>
+            <translation>S/R</translation>
+        </message>
+        <message>
+            <source>E&amp;dge (Rising/Falling)</source>
+            <translation>边沿(上升/下降)(&amp;D)</translation>
+        </message>
+        <message>
+            <source>Edit &amp;Name</source>
+            <translation>编辑名称(&amp;N)</translation>
+        </message>
+        <message>
+            <source>Cu&amp;t</source>
+            <translation>剪切(&amp;T)</translation>
+        </message>
+        <message>
+            <source>&amp;Copy</source>
+            <translation>复制(&amp;C)</translation>
+        </message>
+        <message>
+            <source>&amp;Paste</source>
+            <translation>粘贴(&amp;P)</translation>
+        </message>
+        <message>
+            <source>&amp;Delete</source>
+            <translation>删除(&amp;D)</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::fbd::FbdEdits</name>
+        <message>
+            <source>Insert a network first (Network After, Ctrl+T).</source>
+            <translation>请先插入一个节(后节,Ctrl+T)。</translation>
+        </message>
+        <message>
+            <source>This network was drawn freely in another tool: it is not a tree of boxes, so boxes, inputs and outputs cannot be inserted into it. Its elements can still be renamed, negated or deleted.</source>
+            <translation>此节是在其他工具中自由绘制的:它不是由方块组成的树,因此不能插入方块、输入或输出。其元素仍可重命名、反向或删除。</translation>
+        </message>
+        <message>
+            <source>Nothing is wired to this input yet.</source>
+            <translation>此输入尚未连接任何内容。</translation>
+        </message>
+        <message>
+            <source>Nothing is wired to this element yet.</source>
+            <translation>此元素尚未连接任何内容。</translation>
+        </message>
+        <message>
+            <source>This box has no output.</source>
+            <translation>此方块没有输出。</translation>
+        </message>
+        <message>
+            <source>The last box of this network has no output.</source>
+            <translation>此节的最后一个方块没有输出。</translation>
+        </message>
+        <message>
+            <source>Select a box or one of its inputs first.</source>
+            <translation>请先选择一个方块或它的一个输入。</translation>
+        </message>
+        <message>
+            <source>%1 has a fixed number of inputs.</source>
+            <translation>%1 的输入数量是固定的。</translation>
+        </message>
+        <message>
+            <source>Select a box first.</source>
+            <translation>请先选择一个方块。</translation>
+        </message>
+        <message>
+            <source>%1 has no output to feed the input with.</source>
+            <translation>%1 没有可以连接到该输入的输出。</translation>
+        </message>
+        <message>
+            <source>%1 has no output to feed the assignment with.</source>
+            <translation>%1 没有可用于赋值的输出。</translation>
+        </message>
+        <message>
+            <source>%1 has no output to pass the value on.</source>
+            <translation>%1 没有可以传递数值的输出。</translation>
+        </message>
+        <message>
+            <source>Select an input, an output, an assignment, a jump or a return first.</source>
+            <translation>请先选择一个输入、输出、赋值、跳转或返回。</translation>
+        </message>
+        <message>
+            <source>The value in front of this jump or return goes elsewhere too: negate the output that feeds it, or insert a NOT.</source>
+            <translation>此跳转或返回前面的值也用于其他地方:请对提供该值的输出取反,或插入一个 NOT。</translation>
+        </message>
+        <message>
+            <source>Select an assignment (an output variable) first.</source>
+            <translation>请先选择一个赋值(输出变量)。</translation>
+        </message>
+        <message>
+            <source>Select an input of a box first (edge detection works on BOOL inputs).</source>
+            <translation>请先选择方块的一个输入(边沿检测作用于 BOOL 输入)。</translation>
+        </message>
+        <message>
+            <source>There is no such element.</source>
+            <translation>没有这个元素。</translation>
+        </message>
+        <message>
+            <source>Type a name or a value.</source>
+            <translation>请输入名称或数值。</translation>
+        </message>
+        <message>
+            <source>This element has no name to type.</source>
+            <translation>此元素没有可输入的名称。</translation>
+        </message>
+        <message>
+            <source>Select an element of the network first.</source>
+            <translation>请先选择节中的一个元素。</translation>
+        </message>
+        <message>
+            <source>There is no assignment on this output to delete.</source>
+            <translation>此输出上没有可删除的赋值。</translation>
+        </message>
+        <message>
+            <source>Select an input of a box first.</source>
+            <translation>请先选择方块的一个输入。</translation>
+        </message>
+        <message>
+            <source>Select what to delete first: an element, an input, an output or a network.</source>
+            <translation>请先选择要删除的内容:元素、输入、输出或节。</translation>
+        </message>
+        <message>
+            <source>There is nothing to copy here.</source>
+            <translation>这里没有可复制的内容。</translation>
+        </message>
+        <message>
+            <source>Select a network, a box or an input to copy.</source>
+            <translation>请选择要复制的节、方块或输入。</translation>
+        </message>
+        <message>
+            <source>There is nothing to paste.</source>
+            <translation>没有可粘贴的内容。</translation>
+        </message>
+        <message>
+            <source>The clipboard holds elements of another language (not a function block diagram): nothing was pasted.</source>
+            <translation>剪贴板中是其他语言的元素(不是功能块图):未粘贴任何内容。</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::editors::ld::LdEditor</name>
         <message>
             <source>free</source>

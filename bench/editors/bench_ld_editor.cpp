@@ -24,6 +24,7 @@
 
 using namespace iec;
 using namespace iec::editors::ld;
+using iec::editors::BoxSpec;
 
 namespace {
 

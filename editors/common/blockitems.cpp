@@ -4,6 +4,8 @@
 #include <QPainter>
 #include <QPainterPathStroker>
 
+#include <cmath>
+
 namespace iec::editors {
 
 using namespace model;
@@ -209,6 +211,29 @@ void BoxItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QWidget
                 QRectF(m_size.width() + 6, outputPin(int(p)).y() - 8, 200, 16), Qt::AlignLeft);
     }
     paintDecorations(painter);
+}
+
+namespace {
+
+std::vector<int> rowsFromFile(const std::vector<BlockVariable> &pins, bool inputs)
+{
+    std::vector<int> rows;
+    for (std::size_t p = 0; p < pins.size(); ++p) {
+        const auto &rel = inputs ? (pins[p].connectionPointIn ? pins[p].connectionPointIn->relPosition : std::nullopt)
+                                 : (pins[p].connectionPointOut ? pins[p].connectionPointOut->relPosition : std::nullopt);
+        rows.push_back(rel ? std::max(0, int(std::lround((rel->y - kTitleRow - kPinPitch / 2) / kPinPitch))) : int(p));
+    }
+    return rows;
+}
+
+} // namespace
+
+BoxItem *boxItemAsDrawn(const Element &element, const QRectF &rect)
+{
+    const auto &block = std::get<Block>(element);
+    std::vector<BlockVariable> inputs = block.inputVariables;
+    inputs.insert(inputs.end(), block.inOutVariables.begin(), block.inOutVariables.end());
+    return new BoxItem(element, rect, rowsFromFile(inputs, true), rowsFromFile(block.outputVariables, false));
 }
 
 // ---- VariableItem

@@ -77,6 +77,10 @@ private:
     QHash<QString, QString> m_pinValues;
 };
 
+// A box as another tool drew it: its pins on the rows their relPositions say (the pin pitch from
+// below the title row), or one after the other where the file gives none.
+BoxItem *boxItemAsDrawn(const model::Element &element, const QRectF &rect);
+
 // A variable or constant (an input of a box, an assignment of an output): its text, right-aligned
 // when it feeds a pin on its right, left-aligned when a pin feeds it. "???" is red until typed.
 // Online, the value follows the name.

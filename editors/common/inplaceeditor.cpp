@@ -39,6 +39,13 @@ QStringList InPlaceEditor::completions() const
         const bool block = item.kind == CompletionItem::Kind::FunctionBlock || item.kind == CompletionItem::Kind::Function;
         if (m_completion == Completion::BlockTypes && !block)
             continue;
+        // A name field holds a variable or a value: statement keywords (WHILE for "W") and type
+        // names would only be taken by Enter by mistake; TRUE and FALSE stay.
+        const bool literal = item.text.compare(QLatin1String("TRUE"), Qt::CaseInsensitive) == 0
+            || item.text.compare(QLatin1String("FALSE"), Qt::CaseInsensitive) == 0;
+        if (m_completion == Completion::Names && !literal
+            && (item.kind == CompletionItem::Kind::Keyword || item.kind == CompletionItem::Kind::TypeName))
+            continue;
         names << item.text;
     }
     return names;

@@ -3,7 +3,7 @@
 #include "editors/common/diagramclipboard.h"
 #include "editors/common/diagramscene.h"
 #include "editors/common/diagramview.h"
-#include "editors/ld/ldboxes.h"
+#include "editors/common/boxspec.h"
 #include "editors/ld/lditems.h"
 #include "editors/ld/ldoverlay.h"
 #include "editors/ld/ldscene.h"

@@ -291,14 +291,6 @@ std::vector<int> pathOf(const RungNode &rung, quint64 localId)
     return path;
 }
 
-bool isExtensible(const QString &typeName)
-{
-    static const QStringList kExtensible {QStringLiteral("ADD"), QStringLiteral("MUL"), QStringLiteral("AND"),
-        QStringLiteral("OR"), QStringLiteral("XOR"), QStringLiteral("MAX"), QStringLiteral("MIN"),
-        QStringLiteral("CONCAT"), QStringLiteral("MUX")};
-    return kExtensible.contains(typeName.trimmed(), Qt::CaseInsensitive);
-}
-
 // ---- networks
 
 LdEditResult insertNetwork(LadderDocument &document, const LdCursor &cursor, bool after)

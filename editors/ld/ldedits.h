@@ -1,5 +1,6 @@
 #pragma once
 
+#include "editors/common/boxspec.h"
 #include "editors/ld/ldgeometry.h"
 #include "editors/ld/ldnetwork.h"
 
@@ -38,20 +39,7 @@ struct LdEditResult {
     [[nodiscard]] bool ok() const { return error.isEmpty(); }
 };
 
-// What a new box is: its type and pins (from the standard library or the project's POU), and
-// which pins carry the rung. `withEn` adds EN/ENO in front (CoDeSys "box with EN").
-struct BoxSpec {
-    QString typeName;
-    bool functionBlock = false; // needs an instance (its name is "???" until typed)
-    QStringList inputs;
-    QStringList outputs;
-    int rungInput = 0;  // index in inputs
-    int rungOutput = 0; // index in outputs, -1 when the box passes no power on
-    bool withEn = false;
-};
-
-// The text a new element shows until the user types its variable (CoDeSys does the same).
-inline const QString kPlaceholder = QStringLiteral("???");
+// BoxSpec, kPlaceholder and isExtensible are shared with FBD (editors/common/boxspec.h).
 
 // ---- networks
 LdEditResult insertNetwork(LadderDocument &document, const LdCursor &cursor, bool after);
@@ -80,7 +68,6 @@ LdEditResult insertBoxAssignment(LadderDocument &document, const LdCursor &curso
 // An operator box (the spec, AND by default) in front of the side input at the cursor: the
 // variable there becomes its first input.
 LdEditResult insertOperatorAtInput(LadderDocument &document, const LdCursor &cursor, const BoxSpec &spec);
-bool isExtensible(const QString &typeName);
 
 // ---- properties
 LdEditResult toggleNegation(LadderDocument &document, const LdCursor &cursor);

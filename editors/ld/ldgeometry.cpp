@@ -10,14 +10,6 @@ namespace iec::editors::ld {
 using namespace model;
 using namespace geometry;
 
-double textWidth(const QString &text)
-{
-    double width = 0;
-    for (const QChar c : text)
-        width += c.unicode() >= 0x2E80 ? 13 : (c.isUpper() || c.isDigit() ? 7.5 : 6.5);
-    return std::ceil(width);
-}
-
 namespace {
 
 QString variableOf(const Element &e)
@@ -33,11 +25,6 @@ QString variableOf(const Element &e)
     if (const auto *jump = std::get_if<Jump>(&e))
         return jump->label;
     return {};
-}
-
-double roundUp(double value, double step)
-{
-    return std::ceil(value / step) * step;
 }
 
 // A box's pin rows: rung pin first, the others in their order.
@@ -57,15 +44,7 @@ double variableWidth(const QString &text)
 
 QSizeF boxSize(const Block &block)
 {
-    double left = 0;
-    double right = 0;
-    for (const BlockVariable &v : block.inputVariables)
-        left = std::max(left, textWidth(v.formalParameter));
-    for (const BlockVariable &v : block.inOutVariables)
-        left = std::max(left, textWidth(v.formalParameter));
-    for (const BlockVariable &v : block.outputVariables)
-        right = std::max(right, textWidth(v.formalParameter));
-    const double width = roundUp(std::max({60.0, left + right + 24, textWidth(block.typeName) + 16}), 10);
+    const double width = boxWidth(block);
     const std::size_t rows = std::max(block.inputVariables.size() + block.inOutVariables.size(), block.outputVariables.size());
     return {width, kBoxTitle + double(std::max<std::size_t>(rows, 1)) * kPinPitch};
 }

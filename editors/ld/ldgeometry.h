@@ -1,5 +1,6 @@
 #pragma once
 
+#include "editors/common/textmetrics.h"
 #include "editors/ld/ldnetwork.h"
 
 #include <QList>
@@ -36,9 +37,9 @@ constexpr double kHeaderLine = 16;     // a label or comment line above the rung
 constexpr double kNetworkPad = 10;     // above and below the rung, inside the network
 } // namespace geometry
 
-// The width of a text in the editor's font, estimated per character (CJK characters count
-// about twice).
-double textWidth(const QString &text);
+// textWidth, roundUp and boxWidth are shared (editors/common/textmetrics.h).
+using editors::textWidth;
+using editors::roundUp;
 
 // A point on a rung's wire where the cursor can stand: between two elements of a series, or at
 // its start or end. `path` leads from the rung (a Series) through child indices to a Series;

@@ -29,21 +29,6 @@ template<class Visit> void forEachInput(const Element &element, Visit visit)
 
 } // namespace
 
-int outputPinIndex(const Element &source, const std::optional<QString> &formalParameter)
-{
-    const auto *block = std::get_if<Block>(&source);
-    if (!block)
-        return 0;
-    const std::vector<BlockVariable> &outputs = block->outputVariables;
-    if (formalParameter && !formalParameter->isEmpty()) {
-        for (std::size_t p = 0; p < outputs.size(); ++p)
-            if (outputs[p].formalParameter.compare(*formalParameter, Qt::CaseInsensitive) == 0)
-                return int(p);
-        return -1;
-    }
-    return outputs.size() == 1 ? 0 : -1;
-}
-
 LdGraph::LdGraph(const std::vector<Element> &elements)
     : m_elements(elements)
     , m_inputs(elements.size())

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "editors/common/elementpool.h"
 #include "model/body.h"
 #include "model/element.h"
 
@@ -45,8 +46,7 @@ private:
     std::vector<std::vector<Reader>> m_readers;
 };
 
-// The output pin of `source` a connection names (by its formalParameter; a box's only output when
-// it names none), -1 when the source has no such pin. Elements other than boxes have pin 0.
-int outputPinIndex(const model::Element &source, const std::optional<QString> &formalParameter);
+// outputPinIndex is shared (editors/common/elementpool.h).
+using editors::outputPinIndex;
 
 } // namespace iec::editors::ld

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "editors/common/elementpool.h"
 #include "model/body.h"
 #include "model/element.h"
 
@@ -59,36 +60,16 @@ struct RungPins {
 };
 
 // An LD body's elements (the pool, in file order) with the networks read from them.
-struct LadderDocument {
-    std::vector<model::Element> elements;
+struct LadderDocument : ElementPool {
     std::vector<LdNetwork> networks;
-    // Never below the largest localId this document has held (reindex() raises it), so an edit that removes an element
-    // and adds another does not hand out the removed one's id (undo relies on ids being distinct).
-    quint64 idFloor = 0;
 
-    [[nodiscard]] const model::Element *element(quint64 localId) const;
-    model::Element *element(quint64 localId);
-    [[nodiscard]] int indexOf(quint64 localId) const; // in `elements`, -1 when absent
-    [[nodiscard]] quint64 allocateId();
-    // Gives the element a fresh localId and inserts it at `index` (-1: the end).
-    quint64 add(model::Element element, int index = -1);
+    // Removes the elements, the wires from them and their places in the networks.
     void remove(const std::vector<quint64> &localIds);
-    // Moves the element at `from` so that it ends up at index `to` of `elements`.
-    void moveElement(int from, int to);
     // The network an element belongs to, -1 for none.
     [[nodiscard]] int networkOf(quint64 localId) const;
     // The rung pins of every box in a rung (read from its wires, or set by the edit that made it).
     std::unordered_map<quint64, RungPins> boxPins;
     [[nodiscard]] RungPins pinsOf(quint64 boxId) const;
-    void reindex(); // after `elements` changed by hand
-    // After the elements from `first` on changed places or were inserted (cheaper than reindex on
-    // a large body: the ids before `first` keep their entries).
-    void reindexFrom(std::size_t first, std::size_t last = std::size_t(-1));
-
-private:
-    // A QHash, not a std::unordered_map: the editor copies the document on every command, and a
-    // QHash copies its buckets in a few blocks instead of one allocation per element.
-    QHash<quint64, std::size_t> m_index;
 };
 
 // Our own addData on the rails of a network the editor laid out: such a rail belongs to one

@@ -1,13 +1,13 @@
 #include "editors/ld/ldoverlay.h"
 
 #include "editors/common/blockitems.h"
+#include "editors/common/diagramonline.h"
 #include "editors/common/diagramscene.h"
 #include "editors/ld/ldscene.h"
 #include "editors/text/onlinevalues.h"
 #include "interpreter/runtime/snapshot.h"
 
 #include <QGraphicsView>
-#include <QRegularExpression>
 
 #include <algorithm>
 
@@ -16,14 +16,6 @@ namespace iec::editors::ld {
 using namespace model;
 
 namespace {
-
-// A variable, a member or an element with a constant index: something the runtime can read.
-bool isVariablePath(const QString &text)
-{
-    static const QRegularExpression path(
-        QStringLiteral(R"(^(%[IQM][XBWDL]?\d+(\.\d+)*|[A-Za-z_]\w*(\.[A-Za-z_]\w*|\[\d+\])*)$)"));
-    return path.match(text.trimmed()).hasMatch();
-}
 
 QString pathOf(const Element &e)
 {
@@ -36,25 +28,6 @@ QString pathOf(const Element &e)
     if (const auto *out = std::get_if<OutVariable>(&e))
         return out->expression;
     return {};
-}
-
-bool isTrue(const QString &literal)
-{
-    return literal.compare(QLatin1String("TRUE"), Qt::CaseInsensitive) == 0;
-}
-
-// A function block instance's pins, by the name the runtime knows them ("Main.T1.Q").
-QHash<QString, QString> pinNames(const Block &block, const QString &instance)
-{
-    QHash<QString, QString> names;
-    if (!block.instanceName || !isVariablePath(*block.instanceName))
-        return names;
-    for (const auto *list : {&block.inputVariables, &block.inOutVariables, &block.outputVariables})
-        for (const BlockVariable &pin : *list)
-            if (pin.formalParameter.compare(QLatin1String("EN"), Qt::CaseInsensitive) != 0
-                && pin.formalParameter.compare(QLatin1String("ENO"), Qt::CaseInsensitive) != 0)
-                names.insert(pin.formalParameter.toUpper(), onlineName(instance, *block.instanceName + QLatin1Char('.') + pin.formalParameter));
-    return names;
 }
 
 } // namespace
@@ -78,32 +51,11 @@ QStringList LdOverlayMapper::names(const DiagramScene &, const QString &instance
         if (const QString name = variableName(header(e).localId, instance); !name.isEmpty())
             names << name;
         if (const auto *block = std::get_if<Block>(&e))
-            names += pinNames(*block, instance).values();
+            names += instancePinNames(*block, instance).values();
     }
     names.removeDuplicates();
     return names;
 }
-
-namespace {
-
-// The networks [first, last) that any view of the scene shows; all of them when no view does
-// (an export). Networks are laid out top to bottom.
-std::pair<std::size_t, std::size_t> visibleNetworks(const DiagramScene &scene, const std::vector<NetworkGeometry> &layout)
-{
-    QRectF visible;
-    for (const QGraphicsView *view : scene.views())
-        visible |= view->mapToScene(view->viewport()->rect()).boundingRect();
-    if (visible.isNull())
-        return {0, layout.size()};
-    const auto below = [](const NetworkGeometry &g, double y) { return g.top + g.height < y; };
-    const auto first = std::lower_bound(layout.begin(), layout.end(), visible.top(), below);
-    auto last = first;
-    while (last != layout.end() && last->top <= visible.bottom())
-        ++last;
-    return {std::size_t(first - layout.begin()), std::size_t(last - layout.begin())};
-}
-
-} // namespace
 
 void LdOverlayMapper::apply(DiagramScene &scene, const interp::RuntimeSnapshot &snapshot, const QString &instance)
 {
@@ -116,7 +68,9 @@ void LdOverlayMapper::apply(DiagramScene &scene, const interp::RuntimeSnapshot &
     }
     // Only what is on screen: a body of 1,000 networks shows a few of them, and the editor applies
     // the snapshot again when the view scrolls.
-    const auto [first, last] = visibleNetworks(scene, m_policy.layout());
+    const std::vector<NetworkGeometry> &layout = m_policy.layout();
+    const auto [first, last] = visibleBands(scene, layout.size(), [&](std::size_t i) { return layout[i].top; },
+        [&](std::size_t i) { return layout[i].top + layout[i].height; });
     for (std::size_t n = first; n < last && n < m_policy.networkItems().size(); ++n)
         applyToNetwork(scene, n, snapshot, instance);
 }
@@ -139,8 +93,8 @@ void LdOverlayMapper::applyToNetwork(DiagramScene &scene, std::size_t index, con
                     return std::nullopt;
                 // A function block's rung output is its own (TON's Q); a function passes EN on.
                 const QString pin = block->outputVariables[std::size_t(pins.output)].formalParameter;
-                const QString name = pinNames(*block, instance).value(pin.toUpper());
-                return name.isEmpty() ? in : isTrue(m_values.now.value(name));
+                const QString name = instancePinNames(*block, instance).value(pin.toUpper());
+                return name.isEmpty() ? in : isTrueLiteral(m_values.now.value(name));
             }
             return std::nullopt;
         });
@@ -156,7 +110,7 @@ void LdOverlayMapper::applyToNetwork(DiagramScene &scene, std::size_t index, con
             if (std::holds_alternative<Contact>(*e))
                 item->setActive(contactCloses(std::get<Contact>(*e), variableName(id, instance), m_values));
             else if (std::holds_alternative<Coil>(*e))
-                item->setActive(isTrue(m_values.now.value(variableName(id, instance))));
+                item->setActive(isTrueLiteral(m_values.now.value(variableName(id, instance))));
             else
                 item->setActive(in);
         }
@@ -172,7 +126,7 @@ void LdOverlayMapper::applyToNetwork(DiagramScene &scene, std::size_t index, con
         DiagramItem *item = scene.itemFor(id);
         if (auto *box = dynamic_cast<BoxItem *>(item)) {
             QHash<QString, QString> values;
-            const auto names = pinNames(std::get<Block>(box->element()), instance);
+            const auto names = instancePinNames(std::get<Block>(box->element()), instance);
             for (auto it = names.begin(); it != names.end(); ++it)
                 values.insert(it.key(), snapshot.value(it.value()));
             box->setPinValues(values);

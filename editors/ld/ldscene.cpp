@@ -22,18 +22,6 @@ QList<QPointF> orthogonal(QPointF from, QPointF to)
     return {from, QPointF(middle, from.y()), QPointF(middle, to.y()), to};
 }
 
-// A box drawn by another tool: its pins on the rows their relPositions say.
-std::vector<int> rowsFromFile(const std::vector<BlockVariable> &pins, bool inputs)
-{
-    std::vector<int> rows;
-    for (std::size_t p = 0; p < pins.size(); ++p) {
-        const auto &rel = inputs ? (pins[p].connectionPointIn ? pins[p].connectionPointIn->relPosition : std::nullopt)
-                                 : (pins[p].connectionPointOut ? pins[p].connectionPointOut->relPosition : std::nullopt);
-        rows.push_back(rel ? std::max(0, int(std::lround((rel->y - kBoxTitle - kPinPitch / 2) / kPinPitch))) : int(p));
-    }
-    return rows;
-}
-
 } // namespace
 
 DiagramItem *createLadderItem(const LadderDocument &document, quint64 localId, const QRectF &rect, bool framedVariables)
@@ -47,17 +35,14 @@ DiagramItem *createLadderItem(const LadderDocument &document, quint64 localId, c
         return new CoilItem(*e, rect);
     if (const auto *block = std::get_if<Block>(e)) {
         const RungPins pins = document.pinsOf(localId);
+        if (framedVariables)
+            return boxItemAsDrawn(*e, rect);
         std::vector<int> inputRows;
         std::vector<int> outputRows;
-        if (framedVariables) {
-            inputRows = rowsFromFile(block->inputVariables, true);
-            outputRows = rowsFromFile(block->outputVariables, false);
-        } else {
-            for (int p = 0; p < int(block->inputVariables.size() + block->inOutVariables.size()); ++p)
-                inputRows.push_back(boxInputRow(*block, p, pins));
-            for (int p = 0; p < int(block->outputVariables.size()); ++p)
-                outputRows.push_back(boxOutputRow(*block, p, pins));
-        }
+        for (int p = 0; p < int(block->inputVariables.size() + block->inOutVariables.size()); ++p)
+            inputRows.push_back(boxInputRow(*block, p, pins));
+        for (int p = 0; p < int(block->outputVariables.size()); ++p)
+            outputRows.push_back(boxOutputRow(*block, p, pins));
         return new BoxItem(*e, rect, std::move(inputRows), std::move(outputRows));
     }
     if (std::holds_alternative<InVariable>(*e) || std::holds_alternative<InOutVariable>(*e))
@@ -75,47 +60,6 @@ DiagramItem *createLadderItem(const LadderDocument &document, quint64 localId, c
 
 namespace {
 
-void clearPlace(ConnectionPointIn &point)
-{
-    point.relPosition.reset();
-    for (Connection &c : point.connections)
-        c.waypoints.clear();
-}
-
-// The element without what the layout decides.
-Element withoutPlace(Element e)
-{
-    ElementHeader &h = header(e);
-    h.position = {};
-    h.width.reset();
-    h.height.reset();
-    for (ConnectionPointIn *point : inputPoints(e))
-        clearPlace(*point);
-    std::visit(
-        [](auto &x) {
-            using T = std::decay_t<decltype(x)>;
-            if constexpr (std::is_same_v<T, Block>) {
-                for (auto *list : {&x.inputVariables, &x.inOutVariables, &x.outputVariables})
-                    for (BlockVariable &v : *list) {
-                        if (v.connectionPointIn)
-                            clearPlace(*v.connectionPointIn);
-                        if (v.connectionPointOut)
-                            v.connectionPointOut->relPosition.reset();
-                    }
-            } else if constexpr (std::is_same_v<T, LeftPowerRail>) {
-                x.connectionPointOuts.clear(); // one per wire, where the wires leave
-            } else if constexpr (std::is_same_v<T, RightPowerRail>) {
-                for (ConnectionPointIn &point : x.connectionPointIns)
-                    clearPlace(point);
-            } else if constexpr (requires { x.connectionPointOut; }) {
-                if (x.connectionPointOut)
-                    x.connectionPointOut->relPosition.reset();
-            }
-        },
-        e);
-    return e;
-}
-
 // The network of the old document that a new network is (by its left rail, else its first element).
 quint64 identityOf(const LdNetwork &network)
 {
@@ -123,11 +67,6 @@ quint64 identityOf(const LdNetwork &network)
 }
 
 } // namespace
-
-bool sameButPlace(const Element &a, const Element &b)
-{
-    return a.index() == b.index() && withoutPlace(a) == withoutPlace(b);
-}
 
 const std::vector<Element> *LdPolicy::elements(const ProjectModel &model, const BodyRef &ref) const
 {

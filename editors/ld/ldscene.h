@@ -1,6 +1,7 @@
 #pragma once
 
 #include "editors/common/diagramscene.h"
+#include "editors/common/networkitems.h"
 #include "editors/ld/ldgeometry.h"
 #include "editors/ld/ldnetwork.h"
 
@@ -17,7 +18,7 @@
 // network's items, not the whole scene.
 namespace iec::editors::ld {
 
-class NetworkItem;
+
 
 class LdPolicy : public DiagramPolicy
 {
@@ -63,8 +64,7 @@ private:
 // The item for one laid-out element (nullptr for elements drawn by the network band).
 DiagramItem *createLadderItem(const LadderDocument &document, quint64 localId, const QRectF &rect, bool framedVariables);
 
-// Whether two elements differ only where the layout puts them (positions, sizes, pin positions,
-// wire corners): then a rung network looks the same, only elsewhere.
-bool sameButPlace(const model::Element &a, const model::Element &b);
+// sameButPlace is shared (editors/common/elementpool.h).
+using editors::sameButPlace;
 
 } // namespace iec::editors::ld

@@ -87,7 +87,9 @@ void SfcOverlayMapper::apply(DiagramScene &scene, const interp::RuntimeSnapshot 
         return state && state->active ? state : nullptr;
     };
     for (DiagramItem *item : scene.diagramItems()) {
-        auto *sfcItem = static_cast<SfcItem *>(item);
+        auto *sfcItem = dynamic_cast<SfcItem *>(item);
+        if (!sfcItem)
+            continue; // an FBD box wired into a transition
         const Element &e = sfcItem->element();
         if (std::holds_alternative<Step>(e) || std::holds_alternative<MacroStep>(e)) {
             const interp::sfc::StepState *state = stepActive(item->localId(), e);
@@ -102,7 +104,7 @@ void SfcOverlayMapper::apply(DiagramScene &scene, const interp::RuntimeSnapshot 
             const auto &in = std::get<ActionBlock>(e).connectionPointIn;
             const bool connected = in && !in->connections.empty();
             const quint64 stepId = connected ? in->connections.front().refLocalId : 0;
-            const auto *step = connected ? static_cast<SfcItem *>(scene.itemFor(stepId)) : nullptr;
+            const auto *step = connected ? dynamic_cast<SfcItem *>(scene.itemFor(stepId)) : nullptr;
             const bool ownStepActive = step && stepActive(stepId, step->element());
             block->setActiveActions(ownStepActive ? chart.activeActions : QSet<QString> {});
         }

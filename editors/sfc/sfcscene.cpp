@@ -1,5 +1,7 @@
 #include "editors/sfc/sfcscene.h"
 
+#include "editors/common/blockitems.h"
+
 #include "editors/sfc/sfcgeometry.h"
 #include "editors/sfc/sfcitems.h"
 #include "editors/sfc/sfclayout.h"
@@ -119,23 +121,28 @@ void SfcPolicy::populate(DiagramScene &scene, const std::vector<Element> &elemen
     QList<QRectF> obstacles;
     std::vector<SfcItem *> labelled;
     for (const Element &e : elements) {
-        SfcItem *item = nullptr;
-        if (std::holds_alternative<Step>(e) || std::holds_alternative<MacroStep>(e))
-            item = new StepItem(e);
+        // FBD elements in a chart (Beremiz wires boxes into transitions) are drawn as FBD draws
+        // them; everything else of a chart by its own items.
+        DiagramItem *item = nullptr;
+        SfcItem *chartItem = nullptr;
+        if (std::holds_alternative<Block>(e))
+            item = boxItemAsDrawn(e, elementRect(e));
+        else if (std::holds_alternative<Step>(e) || std::holds_alternative<MacroStep>(e))
+            item = chartItem = new StepItem(e);
         else if (std::holds_alternative<Transition>(e))
-            item = new TransitionItem(e);
+            item = chartItem = new TransitionItem(e);
         else if (const auto *jump = std::get_if<JumpStep>(&e))
-            item = new JumpItem(e, stepNames.contains(jump->targetName.toLower()));
+            item = chartItem = new JumpItem(e, stepNames.contains(jump->targetName.toLower()));
         else if (isBar(e))
-            item = new BarItem(e);
+            item = chartItem = new BarItem(e);
         else if (std::holds_alternative<ActionBlock>(e))
-            item = new ActionBlockItem(e);
+            item = chartItem = new ActionBlockItem(e);
         else
-            item = new OtherItem(e);
+            item = chartItem = new OtherItem(e);
         scene.addElementItem(item);
         obstacles << item->frame();
-        if (!labelRect(e).isEmpty())
-            labelled.push_back(item);
+        if (chartItem && !labelRect(e).isEmpty())
+            labelled.push_back(chartItem);
         // Wires, drawn from the input side where TC6 keeps them.
         const Element *target = &e;
         std::vector<const ConnectionPointIn *> points = inputPoints(e);

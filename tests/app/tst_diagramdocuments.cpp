@@ -2,7 +2,8 @@
 // editor language and wires what it gets (grid, online instance, completion, opening actions),
 // the Insert, Edit and View menus show the current editor's commands and the status bar its
 // zoom, build messages on elements mark them; a language without an editor keeps the placeholder. A test language (the boxes of
-// tests/editors/boxdiagram.h, registered for FBD) stands in for the editors still to come.
+// tests/editors/boxdiagram.h, registered for FBD in place of the real editor) stands in for any
+// language.
 #include "app/buildcontroller.h"
 #include "app/documentarea.h"
 #include "app/mainwindow.h"
@@ -11,6 +12,7 @@
 #include "editors/common/diagramscene.h"
 #include "editors/common/diagramview.h"
 #include "editors/common/editorregistry.h"
+#include "editors/standardeditors.h"
 #include "editors/ld/ldeditor.h"
 #include "editors/sfc/sfceditor.h"
 #include "model/projectmodel.h"
@@ -98,6 +100,9 @@ class TestDiagramDocuments : public QObject
 private Q_SLOTS:
     void initTestCase()
     {
+        // The stand-in replaces the real FBD editor: registered after the standard editors (the
+        // window registers them once, and later calls change nothing).
+        editors::registerStandardEditors();
         editors::EditorRegistry::instance().add({editors::EditorLanguage::FBD,
             [](model::ProjectModel &model, const BodyRef &ref, QUndoStack *stack) -> editors::DiagramEditor * {
                 return new BoxEditor(model, ref, stack);

@@ -41,6 +41,7 @@ private Q_SLOTS:
     void renderDrawsCharts();
     void renderDrawsActionsAndTransitions();
     void renderDrawsLadder();
+    void renderDrawsFunctionBlockDiagrams();
     void renderRefuses_data();
     void renderRefuses();
 };
@@ -581,6 +582,25 @@ void TestCli::renderDrawsLadder()
     QVERIFY(bytes.contains("ResetCounterValue"));
 }
 
+void TestCli::renderDrawsFunctionBlockDiagrams()
+{
+    // Beremiz's plc_prg: five counters feeding AverageVal through in-out variables, drawn as a
+    // tree network, with every name as text.
+    const QString file = QStringLiteral(IEC_SHARED_DIR "/plcopen/corpus/beremiz_first_steps.xml");
+    if (!QFile::exists(file))
+        QSKIP("the PLCopen corpus of shared/ is not there");
+    QTemporaryDir dir;
+    const QString out = dir.filePath(QStringLiteral("fbd.svg"));
+    const Result result = cli({QStringLiteral("render"), file, QStringLiteral("--pou"), QStringLiteral("plc_prg"), out});
+    QCOMPARE(result.err, QString());
+    QCOMPARE(result.exitCode, 0);
+    QFile svg(out);
+    QVERIFY(svg.open(QIODevice::ReadOnly));
+    const QByteArray bytes = svg.readAll();
+    for (const char *name : {"AverageVal", "CounterST0", "CounterLD", ">Cnt5<", "AVCnt", ">Reset<"})
+        QVERIFY2(bytes.contains(name), name);
+}
+
 void TestCli::renderDrawsActionsAndTransitions()
 {
     // TwinCAT's PPU keeps SFC charts in actions of its function blocks.
@@ -610,7 +630,7 @@ void TestCli::renderDrawsActionsAndTransitions()
         QStringLiteral("ACT_GreenLampOn"), out});
     QCOMPARE(result.exitCode, 1);
     QCOMPARE(result.err.trimmed(), QStringLiteral("iecstudio-cli: render: Action 'Stamp.ACT_GreenLampOn' is written in ST, "
-                                                  "which cannot be drawn yet (LD, SFC can)."));
+                                                  "which cannot be drawn yet (LD, FBD, SFC can)."));
 }
 
 void TestCli::renderRefuses_data()
@@ -622,7 +642,7 @@ void TestCli::renderRefuses_data()
     QTest::newRow("not drawable yet") << QStringList {QStringLiteral("render"), file, QStringLiteral("--pou"),
         QStringLiteral("CounterST"), QStringLiteral("x.svg")} << 1
                                       << QStringLiteral("iecstudio-cli: render: POU 'CounterST' is written in ST, which "
-                                                        "cannot be drawn yet (LD, SFC can).");
+                                                        "cannot be drawn yet (LD, FBD, SFC can).");
     QTest::newRow("no such POU") << QStringList {QStringLiteral("render"), file, QStringLiteral("--pou"),
         QStringLiteral("Nope"), QStringLiteral("x.svg")} << 2
                                  << QStringLiteral("iecstudio-cli: render: %1 has no POU named 'Nope'.").arg(file);

@@ -14,6 +14,7 @@
 
 using namespace iec;
 using namespace iec::editors::ld;
+using iec::editors::BoxSpec;
 using model::Element;
 
 namespace {

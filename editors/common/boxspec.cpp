@@ -1,10 +1,10 @@
-#include "editors/ld/ldboxes.h"
+#include "editors/common/boxspec.h"
 
 #include "editors/text/standardlibrary.h"
 
 #include <QCoreApplication>
 
-namespace iec::editors::ld {
+namespace iec::editors {
 
 using namespace model;
 
@@ -134,4 +134,12 @@ std::optional<BoxSpec> boxSpecFor(const Project &project, const QString &typeNam
     return std::nullopt;
 }
 
-} // namespace iec::editors::ld
+bool isExtensible(const QString &typeName)
+{
+    static const QStringList kExtensible {QStringLiteral("ADD"), QStringLiteral("MUL"), QStringLiteral("AND"),
+        QStringLiteral("OR"), QStringLiteral("XOR"), QStringLiteral("MAX"), QStringLiteral("MIN"),
+        QStringLiteral("CONCAT"), QStringLiteral("MUX")};
+    return kExtensible.contains(typeName.trimmed(), Qt::CaseInsensitive);
+}
+
+} // namespace iec::editors
