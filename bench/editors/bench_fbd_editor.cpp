@@ -1,4 +1,4 @@
-// bench_fbd_editor: the FBD editor on a body of 500 networks (about 5,500 elements).
+// bench_fbd_editor: the FBD editor on a body of 500 networks (4,000 elements).
 //
 // Prints the time to open the body in the editor (read, lay out, build the scene), the time of a
 // command at the last and at the first network (the edit, the undo command, the scene following
@@ -30,7 +30,7 @@ namespace {
 
 constexpr int kNetworks = 500;
 
-// A network of eleven elements: Q_n := (A_n AND NOT B_n) OR T_n.Q with T_n(IN := C_n, PT := T#1s).
+// A network of eight elements: Q_n := (A_n AND NOT B_n) OR T_n.Q with T_n(IN := C_n, PT := T#1s).
 void addNetwork(FbdDocument &doc, int n)
 {
     const auto name = [n](const char *base) { return QStringLiteral("%1_%2").arg(QLatin1String(base)).arg(n); };

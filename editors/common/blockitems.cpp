@@ -257,7 +257,11 @@ QString VariableItem::text() const
 
 QRectF VariableItem::extent() const
 {
-    return onlineText().isEmpty() ? localFrame() : localFrame().adjusted(0, -14, 60, 0);
+    if (onlineText().isEmpty())
+        return localFrame();
+    if (m_framed)
+        return localFrame().adjusted(0, -14, 60, 0);
+    return std::holds_alternative<InVariable>(m_element) ? localFrame().adjusted(-74, 0, 0, 0) : localFrame().adjusted(0, 0, 74, 0);
 }
 
 void VariableItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QWidget *)
@@ -274,7 +278,15 @@ void VariableItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QW
     if (!onlineText().isEmpty()) {
         painter->setFont(blockFont());
         painter->setPen(isActive() ? kPowerBlue : kValue);
-        painter->drawText(QRectF(0, -14, m_size.width() + 60, 14), Qt::AlignLeft | Qt::AlignVCenter, onlineText());
+        // A framed variable (on a wire) carries its value above it; a plain one beside its name,
+        // on its own row, so that variables stacked row by row (a box's inputs) keep apart.
+        const double nameWidth = QFontMetricsF(blockFont()).horizontalAdvance(text());
+        if (m_framed)
+            painter->drawText(QRectF(0, -14, m_size.width() + 60, 14), Qt::AlignLeft | Qt::AlignVCenter, onlineText());
+        else if (feedsRight)
+            painter->drawText(QRectF(inner.right() - nameWidth - 74, 0, 70, m_size.height()), Qt::AlignRight | Qt::AlignVCenter, onlineText());
+        else
+            painter->drawText(QRectF(inner.left() + nameWidth + 6, 0, 70, m_size.height()), Qt::AlignLeft | Qt::AlignVCenter, onlineText());
     }
     paintDecorations(painter);
 }

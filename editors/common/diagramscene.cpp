@@ -270,9 +270,18 @@ void DiagramScene::growSceneRect(const ElementChanges &changes)
 
 // ---- mouse
 
+DiagramItem *DiagramScene::diagramItemAt(QPointF scenePos) const
+{
+    for (QGraphicsItem *item : items(scenePos, Qt::IntersectsItemShape, Qt::DescendingOrder, QTransform())) {
+        if (item->acceptedMouseButtons() != Qt::NoButton)
+            return diagramItemOf(item);
+    }
+    return nullptr;
+}
+
 void DiagramScene::mouseDoubleClickEvent(QGraphicsSceneMouseEvent *event)
 {
-    if (DiagramItem *item = diagramItemOf(itemAt(event->scenePos(), QTransform()))) {
+    if (DiagramItem *item = diagramItemAt(event->scenePos())) {
         Q_EMIT elementDoubleClicked(item->localId(), event->scenePos());
         event->accept();
         return;
@@ -282,7 +291,7 @@ void DiagramScene::mouseDoubleClickEvent(QGraphicsSceneMouseEvent *event)
 
 void DiagramScene::mousePressEvent(QGraphicsSceneMouseEvent *event)
 {
-    DiagramItem *item = diagramItemOf(itemAt(event->scenePos(), QTransform()));
+    DiagramItem *item = diagramItemAt(event->scenePos());
     if (event->button() == Qt::RightButton) {
         // The context menu acts on what was clicked: the element under the cursor becomes the
         // selection unless it is part of it already; elsewhere the selection stays (paste there).
@@ -344,7 +353,7 @@ void DiagramScene::mouseReleaseEvent(QGraphicsSceneMouseEvent *event)
 void DiagramScene::beginMove(QGraphicsSceneMouseEvent *event)
 {
     const std::vector<model::Element> *elements = shownElements();
-    DiagramItem *pressed = diagramItemOf(itemAt(event->scenePos(), QTransform()));
+    DiagramItem *pressed = diagramItemAt(event->scenePos());
     if (!elements || !pressed)
         return;
     const QList<quint64> selected = selectedLocalIds();

@@ -97,6 +97,10 @@ public:
     // Deletes the item of `localId` (and its children), if there is one.
     void removeElementItem(quint64 localId);
     [[nodiscard]] DiagramItem *itemFor(quint64 localId) const { return m_index.value(localId); }
+    // The element under a point: the topmost item there that takes mouse clicks, as its element
+    // (decorations that take none, such as a cursor frame drawn over an element, are looked
+    // through); nullptr over a wire or the background.
+    [[nodiscard]] DiagramItem *diagramItemAt(QPointF scenePos) const;
     // Every indexed item in stacking order (for navigation and tests; linear time).
     [[nodiscard]] QList<DiagramItem *> diagramItems() const;
 

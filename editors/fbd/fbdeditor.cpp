@@ -40,6 +40,7 @@ public:
         , m_holder(holder)
     {
         *holder = this;
+        setAcceptedMouseButtons(Qt::NoButton); // clicks go to the element under it
     }
     ~CursorFrame() override
     {

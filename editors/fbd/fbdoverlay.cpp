@@ -100,14 +100,18 @@ void FbdOverlayMapper::applyToNetwork(DiagramScene &scene, std::size_t index, co
             continue;
         if (auto *box = dynamic_cast<BoxItem *>(item)) {
             const auto &block = std::get<Block>(*e);
+            // Values at the outputs only: an input shows the value of what feeds it already (a
+            // variable its own, a box its output), and an output whose assignment shows the value
+            // leaves it to the assignment, so each value stands once on the drawing.
+            // An inner box's free outputs have the next branch's wires beside them: only the last
+            // box shows those.
             QHash<QString, QString> pins;
-            for (int pin = 0; pin < inputCount(*e); ++pin)
-                if (const auto source = sourceOf(document, id, pin))
-                    if (const QString v = valueAt(source->element, source->pin); !v.isEmpty())
-                        pins.insert(inputName(*e, pin).toUpper(), v);
-            for (int out = 0; out < int(block.outputVariables.size()); ++out)
-                if (const QString v = valueAt(id, out); !v.isEmpty())
+            for (int out = 0; out < int(block.outputVariables.size()); ++out) {
+                const Readers readers = readersOf(document, network, {id, out});
+                const bool room = id == network.root || network.freehand || !readers.nodes.empty();
+                if (const QString v = valueAt(id, out); !v.isEmpty() && readers.sinks.empty() && room)
                     pins.insert(block.outputVariables[std::size_t(out)].formalParameter.toUpper(), v);
+            }
             box->setPinValues(pins);
         } else if (auto *element = dynamic_cast<ElementItem *>(item)) {
             const QString name = variableName(id, instance);
