@@ -1,5 +1,7 @@
 #include "app/projecttemplates.h"
 
+#include "editors/fbd/fbdedits.h"
+#include "editors/fbd/fbdwrite.h"
 #include "editors/globals/globallists.h"
 #include "interpreter/frontend/iecreader.h"
 
@@ -82,6 +84,22 @@ model::Body initialChart()
     return main && main->body() ? *main->body() : model::Body::withLanguage(BodyLanguage::SFC);
 }
 
+// One network: Start assigned to Lamp, laid out as the FBD editor lays it out.
+model::Body fbdNetwork()
+{
+    using namespace editors::fbd;
+    FbdDocument document;
+    const FbdEditResult network = insertNetwork(document, FbdCursor::atNetwork(0), true);
+    setElementText(document, network.cursor.element, QStringLiteral("Start"));
+    for (const model::Element &e : std::vector<model::Element>(document.elements))
+        if (std::holds_alternative<model::OutVariable>(e))
+            setElementText(document, model::header(e).localId, QStringLiteral("Lamp"));
+    writeFbd(document);
+    model::Body body = model::Body::withLanguage(BodyLanguage::FBD);
+    *body.elements() = std::move(document.elements);
+    return body;
+}
+
 model::Pou mainProgram(ProjectTemplate projectTemplate)
 {
     model::Pou pou;
@@ -89,12 +107,15 @@ model::Pou mainProgram(ProjectTemplate projectTemplate)
     pou.kind = model::PouKind::Program;
     pou.pouInterface = model::Interface {};
     switch (projectTemplate) {
-    case ProjectTemplate::LD: {
+    case ProjectTemplate::LD:
+    case ProjectTemplate::FBD: {
         model::VarList locals;
-        locals.variables = {boolVariable(QStringLiteral("Start"), ProjectTemplates::tr("Closes the contact")),
+        const QString start = projectTemplate == ProjectTemplate::LD ? ProjectTemplates::tr("Closes the contact")
+                                                                     : ProjectTemplates::tr("Switches Lamp on and off");
+        locals.variables = {boolVariable(QStringLiteral("Start"), start),
             boolVariable(QStringLiteral("Lamp"), ProjectTemplates::tr("Lit while Start is TRUE"))};
         pou.pouInterface->varLists.push_back(locals);
-        pou.bodies.push_back(ladderRung());
+        pou.bodies.push_back(projectTemplate == ProjectTemplate::LD ? ladderRung() : fbdNetwork());
         break;
     }
     case ProjectTemplate::SFC:
@@ -106,9 +127,6 @@ model::Pou mainProgram(ProjectTemplate projectTemplate)
         pou.bodies.push_back(body);
         break;
     }
-    case ProjectTemplate::FBD:
-        pou.bodies.push_back(model::Body::withLanguage(BodyLanguage::FBD));
-        break;
     case ProjectTemplate::IL:
         pou.bodies.push_back(model::Body::withLanguage(BodyLanguage::IL));
         break;

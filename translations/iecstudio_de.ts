@@ -137,6 +137,10 @@
             <source>Lit while Start is TRUE</source>
             <translation>Leuchtet, solange Start TRUE ist</translation>
         </message>
+        <message>
+            <source>Switches Lamp on and off</source>
+            <translation>Schaltet Lamp ein und aus</translation>
+        </message>
     </context>
     <context>
         <name>iec::app</name>
@@ -2127,6 +2131,33 @@ Automatisch gespeichert: %2</translation>
         </message>
     </context>
     <context>
+        <name>iec::editors::NetworkDialogs</name>
+        <message>
+            <source>Network Label</source>
+            <translation>Netzwerkmarke</translation>
+        </message>
+        <message>
+            <source>Label of network %1 (empty: none):</source>
+            <translation>Marke von Netzwerk %1 (leer: keine):</translation>
+        </message>
+        <message>
+            <source>Network Comment</source>
+            <translation>Netzwerkkommentar</translation>
+        </message>
+        <message>
+            <source>Comment of network %1:</source>
+            <translation>Kommentar von Netzwerk %1:</translation>
+        </message>
+        <message>
+            <source>Jump</source>
+            <translation>Sprung</translation>
+        </message>
+        <message>
+            <source>Jump to the network with the label:</source>
+            <translation>Sprung zum Netzwerk mit der Marke:</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::editors::RowTable</name>
         <message>
             <source>Add</source>
@@ -2750,30 +2781,6 @@ Automatisch gespeichert: %2</translation>
             <translation>Einfügen</translation>
         </message>
         <message>
-            <source>Network Label</source>
-            <translation>Netzwerkmarke</translation>
-        </message>
-        <message>
-            <source>Label of network %1 (empty: none):</source>
-            <translation>Marke von Netzwerk %1 (leer: keine):</translation>
-        </message>
-        <message>
-            <source>Network Comment</source>
-            <translation>Netzwerkkommentar</translation>
-        </message>
-        <message>
-            <source>Comment of network %1:</source>
-            <translation>Kommentar von Netzwerk %1:</translation>
-        </message>
-        <message>
-            <source>Jump</source>
-            <translation>Sprung</translation>
-        </message>
-        <message>
-            <source>Jump to the network with the label:</source>
-            <translation>Sprung zum Netzwerk mit der Marke:</translation>
-        </message>
-        <message>
             <source>&amp;Network Before</source>
             <translation>Netzwerk &amp;davor</translation>
         </message>
@@ -3054,30 +3061,6 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>Paste</source>
             <translation>Einfügen</translation>
-        </message>
-        <message>
-            <source>Network Label</source>
-            <translation>Netzwerkmarke</translation>
-        </message>
-        <message>
-            <source>Label of network %1 (empty: none):</source>
-            <translation>Marke von Netzwerk %1 (leer: keine):</translation>
-        </message>
-        <message>
-            <source>Network Comment</source>
-            <translation>Netzwerkkommentar</translation>
-        </message>
-        <message>
-            <source>Comment of network %1:</source>
-            <translation>Kommentar von Netzwerk %1:</translation>
-        </message>
-        <message>
-            <source>Jump</source>
-            <translation>Sprung</translation>
-        </message>
-        <message>
-            <source>Jump to the network with the label:</source>
-            <translation>Sprung zum Netzwerk mit der Marke:</translation>
         </message>
         <message>
             <source>&amp;Network Before</source>

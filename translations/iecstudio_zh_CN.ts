@@ -136,6 +136,10 @@
             <source>Lit while Start is TRUE</source>
             <translation>Start 为 TRUE 时点亮</translation>
         </message>
+        <message>
+            <source>Switches Lamp on and off</source>
+            <translation>控制 Lamp 的开关</translation>
+        </message>
     </context>
     <context>
         <name>iec::app</name>
@@ -2122,6 +2126,33 @@ Autosaved: %2</source>
         </message>
     </context>
     <context>
+        <name>iec::editors::NetworkDialogs</name>
+        <message>
+            <source>Network Label</source>
+            <translation>节标号</translation>
+        </message>
+        <message>
+            <source>Label of network %1 (empty: none):</source>
+            <translation>第 %1 节的标号(留空:无):</translation>
+        </message>
+        <message>
+            <source>Network Comment</source>
+            <translation>节注释</translation>
+        </message>
+        <message>
+            <source>Comment of network %1:</source>
+            <translation>第 %1 节的注释:</translation>
+        </message>
+        <message>
+            <source>Jump</source>
+            <translation>跳转</translation>
+        </message>
+        <message>
+            <source>Jump to the network with the label:</source>
+            <translation>跳转到带有此标号的节:</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::editors::RowTable</name>
         <message>
             <source>Add</source>
@@ -2745,30 +2776,6 @@ Autosaved: %2</source>
             <translation>粘贴</translation>
         </message>
         <message>
-            <source>Network Label</source>
-            <translation>节标号</translation>
-        </message>
-        <message>
-            <source>Label of network %1 (empty: none):</source>
-            <translation>第 %1 节的标号(留空:无):</translation>
-        </message>
-        <message>
-            <source>Network Comment</source>
-            <translation>节注释</translation>
-        </message>
-        <message>
-            <source>Comment of network %1:</source>
-            <translation>第 %1 节的注释:</translation>
-        </message>
-        <message>
-            <source>Jump</source>
-            <translation>跳转</translation>
-        </message>
-        <message>
-            <source>Jump to the network with the label:</source>
-            <translation>跳转到带有此标号的节:</translation>
-        </message>
-        <message>
             <source>&amp;Network Before</source>
             <translation>前节(&amp;N)</translation>
         </message>
@@ -3049,30 +3056,6 @@ Autosaved: %2</source>
         <message>
             <source>Paste</source>
             <translation>粘贴</translation>
-        </message>
-        <message>
-            <source>Network Label</source>
-            <translation>节标号</translation>
-        </message>
-        <message>
-            <source>Label of network %1 (empty: none):</source>
-            <translation>第 %1 节的标号(空: 无):</translation>
-        </message>
-        <message>
-            <source>Network Comment</source>
-            <translation>节注释</translation>
-        </message>
-        <message>
-            <source>Comment of network %1:</source>
-            <translation>第 %1 节的注释:</translation>
-        </message>
-        <message>
-            <source>Jump</source>
-            <translation>跳转</translation>
-        </message>
-        <message>
-            <source>Jump to the network with the label:</source>
-            <translation>跳转到带此标号的节:</translation>
         </message>
         <message>
             <source>&amp;Network Before</source>

@@ -4,6 +4,7 @@
 #include "editors/common/diagramclipboard.h"
 #include "editors/common/diagramscene.h"
 #include "editors/common/diagramview.h"
+#include "editors/common/networkdialogs.h"
 #include "editors/fbd/fbdoverlay.h"
 #include "editors/fbd/fbdscene.h"
 #include "editors/fbd/fbdwrite.h"
@@ -470,11 +471,8 @@ void FbdEditor::askLabel()
     const int index = std::clamp(m_cursor.network, 0, int(document().networks.size()) - 1);
     const FbdNetwork &network = document().networks[std::size_t(index)];
     const QString current = network.label ? elementText(document(), network.label) : QString();
-    bool ok = false;
-    const QString label = QInputDialog::getText(this, tr("Network Label"), tr("Label of network %1 (empty: none):").arg(index + 1),
-        QLineEdit::Normal, current, &ok);
-    if (ok)
-        setNetworkLabel(label);
+    if (const auto label = NetworkDialogs::askLabel(this, index, current))
+        setNetworkLabel(*label);
 }
 
 void FbdEditor::askComment()
@@ -486,10 +484,8 @@ void FbdEditor::askComment()
     QString current;
     if (network.comment)
         current = std::get<Comment>(*document().element(network.comment)).content.text;
-    bool ok = false;
-    const QString comment = QInputDialog::getMultiLineText(this, tr("Network Comment"), tr("Comment of network %1:").arg(index + 1), current, &ok);
-    if (ok)
-        setNetworkComment(comment);
+    if (const auto comment = NetworkDialogs::askComment(this, index, current))
+        setNetworkComment(*comment);
 }
 
 void FbdEditor::askJump()
@@ -500,10 +496,8 @@ void FbdEditor::askJump()
     for (const FbdNetwork &network : document().networks)
         if (network.label)
             labels << elementText(document(), network.label);
-    bool ok = false;
-    const QString label = QInputDialog::getItem(this, tr("Jump"), tr("Jump to the network with the label:"), labels, 0, true, &ok);
-    if (ok && !label.trimmed().isEmpty())
-        insertJump(label);
+    if (const auto label = NetworkDialogs::askJumpTarget(this, labels))
+        insertJump(*label);
 }
 
 void FbdEditor::askBoxWithEn()

@@ -1,5 +1,7 @@
 #include "editors/fbd/fbdwrite.h"
 
+#include "editors/common/placement.h"
+
 #include <algorithm>
 #include <unordered_map>
 #include <unordered_set>
@@ -10,33 +12,6 @@ using namespace model;
 using namespace layout;
 
 namespace {
-
-Position toPosition(QPointF p)
-{
-    return Position {p.x(), p.y()};
-}
-
-std::vector<Position> waypoints(const QList<QPointF> &sourceToTarget)
-{
-    std::vector<Position> points;
-    for (qsizetype i = sourceToTarget.size() - 1; i >= 0; --i)
-        points.push_back(toPosition(sourceToTarget[i]));
-    return points; // PLCopen lists a wire from its input end (Beremiz draws it so)
-}
-
-void setRelPosition(std::optional<ConnectionPointIn> &point, QPointF offset)
-{
-    if (!point)
-        point.emplace();
-    point->relPosition = toPosition(offset);
-}
-
-void setRelPosition(std::optional<ConnectionPointOut> &point, QPointF offset)
-{
-    if (!point)
-        point.emplace();
-    point->relPosition = toPosition(offset);
-}
 
 // Position, size and pin positions of a placed element.
 void place(Element &element, const QRectF &rect, const FbdGeometry &g)
@@ -155,7 +130,7 @@ void writeFbd(FbdDocument &document)
                 Element *target = document.element(wire.target);
                 ConnectionPointIn *point = target ? inputPoint(*target, wire.targetPin) : nullptr;
                 if (point && !point->connections.empty())
-                    point->connections.front().waypoints = waypoints(wire.points);
+                    point->connections.front().waypoints = waypointsFrom(wire.points);
             }
         }
         if (network.label)

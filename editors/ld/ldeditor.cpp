@@ -3,6 +3,7 @@
 #include "editors/common/diagramclipboard.h"
 #include "editors/common/diagramscene.h"
 #include "editors/common/diagramview.h"
+#include "editors/common/networkdialogs.h"
 #include "editors/common/boxspec.h"
 #include "editors/ld/lditems.h"
 #include "editors/ld/ldoverlay.h"
@@ -13,7 +14,6 @@
 #include "model/projectmodel.h"
 
 #include <QGraphicsSceneMouseEvent>
-#include <QInputDialog>
 
 namespace iec::editors::ld {
 
@@ -492,11 +492,8 @@ void LdEditor::askLabel()
         return;
     const LdNetwork &network = document().networks[std::size_t(std::clamp(m_cursor.network, 0, int(document().networks.size()) - 1))];
     const QString current = network.label ? elementText(document(), network.label) : QString();
-    bool ok = false;
-    const QString label = QInputDialog::getText(this, tr("Network Label"), tr("Label of network %1 (empty: none):").arg(m_cursor.network + 1),
-        QLineEdit::Normal, current, &ok);
-    if (ok)
-        setNetworkLabel(label);
+    if (const auto label = NetworkDialogs::askLabel(this, m_cursor.network, current))
+        setNetworkLabel(*label);
 }
 
 void LdEditor::askComment()
@@ -507,10 +504,8 @@ void LdEditor::askComment()
     QString current;
     if (network.comment)
         current = std::get<Comment>(*document().element(network.comment)).content.text;
-    bool ok = false;
-    const QString comment = QInputDialog::getMultiLineText(this, tr("Network Comment"), tr("Comment of network %1:").arg(m_cursor.network + 1), current, &ok);
-    if (ok)
-        setNetworkComment(comment);
+    if (const auto comment = NetworkDialogs::askComment(this, m_cursor.network, current))
+        setNetworkComment(*comment);
 }
 
 void LdEditor::askJump()
@@ -521,10 +516,8 @@ void LdEditor::askJump()
     for (const LdNetwork &network : document().networks)
         if (network.label)
             labels << elementText(document(), network.label);
-    bool ok = false;
-    const QString label = QInputDialog::getItem(this, tr("Jump"), tr("Jump to the network with the label:"), labels, 0, true, &ok);
-    if (ok && !label.trimmed().isEmpty())
-        insertJump(label);
+    if (const auto label = NetworkDialogs::askJumpTarget(this, labels))
+        insertJump(*label);
 }
 
 bool LdEditor::cursorOn(bool (*test)(const Element &)) const

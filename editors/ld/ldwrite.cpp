@@ -1,5 +1,7 @@
 #include "editors/ld/ldwrite.h"
 
+#include "editors/common/placement.h"
+
 #include <algorithm>
 #include <map>
 #include <set>
@@ -10,11 +12,6 @@ using namespace model;
 using namespace geometry;
 
 namespace {
-
-Position toPosition(QPointF p)
-{
-    return {p.x(), p.y()};
-}
 
 // The connection point of an element's input pin (created when missing).
 ConnectionPointIn &inputPoint(Element &element, int pin)
@@ -47,28 +44,6 @@ std::optional<QString> outputName(const Element &source, int pin)
     if (!block || pin < 0 || pin >= int(block->outputVariables.size()))
         return std::nullopt;
     return block->outputVariables[std::size_t(pin)].formalParameter;
-}
-
-std::vector<Position> waypoints(const QList<QPointF> &sourceToTarget)
-{
-    std::vector<Position> points;
-    for (qsizetype i = sourceToTarget.size() - 1; i >= 0; --i)
-        points.push_back(toPosition(sourceToTarget[i]));
-    return points; // PLCopen lists a wire from its input end (Beremiz draws it so)
-}
-
-void setRelPosition(std::optional<ConnectionPointIn> &point, QPointF offset)
-{
-    if (!point)
-        point.emplace();
-    point->relPosition = toPosition(offset);
-}
-
-void setRelPosition(std::optional<ConnectionPointOut> &point, QPointF offset)
-{
-    if (!point)
-        point.emplace();
-    point->relPosition = toPosition(offset);
 }
 
 // Position, size and pin positions of a placed element.
@@ -189,7 +164,7 @@ private:
             connection.refLocalId = run.source;
             if (!std::holds_alternative<LeftPowerRail>(*source))
                 connection.formalParameter = outputName(*source, run.sourcePin);
-            connection.waypoints = waypoints(run.points);
+            connection.waypoints = waypointsFrom(run.points);
             if (run.target == m_network.rightRail) {
                 auto &rail = std::get<RightPowerRail>(*m_document.element(m_network.rightRail));
                 ConnectionPointIn point;

@@ -456,6 +456,15 @@ private Q_SLOTS:
             }
         QVERIFY(blue >= 2);
         QVERIFY(black >= 4);
+        // A double-click on a variable prepares the opposite value, also with the cursor's frame
+        // drawn over it.
+        QStringList prepared;
+        connect(m_editor.get(), &editors::DiagramEditor::prepareValueRequested, this,
+            [&](const QString &name, const QString &literal) { prepared << name + QStringLiteral(" := ") + literal; });
+        m_editor->setCursor(FbdCursor::at(Kind::Text, 1, m_editor->elementNamed(QStringLiteral("A"))));
+        const QPoint onA = m_editor->view()->mapFromScene(a->frame().center());
+        QTest::mouseDClick(m_editor->view()->viewport(), Qt::LeftButton, {}, onA);
+        QCOMPARE(prepared, QStringList {QStringLiteral("Main.A := FALSE")});
         // Editing is refused online.
         QVERIFY(!m_editor->trigger(QStringLiteral("fbdOperator")));
         QVERIFY(!m_editor->lastMessage().isEmpty());
