@@ -1,5 +1,7 @@
 #include "editors/fbd/fbdedits.h"
 
+#include "editors/fbd/fbdeditsupport.h"
+
 #include <QCoreApplication>
 
 #include <algorithm>
@@ -9,7 +11,9 @@ namespace iec::editors::fbd {
 using namespace model;
 using Kind = FbdCursor::Kind;
 
-namespace {
+// The helpers the edits share with the clipboard (fbdclipboard.cpp): declared in
+// fbdeditsupport.h.
+namespace detail {
 
 // A refusal; `text` is marked with QT_TRANSLATE_NOOP in the FbdEdits context.
 FbdEditResult refuse(const char *text)
@@ -242,7 +246,9 @@ void removeBranch(FbdDocument &document, FbdNetwork &network, quint64 node)
     document.remove(branchOf(document, network, node));
 }
 
-} // namespace
+} // namespace detail
+
+using namespace detail;
 
 // ---- networks
 
@@ -750,199 +756,6 @@ FbdEditResult deleteAtCursor(FbdDocument &document, const FbdCursor &cursor)
         return {{}, FbdCursor::atNetwork(std::max(0, std::min(at.network, int(document.networks.size()) - 1)))};
     }
     return {{}, FbdCursor::atNetwork(at.network)};
-}
-
-// ---- copy and paste
-
-std::vector<Element> copyAtCursor(const FbdDocument &document, const FbdCursor &cursor, QString *error)
-{
-    std::vector<quint64> ids;
-    if (cursor.network < 0 || cursor.network >= int(document.networks.size())) {
-        *error = QCoreApplication::translate("iec::editors::fbd::FbdEdits", "There is nothing to copy here.");
-        return {};
-    }
-    const FbdNetwork &network = document.networks[std::size_t(cursor.network)];
-    const FbdCursor at = normalized(document, cursor);
-    if (cursor.kind == Kind::Network) {
-        ids = network.members;
-    } else if (at.kind == Kind::Box) {
-        ids = branchOf(document, network, at.element);
-    } else if (at.kind == Kind::Input) {
-        if (const auto source = sourceOf(document, at.element, at.pin))
-            ids = branchOf(document, network, source->element);
-    }
-    if (ids.empty()) {
-        *error = QCoreApplication::translate("iec::editors::fbd::FbdEdits", "Select a network, a box or an input to copy.");
-        return {};
-    }
-    std::vector<Element> fragment;
-    for (const Element &e : document.elements)
-        if (std::ranges::find(ids, header(e).localId) != ids.end())
-            fragment.push_back(e);
-    // Wires to elements outside the copy are dropped.
-    for (Element &e : fragment)
-        for (ConnectionPointIn *point : inputPoints(e))
-            std::erase_if(point->connections, [&](const Connection &c) { return std::ranges::find(ids, c.refLocalId) == ids.end(); });
-    return fragment;
-}
-
-FbdEditResult pasteFragment(FbdDocument &document, const FbdCursor &cursor, std::vector<Element> fragment)
-{
-    if (fragment.empty())
-        return refuse(QT_TRANSLATE_NOOP("iec::editors::fbd::FbdEdits", "There is nothing to paste."));
-    const bool fbdOnly = std::ranges::all_of(fragment, [](const Element &e) {
-        return isNode(e) || isSink(e) || std::holds_alternative<Label>(e) || std::holds_alternative<Comment>(e);
-    });
-    if (!fbdOnly)
-        return refuse(QT_TRANSLATE_NOOP("iec::editors::fbd::FbdEdits", "The clipboard holds elements of another language (not a function block diagram): nothing was pasted."));
-    // Fresh ids above the document's, wires inside the fragment following them.
-    std::unordered_map<quint64, quint64> ids;
-    quint64 next = document.idFloor;
-    for (Element &e : fragment)
-        ids[header(e).localId] = ++next;
-    for (Element &e : fragment) {
-        header(e).localId = ids[header(e).localId];
-        for (ConnectionPointIn *point : inputPoints(e)) {
-            std::erase_if(point->connections, [&](const Connection &c) { return !ids.contains(c.refLocalId); });
-            for (Connection &c : point->connections)
-                c.refLocalId = ids[c.refLocalId];
-        }
-    }
-    FbdDocument pasted = readFbd(fragment);
-    const bool branch = pasted.networks.size() == 1 && !pasted.networks.front().freehand && pasted.networks.front().root
-        && !pasted.networks.front().label
-        && std::ranges::none_of(fragment, [&](const Element &e) {
-               return isSink(e) && sourceOf(pasted, header(e).localId, 0) && sourceOf(pasted, header(e).localId, 0)->element == pasted.networks.front().root;
-           });
-    const auto addAll = [&](FbdNetwork &network) {
-        for (Element &e : fragment) {
-            network.members.push_back(header(e).localId);
-            document.elements.push_back(std::move(e));
-        }
-        document.reindexFrom(document.elements.size() - fragment.size());
-    };
-    const FbdCursor at = normalized(document, cursor);
-    if (branch && at.kind == Kind::Input && !checkNetwork(document, at.network, true)) {
-        // On an input: the branch replaces what fed it.
-        FbdNetwork &network = document.networks[std::size_t(at.network)];
-        if (const auto source = sourceOf(document, at.element, at.pin))
-            removeBranch(document, network, source->element);
-        const quint64 root = pasted.networks.front().root;
-        addAll(network);
-        connectInput(document, at.element, at.pin, {root, 0});
-        refreshRoot(document, network);
-        return {{}, FbdCursor::at(Kind::Box, at.network, root)};
-    }
-    // Otherwise as networks of their own, after the cursor's.
-    int insertAt = document.networks.empty() ? 0 : std::clamp(cursor.network + 1, 0, int(document.networks.size()));
-    const int first = insertAt;
-    for (FbdNetwork &piece : pasted.networks) {
-        FbdNetwork network;
-        network.label = piece.label;
-        network.comment = piece.comment;
-        network.root = piece.root;
-        network.freehand = piece.freehand;
-        for (quint64 id : piece.members) {
-            const auto it = std::ranges::find_if(fragment, [&](const Element &e) { return header(e).localId == id; });
-            if (it == fragment.end())
-                continue;
-            network.members.push_back(id);
-            document.elements.push_back(std::move(*it));
-            document.reindexFrom(document.elements.size() - 1);
-        }
-        document.networks.insert(document.networks.begin() + insertAt++, std::move(network));
-    }
-    return {{}, FbdCursor::atNetwork(first)};
-}
-
-// ---- the cursor
-
-namespace {
-
-const CursorSpot *spotOf(const std::vector<FbdGeometry> &layout, const FbdCursor &cursor)
-{
-    if (cursor.network < 0 || cursor.network >= int(layout.size()))
-        return nullptr;
-    for (const CursorSpot &spot : layout[std::size_t(cursor.network)].spots)
-        if (spot.cursor == cursor)
-            return &spot;
-    return nullptr;
-}
-
-} // namespace
-
-std::optional<QRectF> cursorRect(const std::vector<FbdGeometry> &layout, const FbdCursor &cursor)
-{
-    if (const CursorSpot *spot = spotOf(layout, cursor))
-        return spot->rect;
-    return std::nullopt;
-}
-
-FbdCursor moveCursor(const std::vector<FbdGeometry> &layout, const FbdCursor &cursor, int dx, int dy)
-{
-    if (layout.empty())
-        return FbdCursor::atNetwork(0);
-    const int network = std::clamp(cursor.network, 0, int(layout.size()) - 1);
-    const CursorSpot *from = spotOf(layout, cursor);
-    const QPointF origin = from ? from->rect.center() : QPointF(0, layout[std::size_t(network)].top + 10);
-    // The nearest spot in the direction: along it counts once, across it three times, so the
-    // cursor stays on its line where it can; up and down may leave the network.
-    const CursorSpot *best = nullptr;
-    double bestCost = 0;
-    const int firstNetwork = dy != 0 ? std::max(0, network - 1) : network;
-    const int lastNetwork = dy != 0 ? std::min(int(layout.size()) - 1, network + 1) : network;
-    for (int n = firstNetwork; n <= lastNetwork; ++n) {
-        for (const CursorSpot &spot : layout[std::size_t(n)].spots) {
-            const QPointF delta = spot.rect.center() - origin;
-            const double along = dx ? delta.x() * dx : delta.y() * dy;
-            const double across = std::abs(dx ? delta.y() : delta.x());
-            if (along <= 1 || spot.cursor == cursor)
-                continue;
-            const double cost = along + 3 * across;
-            if (!best || cost < bestCost) {
-                best = &spot;
-                bestCost = cost;
-            }
-        }
-    }
-    return best ? best->cursor : cursor;
-}
-
-std::optional<FbdCursor> cursorAt(const std::vector<FbdGeometry> &layout, QPointF point)
-{
-    for (std::size_t n = 0; n < layout.size(); ++n) {
-        const FbdGeometry &g = layout[n];
-        if (point.y() < g.top || point.y() >= g.top + g.height)
-            continue;
-        const CursorSpot *best = nullptr;
-        for (const CursorSpot &spot : g.spots) {
-            if (!spot.rect.adjusted(-2, -2, 2, 2).contains(point))
-                continue;
-            const double area = spot.rect.width() * spot.rect.height();
-            if (!best || area < best->rect.width() * best->rect.height())
-                best = &spot;
-        }
-        return best ? best->cursor : FbdCursor::atNetwork(int(n));
-    }
-    return std::nullopt;
-}
-
-FbdCursor validCursor(const FbdDocument &document, const FbdCursor &cursor)
-{
-    const int count = int(document.networks.size());
-    if (count == 0)
-        return FbdCursor::atNetwork(0);
-    const int network = std::clamp(cursor.network, 0, count - 1);
-    if (cursor.kind == Kind::Network || cursor.kind == Kind::End)
-        return {cursor.kind, network, 0, 0};
-    const Element *e = document.element(cursor.element);
-    if (!e || document.networkOf(cursor.element) != cursor.network)
-        return FbdCursor::atNetwork(network);
-    if (cursor.kind == Kind::Input && cursor.pin >= inputCount(*e))
-        return FbdCursor::at(Kind::Box, network, cursor.element);
-    if (cursor.kind == Kind::Output && cursor.pin >= outputCount(*e))
-        return FbdCursor::atNetwork(network);
-    return cursor;
 }
 
 } // namespace iec::editors::fbd
