@@ -14,6 +14,7 @@
 #include "editors/fbd/fbdeditor.h"
 #include "editors/fbd/fbdscene.h"
 #include "editors/fbd/fbdvalues.h"
+#include "editors/text/calltext.h"
 #include "editors/text/completion.h"
 #include "interpreter/compiler/compiler.h"
 #include "interpreter/frontend/iecreader.h"
@@ -26,6 +27,8 @@
 #include "tests/model/roundtrip.h"
 
 #include <QDir>
+#include <QDropEvent>
+#include <QMimeData>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -421,6 +424,33 @@ private Q_SLOTS:
         QCOMPARE(blockOf(doc, second->element).typeName, QStringLiteral("MUL"));
         QCOMPARE(doc.networks.size(), std::size_t(1));
         QVERIFY(!doc.networks[0].freehand);
+    }
+
+    // A function block dragged from the library and dropped on a network is inserted there (as
+    // Operator does at the end of the network): one undo step.
+    void libraryDropInsertsABox()
+    {
+        open();
+        trigger("fbdNetworkAfter");
+        type(QStringLiteral("A"));
+        const editors::DiagramItem *target = m_editor->scene()->itemFor(m_editor->elementNamed(QStringLiteral("A")));
+        const QPointF at = m_editor->view()->mapFromScene(target->frame().center());
+        QMimeData data;
+        data.setData(QString::fromLatin1(editors::kPouMimeType), QByteArrayLiteral("TON"));
+        QDragEnterEvent enter(at.toPoint(), Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(m_editor->view()->viewport(), &enter);
+        QVERIFY(enter.isAccepted());
+        const int steps = m_stack.count();
+        QDropEvent drop(at, Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(m_editor->view()->viewport(), &drop);
+        QVERIFY(drop.isAccepted());
+        QCOMPARE(m_stack.count(), steps + 1);
+        const FbdDocument &doc = m_editor->document();
+        const model::Block &ton = blockOf(doc, doc.networks.front().root);
+        QCOMPARE(ton.typeName, QStringLiteral("TON"));
+        QCOMPARE(elementText(doc, sourceOf(doc, doc.networks.front().root, 0)->element), QStringLiteral("A"));
+        if (editors::InPlaceEditor *field = m_editor->inPlaceEditor())
+            field->cancel();
     }
 
     void onlineShowsValuesAndBlueLines()
