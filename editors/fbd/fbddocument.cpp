@@ -3,7 +3,6 @@
 #include <QSet>
 
 #include <algorithm>
-#include <map>
 #include <numeric>
 #include <tuple>
 #include <unordered_map>

@@ -3,7 +3,6 @@
 #include "editors/common/textmetrics.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace iec::editors::fbd {
 
@@ -292,6 +291,7 @@ private:
             const QSizeF size = sinkOrVariableSize(*m_document.element(sink));
             const QRectF rect(x, rowTop(row), size.width(), size.height());
             m_g.rects[sink] = rect;
+            m_g.onWire.insert(sink);
             m_g.wires.push_back({node, pin, sink, 0, {QPointF(from, rowMiddle(row)), QPointF(x, rowMiddle(row))}});
             m_g.spots.push_back({FbdCursor::at(FbdCursor::Kind::Crossing, m_index, sink), QRectF(x - 10, rowMiddle(row) - 6, 10, 12)});
             addSinkSpot(sink, rect);

@@ -7,6 +7,7 @@
 #include <QRectF>
 
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 // Where everything of an FBD network goes: the tree laid out from its root leftwards (each
@@ -68,6 +69,7 @@ struct FbdGeometry {
     std::unordered_map<quint64, std::vector<int>> inputRows;  // a box's input pins: their rows
     std::unordered_map<quint64, std::vector<int>> outputRows; // a box's outputs: their rows
     std::vector<FbdWire> wires;
+    std::unordered_set<quint64> onWire; // assignments drawn on the wire between two boxes (framed)
     std::vector<CursorSpot> spots;
     QRectF labelRect;
     QRectF commentRect;

@@ -46,16 +46,8 @@ DiagramItem *createFbdItem(const FbdDocument &document, const FbdGeometry &g, qu
         return new VariableItem(*e, rect->second, freehand);
     if (std::holds_alternative<InOutVariable>(*e))
         return new VariableItem(*e, rect->second, true); // the wire passes through it
-    if (std::holds_alternative<OutVariable>(*e)) {
-        // An assignment on the wire between two boxes is framed, so the wire seems to pass it.
-        const auto source = sourceOf(document, localId, 0);
-        bool inline_ = false;
-        if (source && !freehand)
-            for (const FbdWire &wire : g.wires)
-                inline_ = inline_ || (wire.source == source->element && wire.sourcePin == source->pin && wire.target != localId
-                                         && !isSink(*document.element(wire.target)));
-        return new VariableItem(*e, rect->second, freehand || inline_);
-    }
+    if (std::holds_alternative<OutVariable>(*e))
+        return new VariableItem(*e, rect->second, freehand || g.onWire.contains(localId)); // the wire seems to pass it
     if (std::holds_alternative<Label>(*e) || std::holds_alternative<Comment>(*e))
         return nullptr;
     return new OutputMarkItem(*e, rect->second);

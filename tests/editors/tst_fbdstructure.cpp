@@ -329,7 +329,16 @@ private Q_SLOTS:
         doc = readFbd(elements);
         QCOMPARE(doc.networks.size(), std::size_t(1));
         QVERIFY(doc.networks[0].freehand); // A feeds two boxes
-        QCOMPARE(run(QStringLiteral("net; type A")).isEmpty(), false);
+        // A label above a tree (its own group, Beremiz draws it so) belongs to the network below.
+        model::Label label;
+        label.localId = 9;
+        label.label = QStringLiteral("L1");
+        label.position = {0, -40};
+        std::vector<Element> labelled {elements[0], elements[1], label};
+        doc = readFbd(labelled);
+        QCOMPARE(doc.networks.size(), std::size_t(1));
+        QCOMPARE(doc.networks[0].label, quint64(9));
+        QCOMPARE(dump(doc), QStringLiteral("L1:; Q2 := A"));
     }
 };
 
