@@ -7,6 +7,18 @@ endif()
 
 option(IEC_SANITIZE "Build with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)
 
+# The test build links about a hundred executables against the project's libraries. Linked
+# statically, each carries its own copy of every library with its sanitizer data and debug
+# information (some 600 MB each, 29 GB in all, more than a CI machine's disk may hold); shared,
+# each carries only its own code. Release builds keep the static libraries: one self-contained
+# executable to ship.
+option(IEC_SHARED_LIBS "Build the project's libraries as shared libraries (the test build)" OFF)
+if(IEC_SHARED_LIBS)
+  set(IEC_LIBRARY_TYPE SHARED)
+else()
+  set(IEC_LIBRARY_TYPE STATIC)
+endif()
+
 add_library(iec_build_settings INTERFACE)
 target_compile_options(iec_build_settings INTERFACE -Wall -Wextra -Wpedantic -Wno-unused-parameter -Wno-missing-field-initializers)
 target_compile_definitions(iec_build_settings INTERFACE

@@ -34,12 +34,16 @@ iec_ensure_packages() {
 }
 
 # iec_build DIR BUILD_TYPE [extra cmake arguments...]: configures once, then builds incrementally.
+# The extra arguments are applied to an existing tree too, so a tree configured before an option
+# was added to a script picks it up.
 iec_build() {
   local dir=$1 type=$2
   shift 2
   if [ ! -f "$dir/build.ninja" ]; then
     iec_say "Configuring $type build in $dir"
     cmake -S "$IEC_ROOT" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE="$type" "$@"
+  elif [ $# -gt 0 ]; then
+    cmake -S "$IEC_ROOT" -B "$dir" "$@" >/dev/null
   fi
   iec_say "Building in $dir"
   cmake --build "$dir" --parallel "$(nproc)"

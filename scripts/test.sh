@@ -7,7 +7,8 @@ source "$(dirname "$0")/lib.sh"
 iec_ensure_packages "${IEC_BUILD_PACKAGES[@]}" "${IEC_FONT_PACKAGES[@]}" libxml2-utils
 
 build_dir="$IEC_ROOT/build/test"
-iec_build "$build_dir" Debug -DIEC_SANITIZE=ON
+# Shared project libraries: a hundred statically linked sanitizer builds would fill the disk.
+iec_build "$build_dir" Debug -DIEC_SANITIZE=ON -DIEC_SHARED_LIBS=ON
 
 iec_say "Running the tests"
 cd "$build_dir"
