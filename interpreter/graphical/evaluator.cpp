@@ -110,12 +110,26 @@ void Evaluator::setJumpTargets(std::map<QString, int> labels, QString jumpVariab
     m_jumpVariable = std::move(jumpVariable);
 }
 
-QString Evaluator::hiddenVariable(const QString &base, const ast::TypeSpec &type)
+QString Evaluator::uniqueHiddenName(const QString &base)
 {
     QString name = QStringLiteral("__") + base;
     for (int n = 2; m_taken.contains(name.toUpper()); ++n)
         name = QStringLiteral("__%1_%2").arg(base).arg(n);
     m_taken.insert(name.toUpper());
+    return name;
+}
+
+QString Evaluator::storedOutput(std::size_t n, const QString &key)
+{
+    auto [it, fresh] = m_stored.try_emplace({n, key});
+    if (fresh)
+        it->second = uniqueHiddenName(QStringLiteral("loop%1%2").arg(m_network.node(n).localId).arg(key.isEmpty() ? QString() : QLatin1Char('_') + key));
+    return it->second;
+}
+
+QString Evaluator::hiddenVariable(const QString &base, const ast::TypeSpec &type)
+{
+    const QString name = uniqueHiddenName(base);
     ast::VarDecl var;
     var.name = name;
     var.type = type;
@@ -205,6 +219,12 @@ std::optional<Signal> Evaluator::read(std::size_t consumer, const model::Connect
                 signal.expr = notExpr(std::move(signal.expr));
         }
         return signal;
+    }
+    if (m_network.isFeedback(consumer, *source) && m_network.isStoredBox(*source)) {
+        // The loop is broken here: the box runs later in the order; its output from the scan
+        // before is kept in a variable.
+        const QString key = m_network.outputKey(*source, connection.formalParameter);
+        return variableSignal(nameExpr(storedOutput(*source, key), at(*source)));
     }
     if (m_network.isFeedback(consumer, *source)) {
         // The loop is broken here: the variable still holds its value from before.
@@ -339,6 +359,25 @@ Signal Evaluator::materialize(std::size_t n, const QString &pin, Signal signal)
 
 void Evaluator::setOutput(std::size_t n, const QString &key, Signal signal)
 {
+    if (m_network.isStoredBox(n) && m_sink) {
+        // A loop reads this output from the scan before: it lives in a variable of its own,
+        // written when the box runs; everyone reads that variable.
+        if (!signal.type) {
+            fail(n, QCoreApplication::translate("iec::interp::Compiler", "The type of the value this loop carries cannot be told."),
+                QCoreApplication::translate("iec::interp::Compiler", "wire the loop through a variable of the type you mean"));
+            return;
+        }
+        const QString name = storedOutput(n, key);
+        ast::VarDecl var;
+        var.name = name;
+        var.type = *signal.type;
+        m_hidden.push_back(std::move(var));
+        push(assignStmt(nameExpr(name, at(n)), std::move(signal.expr)));
+        signal.expr = nameExpr(name, at(n));
+        signal.size = 1;
+        m_outputs[{n, key}] = std::move(signal);
+        return;
+    }
     const bool shared = m_network.readers(n, key) > 1;
     if (shared || signal.size > kMaxExpressionSize)
         signal = materialize(n, key, std::move(signal));

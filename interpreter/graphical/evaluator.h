@@ -62,6 +62,10 @@ private:
     std::optional<Signal> trigger(std::size_t n, const Signal &value, bool rising);
     Signal materialize(std::size_t n, const QString &pin, Signal signal);
     void setOutput(std::size_t n, const QString &key, Signal signal);
+    // The variable that keeps an output of a stored box (Network::isStoredBox) between scans:
+    // named when first read, declared when the box runs and its type is known.
+    QString storedOutput(std::size_t n, const QString &key);
+    QString uniqueHiddenName(const QString &base);
     void push(ast::Stmt statement);
     void store(const ast::Expr &target, const Signal &value, bool negated, model::EdgeModifier edge,
         model::StorageModifier storage, std::size_t n);
@@ -89,6 +93,7 @@ private:
     // The output and in-out variables each output is wired to (for the type of a result).
     std::map<std::pair<std::size_t, QString>, std::vector<std::size_t>> m_writtenTo;
     QSet<QString> m_taken; // upper-case names of the POU's variables
+    std::map<std::pair<std::size_t, QString>, QString> m_stored; // outputs of stored boxes
 };
 
 ast::TypeSpec namedType(const QString &name);

@@ -222,6 +222,31 @@ std::optional<std::vector<std::size_t>> Network::findCycle() const
     return std::nullopt;
 }
 
+std::vector<std::size_t>::const_iterator Network::orderedLoopBreak(const std::vector<std::size_t> &cycle) const
+{
+    const auto orderOf = [&](std::size_t i) { return model::header(*m_nodes[i].element).executionOrderId; };
+    const bool ordered = std::ranges::all_of(cycle, [&](std::size_t i) {
+        return m_nodes[i].kind != NodeKind::Block || orderOf(i).has_value();
+    });
+    if (!ordered || std::ranges::none_of(cycle, [&](std::size_t i) { return m_nodes[i].kind == NodeKind::Block; }))
+        return cycle.end();
+    // cycle[j] is read by cycle[j - 1] (the first by the last). The box whose reader runs before
+    // it keeps its output: the reader sees the value of the scan before, as the order says.
+    auto fallback = cycle.end();
+    for (std::size_t j = 0; j < cycle.size(); ++j) {
+        const std::size_t source = cycle[j];
+        const std::size_t reader = j == 0 ? cycle.back() : cycle[j - 1];
+        if (m_nodes[source].kind != NodeKind::Block)
+            continue;
+        if (fallback == cycle.end())
+            fallback = cycle.begin() + std::ptrdiff_t(j);
+        const auto readerOrder = orderOf(reader);
+        if (readerOrder && *readerOrder < *orderOf(source))
+            return cycle.begin() + std::ptrdiff_t(j);
+    }
+    return fallback;
+}
+
 bool Network::breakLoops(const QString &owner, Diagnostics &diagnostics)
 {
     // cycle[i] reads from cycle[i + 1]; the last reads from the first.
@@ -234,6 +259,11 @@ bool Network::breakLoops(const QString &owner, Diagnostics &diagnostics)
         // reader gets the output the instance computed in the previous scan.
         if (variable == cycle->end())
             variable = std::ranges::find_if(*cycle, [&](std::size_t i) { return isInstanceBlock(i); });
+        if (variable == cycle->end()) {
+            variable = orderedLoopBreak(*cycle);
+            if (variable != cycle->end())
+                m_storedBoxes.insert(*variable);
+        }
         if (variable == cycle->end()) {
             const std::size_t first = *std::ranges::min_element(*cycle);
             diagnostics.error(owner, elementLocation(m_nodes[first].localId),

@@ -63,9 +63,14 @@ public:
     int readers(std::size_t source, const QString &key) const;
 
     // Finds every loop of wires; a loop through an in-out variable reads that variable's value
-    // from before (feedback), any other loop is an error. Returns false after diagnosing one.
+    // from before (feedback), so does a loop through a function block instance. A loop through
+    // functions whose boxes all carry an execution order (CFC, as CODESYS allows it) is broken
+    // where a box runs before the box it reads: that box keeps its output from one scan to the
+    // next (isStoredBox). Any other loop is an error. Returns false after diagnosing one.
     bool breakLoops(const QString &owner, Diagnostics &diagnostics);
     bool isFeedback(std::size_t consumer, std::size_t source) const { return m_feedback.contains({consumer, source}); }
+    // A function box whose outputs a loop reads from the scan before (breakLoops).
+    bool isStoredBox(std::size_t node) const { return m_storedBoxes.contains(node); }
     // A block that calls a function block instance (its outputs persist between scans).
     bool isInstanceBlock(std::size_t node) const;
 
@@ -78,12 +83,15 @@ public:
 
 private:
     std::optional<std::vector<std::size_t>> findCycle() const;
+    // The function box of an ordered loop that keeps its output (see breakLoops); end() if none.
+    std::vector<std::size_t>::const_iterator orderedLoopBreak(const std::vector<std::size_t> &cycle) const;
 
     std::vector<Node> m_nodes;
     QHash<quint64, std::size_t> m_index;
     std::map<std::size_t, std::size_t> m_connectorOf;
     std::map<std::pair<std::size_t, QString>, int> m_readers;
     std::set<std::pair<std::size_t, std::size_t>> m_feedback;
+    std::set<std::size_t> m_storedBoxes;
     bool m_ok = true;
 };
 
