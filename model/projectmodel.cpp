@@ -336,6 +336,17 @@ bool ProjectModel::setBodyText(const BodyRef &ref, const QString &text)
     return true;
 }
 
+bool ProjectModel::setBodyAddData(const BodyRef &ref, const AddData &addData)
+{
+    Body *body = findMutableBody(ref);
+    if (!body || body->addData == addData)
+        return false;
+    body->addData = addData;
+    touch();
+    Q_EMIT bodyAddDataChanged(ref);
+    return true;
+}
+
 quint64 ProjectModel::insertElement(const BodyRef &ref, Element element, int index)
 {
     Body *body = findMutableBody(ref);

@@ -70,6 +70,9 @@ public:
     // ---- bodies
     [[nodiscard]] const Body *body(const BodyRef &ref) const;
     bool setBodyText(const BodyRef &ref, const QString &text); // ST and IL bodies
+    // Replaces the body's addData (another tool's diagram kept there, such as a CODESYS CFC, is
+    // edited this way). Emits bodyAddDataChanged.
+    bool setBodyAddData(const BodyRef &ref, const AddData &addData);
     // Inserts at `index` (-1: the end). A localId of 0 or one already used gets a fresh one.
     // Returns the localId the element got, 0 when the body does not exist or is textual.
     quint64 insertElement(const BodyRef &ref, Element element, int index = -1);
@@ -107,6 +110,7 @@ Q_SIGNALS:
     void instancesChanged();
     void variablesChanged(iec::model::PouId id);
     void bodyTextChanged(const iec::model::BodyRef &ref);
+    void bodyAddDataChanged(const iec::model::BodyRef &ref);
     void elementsInserted(const iec::model::BodyRef &ref, const QList<quint64> &localIds);
     void elementsRemoved(const iec::model::BodyRef &ref, const QList<quint64> &localIds);
     void elementsChanged(const iec::model::BodyRef &ref, const QList<quint64> &localIds);

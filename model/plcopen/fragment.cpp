@@ -15,7 +15,7 @@ struct ByteWriter : pugi::xml_writer {
 
 QString tr(const char *text)
 {
-    return QCoreApplication::translate("iec::model::plcopen::Fragment", text);
+    return QCoreApplication::translate("iec::model::plcopen", text); // the context lupdate gives tr() here
 }
 
 } // namespace
@@ -37,6 +37,59 @@ QByteArray writeElementsFragment(const QString &language, const std::vector<Elem
     return writer.bytes;
 }
 
+namespace {
+
+// The children of `root` as elements; an error when something is lost.
+void readChildren(const QByteArray &xml, const pugi::xml_node root, bool withLanguage, FragmentReadResult &result)
+{
+    ReadContext context;
+    context.indexLines(xml.constData(), xml.size());
+    XmlIn in(root, context);
+    if (withLanguage)
+        in.attr("language", result.language);
+    in.choiceList(result.elements);
+    Extras unknown;
+    in.finish(unknown);
+    result.diagnostics = std::move(context.diagnostics);
+    for (const Diagnostic &diagnostic : result.diagnostics) {
+        if (diagnostic.severity == Diagnostic::Severity::Error) {
+            result.error = tr("It cannot be read: %1").arg(diagnostic.message);
+            return;
+        }
+    }
+    // Unknown children would be lost on paste: refuse rather than drop them silently.
+    if (!unknown.elements.empty())
+        result.error = tr("It holds something that is not an element of a body.");
+}
+
+} // namespace
+
+FragmentReadResult readElementsUnder(const QByteArray &xml)
+{
+    FragmentReadResult result;
+    pugi::xml_document document;
+    const pugi::xml_parse_result parsed = document.load_buffer(
+        xml.constData(), std::size_t(xml.size()), pugi::parse_default | pugi::parse_ws_pcdata_single, pugi::encoding_auto);
+    if (!parsed) {
+        result.error = tr("It is not well-formed XML: %1.").arg(QString::fromUtf8(parsed.description()));
+        return result;
+    }
+    readChildren(xml, document.document_element(), false, result);
+    return result;
+}
+
+QByteArray writeElementsUnder(const char *rootName, const std::vector<Element> &elements)
+{
+    pugi::xml_document document;
+    pugi::xml_node root = document.append_child(rootName);
+    WriteContext context;
+    XmlOut out(root, context);
+    out.choiceList(elements);
+    ByteWriter writer;
+    document.save(writer, "", pugi::format_raw | pugi::format_no_declaration, pugi::encoding_utf8);
+    return writer.bytes;
+}
+
 FragmentReadResult readElementsFragment(const QByteArray &xml)
 {
     FragmentReadResult result;
@@ -52,23 +105,7 @@ FragmentReadResult readElementsFragment(const QByteArray &xml)
         result.error = tr("It is XML with a <%1> root, not elements copied in IEC Studio.").arg(QString::fromUtf8(root.name()));
         return result;
     }
-    ReadContext context;
-    context.indexLines(xml.constData(), xml.size());
-    XmlIn in(root, context);
-    in.attr("language", result.language);
-    in.choiceList(result.elements);
-    Extras unknown;
-    in.finish(unknown);
-    result.diagnostics = std::move(context.diagnostics);
-    for (const Diagnostic &diagnostic : result.diagnostics) {
-        if (diagnostic.severity == Diagnostic::Severity::Error) {
-            result.error = tr("It cannot be read: %1").arg(diagnostic.message);
-            return result;
-        }
-    }
-    // Unknown children would be lost on paste: refuse rather than drop them silently.
-    if (!unknown.elements.empty())
-        result.error = tr("It holds something that is not an element of a body.");
+    readChildren(xml, root, true, result);
     return result;
 }
 

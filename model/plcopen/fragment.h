@@ -31,4 +31,13 @@ struct FragmentReadResult {
 // Reads what writeElementsFragment wrote. Never throws; anything else is an error, not a guess.
 FragmentReadResult readElementsFragment(const QByteArray &xml);
 
+// A diagram another tool keeps under a root element of its own (CODESYS: <CFC> in a body's
+// addData): the root's children are read as a body's elements, whatever the root is called and
+// whether or not it declares the TC6 namespace. `language` stays empty. Never throws.
+FragmentReadResult readElementsUnder(const QByteArray &xml);
+// The elements written as in a body of the file under a root element `rootName` that declares no
+// namespace (it goes into addData, inside a project that declares them), unindented as the model
+// keeps addData.
+QByteArray writeElementsUnder(const char *rootName, const std::vector<Element> &elements);
+
 } // namespace iec::model::plcopen

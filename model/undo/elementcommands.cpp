@@ -208,4 +208,26 @@ bool SetBodyTextCommand::mergeWith(const QUndoCommand *other)
     return true;
 }
 
+SetBodyAddDataCommand::SetBodyAddDataCommand(ProjectModel &model, BodyRef ref, AddData addData, const QString &text,
+    QUndoCommand *parent)
+    : ModelCommand(model, parent)
+    , m_ref(std::move(ref))
+    , m_after(std::move(addData))
+{
+    if (const Body *body = model.body(m_ref))
+        m_before = body->addData;
+    setText(text);
+    setObsolete(m_before == m_after);
+}
+
+void SetBodyAddDataCommand::redo()
+{
+    m_model.setBodyAddData(m_ref, m_after);
+}
+
+void SetBodyAddDataCommand::undo()
+{
+    m_model.setBodyAddData(m_ref, m_before);
+}
+
 } // namespace iec::model

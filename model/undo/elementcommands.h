@@ -135,4 +135,21 @@ private:
     QString m_after;
 };
 
+// Replaces a body's addData: an edit of a diagram another tool keeps there (a CODESYS CFC). One
+// command per gesture; no merging.
+class SetBodyAddDataCommand : public ModelCommand
+{
+public:
+    SetBodyAddDataCommand(ProjectModel &model, BodyRef ref, AddData addData, const QString &text,
+        QUndoCommand *parent = nullptr);
+
+    void redo() override;
+    void undo() override;
+
+private:
+    BodyRef m_ref;
+    AddData m_before;
+    AddData m_after;
+};
+
 } // namespace iec::model
