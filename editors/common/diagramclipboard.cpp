@@ -13,7 +13,7 @@ namespace {
 
 QString tr(const char *text)
 {
-    return QCoreApplication::translate("iec::editors::DiagramClipboard", text);
+    return QCoreApplication::translate("iec::editors", text); // the context lupdate gives tr() here
 }
 
 } // namespace
