@@ -1,5 +1,6 @@
 #pragma once
 
+#include "editors/common/editorlanguage.h"
 #include "model/project.h"
 
 #include <QCoreApplication>
@@ -26,9 +27,9 @@ public:
     [[nodiscard]] static model::Project create(ProjectTemplate projectTemplate);
 };
 
-// The addData entry a body gets when it was made as CFC (an FBD body drawn freely); the CFC
-// editor decides the final form (issue 15), this marks what the template made.
-inline constexpr const char *kCfcBodyAddDataName = "http://www.iecstudio.org/cfc";
+// The addData entry a body gets when it was made as CFC: an FBD body drawn freely
+// (docs/editors-cfc.md).
+inline constexpr const char *kCfcBodyAddDataName = editors::kIecStudioCfcAddDataName;
 
 // The program a project shows first: the type of the first program instance of the first task
 // (of the first resource of the first configuration), else the program a project without

@@ -1,5 +1,7 @@
 #include "editors/standardeditors.h"
 
+#include "editors/cfc/cfceditor.h"
+#include "editors/cfc/cfcscene.h"
 #include "editors/common/editorregistry.h"
 #include "editors/fbd/fbdeditor.h"
 #include "editors/fbd/fbdscene.h"
@@ -33,6 +35,18 @@ void registerStandardEditors()
             return new fbd::FbdEditor(model, ref, stack);
         },
         [] { return std::unique_ptr<DiagramPolicy>(std::make_unique<fbd::FbdPolicy>()); }});
+    registry.add({EditorLanguage::CFC,
+        [](model::ProjectModel &model, const model::BodyRef &ref, QUndoStack *stack) -> DiagramEditor * {
+            return new cfc::CfcEditor(model, ref, stack);
+        },
+        [] { return std::unique_ptr<DiagramPolicy>(std::make_unique<cfc::CfcPolicy>()); },
+        [] {
+            // An FBD body marked as CFC (docs/editors-cfc.md).
+            model::Body body = model::Body::withLanguage(model::BodyLanguage::FBD);
+            body.addData.push_back({QString::fromLatin1(kIecStudioCfcAddDataName), QStringLiteral("implementation"),
+                QStringLiteral("<cfc/>")});
+            return body;
+        }});
 }
 
 } // namespace iec::editors

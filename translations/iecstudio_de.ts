@@ -2703,6 +2703,276 @@ Automatisch gespeichert: %2</translation>
         </message>
     </context>
     <context>
+        <name>iec::editors::cfc</name>
+        <message>
+            <source>There is nothing to paste.</source>
+            <translation>Es gibt nichts einzufügen.</translation>
+        </message>
+        <message>
+            <source>Select the elements to delete first.</source>
+            <translation>Wählen Sie zuerst die Elemente aus, die gelöscht werden sollen.</translation>
+        </message>
+        <message>
+            <source>Select the elements to move first.</source>
+            <translation>Wählen Sie zuerst die Elemente aus, die verschoben werden sollen.</translation>
+        </message>
+        <message>
+            <source>The wire has no element at one of its ends.</source>
+            <translation>An einem Ende der Verbindung ist kein Element.</translation>
+        </message>
+        <message>
+            <source>That element has no such output.</source>
+            <translation>Dieses Element hat keinen solchen Ausgang.</translation>
+        </message>
+        <message>
+            <source>That element has no such input.</source>
+            <translation>Dieses Element hat keinen solchen Eingang.</translation>
+        </message>
+        <message>
+            <source>Select an element that has an execution order number (a box, an output, a jump, a return or a label).</source>
+            <translation>Wählen Sie ein Element mit einer Ausführungsreihenfolge aus (einen Baustein, einen Ausgang, einen Sprung, einen Rücksprung oder eine Marke).</translation>
+        </message>
+        <message>
+            <source>Only boxes, outputs, jumps, returns and labels have an execution order number.</source>
+            <translation>Nur Bausteine, Ausgänge, Sprünge, Rücksprünge und Marken haben eine Nummer in der Ausführungsreihenfolge.</translation>
+        </message>
+        <message>
+            <source>The number must lie between 1 and %1.</source>
+            <translation>Die Nummer muss zwischen 1 und %1 liegen.</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::cfc::CfcEditor</name>
+        <message>
+            <source>This CFC diagram cannot be shown: %1</source>
+            <translation>Dieser CFC-Plan kann nicht angezeigt werden: %1</translation>
+        </message>
+        <message>
+            <source>Move</source>
+            <translation>Verschieben</translation>
+        </message>
+        <message>
+            <source>Connect</source>
+            <translation>Verbinden</translation>
+        </message>
+        <message>
+            <source>Insert %1</source>
+            <translation>%1 einfügen</translation>
+        </message>
+        <message>
+            <source>Insert input</source>
+            <translation>Eingang einfügen</translation>
+        </message>
+        <message>
+            <source>Insert output</source>
+            <translation>Ausgang einfügen</translation>
+        </message>
+        <message>
+            <source>Insert jump</source>
+            <translation>Sprung einfügen</translation>
+        </message>
+        <message>
+            <source>Insert label</source>
+            <translation>Marke einfügen</translation>
+        </message>
+        <message>
+            <source>Insert return</source>
+            <translation>Rücksprung einfügen</translation>
+        </message>
+        <message>
+            <source>Insert comment</source>
+            <translation>Kommentar einfügen</translation>
+        </message>
+        <message>
+            <source>Insert connection mark</source>
+            <translation>Verbindungsmarke einfügen</translation>
+        </message>
+        <message>
+            <source>Rename</source>
+            <translation>Umbenennen</translation>
+        </message>
+        <message>
+            <source>The element is gone.</source>
+            <translation>Das Element gibt es nicht mehr.</translation>
+        </message>
+        <message>
+            <source>Change box to %1</source>
+            <translation>Baustein in %1 ändern</translation>
+        </message>
+        <message>
+            <source>Negate</source>
+            <translation>Negieren</translation>
+        </message>
+        <message>
+            <source>Select an input or an output to negate.</source>
+            <translation>Wählen Sie einen Eingang oder Ausgang zum Negieren aus.</translation>
+        </message>
+        <message>
+            <source>Delete</source>
+            <translation>Löschen</translation>
+        </message>
+        <message>
+            <source>Select the elements to copy first.</source>
+            <translation>Wählen Sie zuerst die Elemente aus, die kopiert werden sollen.</translation>
+        </message>
+        <message>
+            <source>Paste</source>
+            <translation>Einfügen</translation>
+        </message>
+        <message>
+            <source>Order by data flow</source>
+            <translation>Nach Datenfluss anordnen</translation>
+        </message>
+        <message>
+            <source>Order by topology</source>
+            <translation>Nach Topologie anordnen</translation>
+        </message>
+        <message>
+            <source>Change execution order</source>
+            <translation>Ausführungsreihenfolge ändern</translation>
+        </message>
+        <message>
+            <source>Set execution order</source>
+            <translation>Ausführungsreihenfolge setzen</translation>
+        </message>
+        <message>
+            <source>Select one element that has an execution order number.</source>
+            <translation>Wählen Sie genau ein Element mit einer Nummer in der Ausführungsreihenfolge aus.</translation>
+        </message>
+        <message>
+            <source>Execution Order</source>
+            <translation>Ausführungsreihenfolge</translation>
+        </message>
+        <message>
+            <source>Number of this element (1 to %1):</source>
+            <translation>Nummer dieses Elements (1 bis %1):</translation>
+        </message>
+        <message>
+            <source>Insert Comment</source>
+            <translation>Kommentar einfügen</translation>
+        </message>
+        <message>
+            <source>Comment:</source>
+            <translation>Kommentar:</translation>
+        </message>
+        <message>
+            <source>Prepare Value</source>
+            <translation>Wert vorbereiten</translation>
+        </message>
+        <message>
+            <source>New value of %1 (now %2):</source>
+            <translation>Neuer Wert für %1 (jetzt %2):</translation>
+        </message>
+        <message>
+            <source>Prepared %1 := %2. Write it with Ctrl+F7 or force it with F7.</source>
+            <translation>%1 := %2 vorbereitet. Mit Strg+F7 schreiben oder mit F7 forcen.</translation>
+        </message>
+        <message>
+            <source>&amp;Box</source>
+            <translation>&amp;Baustein</translation>
+        </message>
+        <message>
+            <source>Box</source>
+            <translation>Baustein</translation>
+        </message>
+        <message>
+            <source>&amp;Input</source>
+            <translation>&amp;Eingang</translation>
+        </message>
+        <message>
+            <source>Input</source>
+            <translation>Eingang</translation>
+        </message>
+        <message>
+            <source>O&amp;utput</source>
+            <translation>&amp;Ausgang</translation>
+        </message>
+        <message>
+            <source>Output</source>
+            <translation>Ausgang</translation>
+        </message>
+        <message>
+            <source>&amp;Jump</source>
+            <translation>&amp;Sprung</translation>
+        </message>
+        <message>
+            <source>&amp;Label</source>
+            <translation>&amp;Marke</translation>
+        </message>
+        <message>
+            <source>&amp;Return</source>
+            <translation>&amp;Rücksprung</translation>
+        </message>
+        <message>
+            <source>Co&amp;mment…</source>
+            <translation>&amp;Kommentar…</translation>
+        </message>
+        <message>
+            <source>Connection Mark (&amp;Source)</source>
+            <translation>Verbindungsmarke (&amp;Quelle)</translation>
+        </message>
+        <message>
+            <source>Connection Mark (&amp;Sink)</source>
+            <translation>Verbindungsmarke (&amp;Ziel)</translation>
+        </message>
+        <message>
+            <source>Ne&amp;gate</source>
+            <translation>&amp;Negieren</translation>
+        </message>
+        <message>
+            <source>Edit &amp;Name</source>
+            <translation>&amp;Namen bearbeiten</translation>
+        </message>
+        <message>
+            <source>Order by &amp;Data Flow</source>
+            <translation>Nach &amp;Datenfluss anordnen</translation>
+        </message>
+        <message>
+            <source>Data Flow</source>
+            <translation>Datenfluss</translation>
+        </message>
+        <message>
+            <source>Order by &amp;Topology</source>
+            <translation>Nach &amp;Topologie anordnen</translation>
+        </message>
+        <message>
+            <source>Order: One &amp;Earlier</source>
+            <translation>Reihenfolge: Eins &amp;früher</translation>
+        </message>
+        <message>
+            <source>Order: One &amp;Later</source>
+            <translation>Reihenfolge: Eins &amp;später</translation>
+        </message>
+        <message>
+            <source>Order: To the &amp;Front</source>
+            <translation>Reihenfolge: An den &amp;Anfang</translation>
+        </message>
+        <message>
+            <source>Order: To the &amp;Back</source>
+            <translation>Reihenfolge: An das &amp;Ende</translation>
+        </message>
+        <message>
+            <source>Set Order &amp;Number…</source>
+            <translation>Reihenfolge-&amp;Nummer setzen…</translation>
+        </message>
+        <message>
+            <source>Cu&amp;t</source>
+            <translation>&amp;Ausschneiden</translation>
+        </message>
+        <message>
+            <source>&amp;Copy</source>
+            <translation>&amp;Kopieren</translation>
+        </message>
+        <message>
+            <source>&amp;Paste</source>
+            <translation>&amp;Einfügen</translation>
+        </message>
+        <message>
+            <source>&amp;Delete</source>
+            <translation>&amp;Löschen</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::editors::fbd::FbdEditor</name>
         <message>
             <source>Prepare Value</source>
@@ -5566,6 +5836,14 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>The condition %1 is incomplete: something is missing at its end.</source>
             <translation>Die Bedingung %1 ist unvollständig: An ihrem Ende fehlt etwas.</translation>
+        </message>
+        <message>
+            <source>The type of the value this loop carries cannot be told.</source>
+            <translation>Der Typ des Werts, den diese Schleife weitergibt, lässt sich nicht bestimmen.</translation>
+        </message>
+        <message>
+            <source>wire the loop through a variable of the type you mean</source>
+            <translation>führen Sie die Schleife über eine Variable des gemeinten Typs</translation>
         </message>
     </context>
     <context>

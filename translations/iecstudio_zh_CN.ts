@@ -2698,6 +2698,276 @@ Autosaved: %2</source>
         </message>
     </context>
     <context>
+        <name>iec::editors::cfc</name>
+        <message>
+            <source>There is nothing to paste.</source>
+            <translation>没有可粘贴的内容。</translation>
+        </message>
+        <message>
+            <source>Select the elements to delete first.</source>
+            <translation>请先选择要删除的元素。</translation>
+        </message>
+        <message>
+            <source>Select the elements to move first.</source>
+            <translation>请先选择要移动的元素。</translation>
+        </message>
+        <message>
+            <source>The wire has no element at one of its ends.</source>
+            <translation>连线的一端没有元素。</translation>
+        </message>
+        <message>
+            <source>That element has no such output.</source>
+            <translation>该元素没有这个输出。</translation>
+        </message>
+        <message>
+            <source>That element has no such input.</source>
+            <translation>该元素没有这个输入。</translation>
+        </message>
+        <message>
+            <source>Select an element that has an execution order number (a box, an output, a jump, a return or a label).</source>
+            <translation>请选择一个有执行顺序号的元素(功能块、输出、跳转、返回或标号)。</translation>
+        </message>
+        <message>
+            <source>Only boxes, outputs, jumps, returns and labels have an execution order number.</source>
+            <translation>只有功能块、输出、跳转、返回和标号才有执行顺序号。</translation>
+        </message>
+        <message>
+            <source>The number must lie between 1 and %1.</source>
+            <translation>序号必须在 1 到 %1 之间。</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::editors::cfc::CfcEditor</name>
+        <message>
+            <source>This CFC diagram cannot be shown: %1</source>
+            <translation>无法显示此 CFC 图:%1</translation>
+        </message>
+        <message>
+            <source>Move</source>
+            <translation>移动</translation>
+        </message>
+        <message>
+            <source>Connect</source>
+            <translation>连线</translation>
+        </message>
+        <message>
+            <source>Insert %1</source>
+            <translation>插入 %1</translation>
+        </message>
+        <message>
+            <source>Insert input</source>
+            <translation>插入输入</translation>
+        </message>
+        <message>
+            <source>Insert output</source>
+            <translation>插入输出</translation>
+        </message>
+        <message>
+            <source>Insert jump</source>
+            <translation>插入跳转</translation>
+        </message>
+        <message>
+            <source>Insert label</source>
+            <translation>插入标号</translation>
+        </message>
+        <message>
+            <source>Insert return</source>
+            <translation>插入返回</translation>
+        </message>
+        <message>
+            <source>Insert comment</source>
+            <translation>插入注释</translation>
+        </message>
+        <message>
+            <source>Insert connection mark</source>
+            <translation>插入连接标记</translation>
+        </message>
+        <message>
+            <source>Rename</source>
+            <translation>重命名</translation>
+        </message>
+        <message>
+            <source>The element is gone.</source>
+            <translation>该元素已不存在。</translation>
+        </message>
+        <message>
+            <source>Change box to %1</source>
+            <translation>将功能块改为 %1</translation>
+        </message>
+        <message>
+            <source>Negate</source>
+            <translation>取反</translation>
+        </message>
+        <message>
+            <source>Select an input or an output to negate.</source>
+            <translation>请选择要取反的输入或输出。</translation>
+        </message>
+        <message>
+            <source>Delete</source>
+            <translation>删除</translation>
+        </message>
+        <message>
+            <source>Select the elements to copy first.</source>
+            <translation>请先选择要复制的元素。</translation>
+        </message>
+        <message>
+            <source>Paste</source>
+            <translation>粘贴</translation>
+        </message>
+        <message>
+            <source>Order by data flow</source>
+            <translation>按数据流排序</translation>
+        </message>
+        <message>
+            <source>Order by topology</source>
+            <translation>按拓扑排序</translation>
+        </message>
+        <message>
+            <source>Change execution order</source>
+            <translation>更改执行顺序</translation>
+        </message>
+        <message>
+            <source>Set execution order</source>
+            <translation>设置执行顺序</translation>
+        </message>
+        <message>
+            <source>Select one element that has an execution order number.</source>
+            <translation>请只选择一个有执行顺序号的元素。</translation>
+        </message>
+        <message>
+            <source>Execution Order</source>
+            <translation>执行顺序</translation>
+        </message>
+        <message>
+            <source>Number of this element (1 to %1):</source>
+            <translation>此元素的序号(1 到 %1):</translation>
+        </message>
+        <message>
+            <source>Insert Comment</source>
+            <translation>插入注释</translation>
+        </message>
+        <message>
+            <source>Comment:</source>
+            <translation>注释:</translation>
+        </message>
+        <message>
+            <source>Prepare Value</source>
+            <translation>准备数值</translation>
+        </message>
+        <message>
+            <source>New value of %1 (now %2):</source>
+            <translation>%1 的新值(当前 %2):</translation>
+        </message>
+        <message>
+            <source>Prepared %1 := %2. Write it with Ctrl+F7 or force it with F7.</source>
+            <translation>已准备 %1 := %2。按 Ctrl+F7 写入,或按 F7 强制。</translation>
+        </message>
+        <message>
+            <source>&amp;Box</source>
+            <translation>功能块(&amp;B)</translation>
+        </message>
+        <message>
+            <source>Box</source>
+            <translation>功能块</translation>
+        </message>
+        <message>
+            <source>&amp;Input</source>
+            <translation>输入(&amp;I)</translation>
+        </message>
+        <message>
+            <source>Input</source>
+            <translation>输入</translation>
+        </message>
+        <message>
+            <source>O&amp;utput</source>
+            <translation>输出(&amp;U)</translation>
+        </message>
+        <message>
+            <source>Output</source>
+            <translation>输出</translation>
+        </message>
+        <message>
+            <source>&amp;Jump</source>
+            <translation>跳转(&amp;J)</translation>
+        </message>
+        <message>
+            <source>&amp;Label</source>
+            <translation>标号(&amp;L)</translation>
+        </message>
+        <message>
+            <source>&amp;Return</source>
+            <translation>返回(&amp;R)</translation>
+        </message>
+        <message>
+            <source>Co&amp;mment…</source>
+            <translation>注释(&amp;M)…</translation>
+        </message>
+        <message>
+            <source>Connection Mark (&amp;Source)</source>
+            <translation>连接标记 - 源(&amp;S)</translation>
+        </message>
+        <message>
+            <source>Connection Mark (&amp;Sink)</source>
+            <translation>连接标记 - 目标(&amp;K)</translation>
+        </message>
+        <message>
+            <source>Ne&amp;gate</source>
+            <translation>取反(&amp;G)</translation>
+        </message>
+        <message>
+            <source>Edit &amp;Name</source>
+            <translation>编辑名称(&amp;N)</translation>
+        </message>
+        <message>
+            <source>Order by &amp;Data Flow</source>
+            <translation>按数据流排序(&amp;D)</translation>
+        </message>
+        <message>
+            <source>Data Flow</source>
+            <translation>数据流</translation>
+        </message>
+        <message>
+            <source>Order by &amp;Topology</source>
+            <translation>按拓扑排序(&amp;T)</translation>
+        </message>
+        <message>
+            <source>Order: One &amp;Earlier</source>
+            <translation>顺序:提前一位(&amp;E)</translation>
+        </message>
+        <message>
+            <source>Order: One &amp;Later</source>
+            <translation>顺序:推后一位(&amp;L)</translation>
+        </message>
+        <message>
+            <source>Order: To the &amp;Front</source>
+            <translation>顺序:移到最前(&amp;F)</translation>
+        </message>
+        <message>
+            <source>Order: To the &amp;Back</source>
+            <translation>顺序:移到最后(&amp;B)</translation>
+        </message>
+        <message>
+            <source>Set Order &amp;Number…</source>
+            <translation>设置顺序号(&amp;N)…</translation>
+        </message>
+        <message>
+            <source>Cu&amp;t</source>
+            <translation>剪切(&amp;T)</translation>
+        </message>
+        <message>
+            <source>&amp;Copy</source>
+            <translation>复制(&amp;C)</translation>
+        </message>
+        <message>
+            <source>&amp;Paste</source>
+            <translation>粘贴(&amp;P)</translation>
+        </message>
+        <message>
+            <source>&amp;Delete</source>
+            <translation>删除(&amp;D)</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::editors::fbd::FbdEditor</name>
         <message>
             <source>Prepare Value</source>
@@ -5561,6 +5831,14 @@ Autosaved: %2</source>
         <message>
             <source>The condition %1 is incomplete: something is missing at its end.</source>
             <translation>条件 %1 不完整：其末尾缺少内容。</translation>
+        </message>
+        <message>
+            <source>The type of the value this loop carries cannot be told.</source>
+            <translation>无法确定此环路传递的值的类型。</translation>
+        </message>
+        <message>
+            <source>wire the loop through a variable of the type you mean</source>
+            <translation>让环路经过一个所需类型的变量</translation>
         </message>
     </context>
     <context>

@@ -296,14 +296,21 @@ void VariableItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QW
 WireItem::WireItem(quint64 source, quint64 target, const QList<QPointF> &points)
     : m_source(source)
     , m_target(target)
-    , m_points(points)
 {
+    setPoints(points);
+    setZValue(-1);
+}
+
+void WireItem::setPoints(const QList<QPointF> &points)
+{
+    prepareGeometryChange();
+    m_points = points;
+    m_path = QPainterPath();
     if (!points.isEmpty()) {
         m_path.moveTo(points.front());
         for (qsizetype i = 1; i < points.size(); ++i)
             m_path.lineTo(points[i]);
     }
-    setZValue(-1);
 }
 
 QRectF WireItem::boundingRect() const

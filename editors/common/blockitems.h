@@ -114,9 +114,11 @@ public:
     [[nodiscard]] quint64 source() const { return m_source; }
     [[nodiscard]] quint64 target() const { return m_target; }
     [[nodiscard]] const QList<QPointF> &points() const { return m_points; }
+    void setPoints(const QList<QPointF> &points); // re-routed (CFC, while a box is dragged)
     void setPowered(bool powered);
     [[nodiscard]] bool isPowered() const { return m_powered; }
     void setBroken(bool broken);
+    [[nodiscard]] bool isBroken() const { return m_broken; }
 
 private:
     quint64 m_source;

@@ -142,4 +142,36 @@ bool isExtensible(const QString &typeName)
     return kExtensible.contains(typeName.trimmed(), Qt::CaseInsensitive);
 }
 
+namespace {
+
+model::BlockVariable unwiredPin(const QString &name, bool input)
+{
+    model::BlockVariable v;
+    v.formalParameter = name;
+    if (input)
+        v.connectionPointIn.emplace();
+    else
+        v.connectionPointOut.emplace();
+    return v;
+}
+
+} // namespace
+
+model::Block blockFromSpec(const BoxSpec &spec)
+{
+    model::Block block;
+    block.typeName = spec.typeName;
+    if (spec.functionBlock)
+        block.instanceName = kPlaceholder;
+    if (spec.withEn) {
+        block.inputVariables.push_back(unwiredPin(QStringLiteral("EN"), true));
+        block.outputVariables.push_back(unwiredPin(QStringLiteral("ENO"), false));
+    }
+    for (const QString &name : spec.inputs)
+        block.inputVariables.push_back(unwiredPin(name, true));
+    for (const QString &name : spec.outputs)
+        block.outputVariables.push_back(unwiredPin(name, false));
+    return block;
+}
+
 } // namespace iec::editors

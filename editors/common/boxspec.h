@@ -1,5 +1,6 @@
 #pragma once
 
+#include "model/elements_fbd.h"
 #include "model/project.h"
 
 #include <QString>
@@ -35,5 +36,9 @@ bool isExtensible(const QString &typeName);
 
 
 std::optional<BoxSpec> boxSpecFor(const model::Project &project, const QString &typeName, bool withEn, QString *error);
+
+// The block of a new box (FBD, CFC): its pins unwired, EN/ENO first when the spec asks for them,
+// "???" as a function block's instance name.
+model::Block blockFromSpec(const BoxSpec &spec);
 
 } // namespace iec::editors

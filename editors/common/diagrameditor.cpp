@@ -83,26 +83,8 @@ DiagramEditor::DiagramEditor(model::ProjectModel &model, model::BodyRef ref, QUn
             showMessage(QString());
         updateActionStates();
     });
-    connect(m_scene, &DiagramScene::elementsMoved, this, [this](const QList<quint64> &ids, const QList<QPointF> &to) {
-        std::vector<model::MoveElementsCommand::Move> moves;
-        for (qsizetype i = 0; i < ids.size(); ++i)
-            moves.push_back({ids[i], model::Position {to[i].x(), to[i].y()}});
-        // Under a parent of its own: a second drag of the same items is a gesture of its own, not
-        // merged into this one (MoveElementsCommand merges the steps of one continuing drag).
-        auto *gesture = new QUndoCommand;
-        const auto *move = new model::MoveElementsCommand(m_model, m_ref, std::move(moves), gesture);
-        gesture->setText(move->text());
-        if (!pushCommand(gesture, ids))
-            m_scene->rebuild(); // the items go back where the model has them
-    });
-    connect(m_scene, &DiagramScene::wireDrawn, this,
-        [this](quint64 source, const QString &formalParameter, quint64 target, int inputIndex) {
-            model::Connection connection;
-            connection.refLocalId = source;
-            if (!formalParameter.isEmpty())
-                connection.formalParameter = formalParameter;
-            pushCommand(new model::ConnectCommand(m_model, m_ref, target, inputIndex, connection), {target});
-        });
+    connect(m_scene, &DiagramScene::elementsMoved, this, &DiagramEditor::moveElements);
+    connect(m_scene, &DiagramScene::wireDrawn, this, &DiagramEditor::connectWire);
     connect(m_view, &DiagramView::zoomChanged, this, [this] { Q_EMIT zoomChanged(zoomPercent()); });
     // Paste is enabled by what the clipboard holds.
     connect(QGuiApplication::clipboard(), &QClipboard::dataChanged, this, &DiagramEditor::updateActionStates);
@@ -304,6 +286,37 @@ void DiagramEditor::select(const QList<quint64> &localIds)
 
 // ---- the edit path
 
+void DiagramEditor::moveElements(const QList<quint64> &ids, const QList<QPointF> &to)
+{
+    std::vector<model::MoveElementsCommand::Move> moves;
+    for (qsizetype i = 0; i < ids.size(); ++i)
+        moves.push_back({ids[i], model::Position {to[i].x(), to[i].y()}});
+    // Under a parent of its own: a second drag of the same items is a gesture of its own, not
+    // merged into this one (MoveElementsCommand merges the steps of one continuing drag).
+    auto *gesture = new QUndoCommand;
+    const auto *move = new model::MoveElementsCommand(m_model, m_ref, std::move(moves), gesture);
+    gesture->setText(move->text());
+    if (!pushCommand(gesture, ids))
+        m_scene->rebuild(); // the items go back where the model has them
+}
+
+void DiagramEditor::connectWire(quint64 source, const QString &formalParameter, quint64 target, int inputIndex)
+{
+    model::Connection connection;
+    connection.refLocalId = source;
+    if (!formalParameter.isEmpty())
+        connection.formalParameter = formalParameter;
+    pushCommand(new model::ConnectCommand(m_model, m_ref, target, inputIndex, connection), {target});
+}
+
+QUndoCommand *DiagramEditor::elementsCommand(std::vector<model::Element> after, const QString &undoText)
+{
+    const model::Body *body = m_model.body(m_ref);
+    if (!body || !body->elements())
+        return nullptr;
+    return new model::SetBodyElementsCommand(m_model, m_ref, std::move(after), undoText);
+}
+
 std::vector<model::Element> DiagramEditor::bodyElementsFor(std::vector<model::Element> shown) const
 {
     return shown;
@@ -344,8 +357,8 @@ bool DiagramEditor::applyRewrite(const QString &undoText, const ElementRewrite &
         return false;
     }
     // An edit that changes nothing pushes nothing (the command makes itself obsolete).
-    if (const model::Body *body = m_model.body(m_ref); body && body->elements())
-        m_undoStack->push(new model::SetBodyElementsCommand(m_model, m_ref, std::move(after), undoText));
+    if (QUndoCommand *command = elementsCommand(std::move(after), undoText))
+        m_undoStack->push(command);
     showMessage(QString());
     m_scene->rebuildIfDirty();
     select(QList<quint64>(outcome.select.begin(), outcome.select.end()));

@@ -200,6 +200,14 @@ protected:
     // `scenePos`: the language inserts its box there. Default: such drops are not accepted.
     [[nodiscard]] virtual bool acceptsPouDrops() const { return false; }
     virtual bool dropPou(const QString &typeName, QPointF scenePos);
+    // The one command that makes the body's elements `after`: a SetBodyElementsCommand (nullptr
+    // when the body keeps no elements). A language that keeps its diagram elsewhere (CODESYS's
+    // CFC in addData) writes it there.
+    [[nodiscard]] virtual QUndoCommand *elementsCommand(std::vector<model::Element> after, const QString &undoText);
+    // A drag of movable items ended (elementsMoved) and a wire was drawn (wireDrawn): by default
+    // a MoveElementsCommand and a ConnectCommand on the body's elements.
+    virtual void moveElements(const QList<quint64> &localIds, const QList<QPointF> &positions);
+    virtual void connectWire(quint64 source, const QString &formalParameter, quint64 target, int inputIndex);
     // Texts the subclass set itself (labels), on LanguageChange; the actions are done already.
     virtual void retranslate() { }
     // After the scene was rebuilt or updated: online styles and diagnostics are applied again by

@@ -40,6 +40,10 @@ bool DiagramPolicy::canConnect(const DiagramItem &, const Pin &, const DiagramIt
     return false;
 }
 
+void DiagramPolicy::itemsDragged(DiagramScene &, const QList<quint64> &, QPointF)
+{
+}
+
 // ---- scene
 
 DiagramScene::DiagramScene(model::ProjectModel &model, model::BodyRef ref, DiagramPolicy &policy, QObject *parent)
@@ -55,6 +59,11 @@ DiagramScene::DiagramScene(model::ProjectModel &model, model::BodyRef ref, Diagr
     connect(&model, &ProjectModel::connectionsChanged, this,
         [this](const model::BodyRef &r, quint64 target) { noteChanged(r, {target}); });
     connect(&model, &ProjectModel::projectReset, this, &DiagramScene::noteEverything);
+    // A diagram kept in addData (CODESYS's CFC) is drawn again as a whole when it changes.
+    connect(&model, &ProjectModel::bodyAddDataChanged, this, [this](const model::BodyRef &r) {
+        if (r == m_ref)
+            noteEverything();
+    });
     // Actions and transitions appear in the drawing (SFC action blocks, conditions by name).
     connect(&model, &ProjectModel::pouPartsChanged, this, [this](model::PouId pou) {
         if (pou == m_ref.pou)
@@ -329,6 +338,7 @@ void DiagramScene::mouseMoveEvent(QGraphicsSceneMouseEvent *event)
         if (DiagramItem *moved = itemFor(it.key()))
             moved->setPos(it.value() + m_drag->delta);
     }
+    m_policy.itemsDragged(*this, m_drag->itemPositions.keys(), m_drag->delta);
 }
 
 void DiagramScene::mouseReleaseEvent(QGraphicsSceneMouseEvent *event)

@@ -60,6 +60,9 @@ public:
     [[nodiscard]] virtual bool canStartWire(const DiagramItem &item, const Pin &pin) const;
     [[nodiscard]] virtual bool canConnect(const DiagramItem &source, const Pin &output, const DiagramItem &target,
         const Pin &input) const;
+    // While a drag moves the items of `localIds` by `delta` from where the model has them (before
+    // the move becomes a command): CFC re-routes their wires. Default: nothing.
+    virtual void itemsDragged(DiagramScene &scene, const QList<quint64> &localIds, QPointF delta);
 };
 
 // A pin of an item together with the item (what the mouse found).

@@ -9,7 +9,8 @@ namespace {
 bool hasCfcDiagram(const model::Body &body)
 {
     for (const model::AddDataEntry &entry : body.addData) {
-        if (entry.name.endsWith(QLatin1String(kCodesysCfcAddDataSuffix), Qt::CaseInsensitive))
+        if (entry.name.endsWith(QLatin1String(kCodesysCfcAddDataSuffix), Qt::CaseInsensitive)
+            || entry.name == QLatin1String(kIecStudioCfcAddDataName))
             return true;
     }
     return false;

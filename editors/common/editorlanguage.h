@@ -18,5 +18,8 @@ EditorLanguage editorLanguage(const model::Body &body);
 QString editorLanguageName(EditorLanguage language);
 // The marker of a CODESYS CFC diagram: an addData entry whose name ends like this.
 inline constexpr const char *kCodesysCfcAddDataSuffix = "/plcopenxml/cfc";
+// The marker of a CFC made in IEC Studio: an FBD body (Beremiz opens it as one, with the same
+// drawing and order) that carries an addData entry of this name.
+inline constexpr const char *kIecStudioCfcAddDataName = "http://www.iecstudio.org/cfc";
 
 } // namespace iec::editors

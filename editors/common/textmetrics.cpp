@@ -31,4 +31,21 @@ double boxWidth(const model::Block &block)
     return roundUp(std::max({60.0, left + right + 24, textWidth(block.typeName) + 16}), 10);
 }
 
+QSizeF sinkOrVariableSize(const model::Element &element)
+{
+    constexpr double kRow = 20;
+    if (const auto *jump = std::get_if<model::Jump>(&element))
+        return {roundUp(textWidth(jump->label) + 30, 10), kRow};
+    if (std::holds_alternative<model::Return>(element))
+        return {roundUp(textWidth(QStringLiteral("RETURN")) + 16, 10), kRow};
+    QString text;
+    if (const auto *in = std::get_if<model::InVariable>(&element))
+        text = in->expression;
+    else if (const auto *out = std::get_if<model::OutVariable>(&element))
+        text = out->expression;
+    else if (const auto *inOut = std::get_if<model::InOutVariable>(&element))
+        text = inOut->expression;
+    return {roundUp(std::max(40.0, textWidth(text) + 14), 10), kRow};
+}
+
 } // namespace iec::editors

@@ -2,6 +2,9 @@
 
 #include "model/elements_fbd.h"
 
+#include "model/element.h"
+
+#include <QSizeF>
 #include <QString>
 
 // Sizes of texts and boxes in the data-flow languages (LD, FBD, CFC), estimated from the
@@ -15,5 +18,7 @@ double textWidth(const QString &text);
 double roundUp(double value, double step);
 // The width of a box: its type name, and its input and output pin names side by side.
 double boxWidth(const model::Block &block);
+// The size of a variable, jump or return: one row high, as wide as its text.
+QSizeF sinkOrVariableSize(const model::Element &element);
 
 } // namespace iec::editors

@@ -187,7 +187,7 @@ QList<QPointF> simplifyPolyline(const QList<QPointF> &points)
     return result;
 }
 
-QList<QPointF> routeOrthogonal(const RouteRequest &request)
+std::optional<QList<QPointF>> tryRouteOrthogonal(const RouteRequest &request)
 {
     // The stubs: the wire runs `clearance` straight out of the output and into the input.
     const QPointF start(request.from.x() + request.clearance, request.from.y());
@@ -195,10 +195,17 @@ QList<QPointF> routeOrthogonal(const RouteRequest &request)
     const RoutingGrid grid = buildGrid(request, start, goal);
     QList<QPointF> middle = searchPath(grid, start, goal);
     if (middle.isEmpty())
-        return simplifyPolyline(fallbackRoute(request.from, request.to));
+        return std::nullopt;
     middle.prepend(request.from);
     middle.append(request.to);
     return simplifyPolyline(middle);
+}
+
+QList<QPointF> routeOrthogonal(const RouteRequest &request)
+{
+    if (auto route = tryRouteOrthogonal(request))
+        return *std::move(route);
+    return simplifyPolyline(fallbackRoute(request.from, request.to));
 }
 
 } // namespace iec::editors

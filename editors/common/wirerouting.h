@@ -4,6 +4,8 @@
 #include <QPointF>
 #include <QRectF>
 
+#include <optional>
+
 namespace iec::editors {
 
 struct RouteRequest {
@@ -18,6 +20,9 @@ struct RouteRequest {
 // horizontal or vertical, no two consecutive segments in line. The CFC editor routes every wire
 // with it; FBD and LD use it for connections their layouts do not draw themselves.
 QList<QPointF> routeOrthogonal(const RouteRequest &request);
+// The same route, or nullopt when the obstacles leave no way (routeOrthogonal then falls back to
+// a route through them; CFC draws the wire straight and red instead).
+std::optional<QList<QPointF>> tryRouteOrthogonal(const RouteRequest &request);
 
 // Removes repeated points and points in the middle of a straight run.
 QList<QPointF> simplifyPolyline(const QList<QPointF> &points);

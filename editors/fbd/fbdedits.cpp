@@ -57,23 +57,6 @@ BlockVariable pin(const QString &name, bool input)
     return v;
 }
 
-Block blockFrom(const BoxSpec &spec)
-{
-    Block block;
-    block.typeName = spec.typeName;
-    if (spec.functionBlock)
-        block.instanceName = kPlaceholder;
-    if (spec.withEn) {
-        block.inputVariables.push_back(pin(QStringLiteral("EN"), true));
-        block.outputVariables.push_back(pin(QStringLiteral("ENO"), false));
-    }
-    for (const QString &name : spec.inputs)
-        block.inputVariables.push_back(pin(name, true));
-    for (const QString &name : spec.outputs)
-        block.outputVariables.push_back(pin(name, false));
-    return block;
-}
-
 // The pin of a box that carries the data flow: after EN, when the box has one.
 int firstDataInput(const Block &block)
 {
@@ -94,7 +77,7 @@ int firstDataOutput(const Block &block)
 // A new box with "???" on every input but `wired` (which the caller connects).
 quint64 newBox(FbdDocument &document, FbdNetwork &network, const BoxSpec &spec, int *dataInput, int *dataOutput)
 {
-    const Block block = blockFrom(spec);
+    const Block block = blockFromSpec(spec);
     *dataInput = firstDataInput(block);
     *dataOutput = block.outputVariables.empty() ? -1 : firstDataOutput(block);
     const int inputs = int(block.inputVariables.size() + block.inOutVariables.size());
@@ -384,7 +367,7 @@ FbdEditResult insertOperator(FbdDocument &document, const FbdCursor &cursor, con
         Block *old = blockAt(document, at.element);
         if (!old)
             return refuse(QT_TRANSLATE_NOOP("iec::editors::fbd::FbdEdits", "Select a box first."));
-        Block fresh = blockFrom(spec);
+        Block fresh = blockFromSpec(spec);
         // An extensible operator takes every branch the old box had (ADD with four inputs → MUL
         // with four).
         if (isExtensible(spec.typeName) && !fresh.inputVariables.empty()) {

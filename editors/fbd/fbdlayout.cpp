@@ -9,22 +9,6 @@ namespace iec::editors::fbd {
 using namespace model;
 using namespace layout;
 
-QSizeF sinkOrVariableSize(const Element &element)
-{
-    if (const auto *jump = std::get_if<Jump>(&element))
-        return {roundUp(textWidth(jump->label) + 30, 10), kRow};
-    if (std::holds_alternative<Return>(element))
-        return {roundUp(textWidth(QStringLiteral("RETURN")) + 16, 10), kRow};
-    QString text;
-    if (const auto *in = std::get_if<InVariable>(&element))
-        text = in->expression;
-    else if (const auto *out = std::get_if<OutVariable>(&element))
-        text = out->expression;
-    else if (const auto *inOut = std::get_if<InOutVariable>(&element))
-        text = inOut->expression;
-    return {roundUp(std::max(40.0, textWidth(text) + 14), 10), kRow};
-}
-
 namespace {
 
 // What a node needs, in rows relative to its top row.

@@ -76,9 +76,6 @@ struct FbdGeometry {
     QPointF end; // the network's last position
 };
 
-// The size of a variable, jump or return in a tree.
-QSizeF sinkOrVariableSize(const model::Element &element);
-
 // Lays out network `index` with its top at `top` (a freehand network keeps its drawing and is
 // moved down to `top` as a whole).
 FbdGeometry layoutNetwork(const FbdDocument &document, std::size_t index, double top);

@@ -1,7 +1,7 @@
 // Graphical bodies open through the editor registry (DESIGN.md): the document area asks it by
 // editor language and wires what it gets (grid, online instance, completion, opening actions),
 // the Insert, Edit and View menus show the current editor's commands and the status bar its
-// zoom, build messages on elements mark them; a language without an editor keeps the placeholder. A test language (the boxes of
+// zoom, build messages on elements mark them. A test language (the boxes of
 // tests/editors/boxdiagram.h, registered for FBD in place of the real editor) stands in for any
 // language.
 #include "app/buildcontroller.h"
@@ -83,6 +83,7 @@ model::Project project()
         {QStringLiteral("http://www.3s-software.com/plcopenxml/cfc"), QStringLiteral("handle"), QStringLiteral("<CFC/>")});
     project.types.pous.push_back(cfc);
     project.types.pous.push_back(pouIn(model::BodyLanguage::SFC, QStringLiteral("Chart")));
+    project.types.pous.push_back(pouIn(model::BodyLanguage::ST, QStringLiteral("Text")));
     return project;
 }
 
@@ -139,29 +140,17 @@ private Q_SLOTS:
             qobject_cast<QWidget *>(documents.openBody(bodyOf(window, "Chart")))->findChild<editors::DiagramEditor *>()));
     }
 
-    void languagesWithoutAnEditorKeepThePlaceholder_data()
+    void codesysCfcOpensInTheCfcEditor()
     {
-        QTest::addColumn<QString>("pou");
-        QTest::addColumn<QString>("language");
-        QTest::newRow("CFC of CODESYS") << "Flow" << "CFC";
-    }
-
-    void languagesWithoutAnEditorKeepThePlaceholder()
-    {
-        QFETCH(QString, pou);
-        QFETCH(QString, language);
-        if (editors::EditorRegistry::instance().find(editors::EditorLanguage::CFC))
-            QSKIP("this language has an editor now");
+        // CODESYS's CFC (an empty ST body with the chart in addData) is a diagram, not ST text.
         MainWindow window;
         window.projectModel().reset(project());
-        const BodyRef ref = bodyOf(window, qPrintable(pou));
-        QWidget *document = window.documents().openBody(ref);
-        QVERIFY(document);
-        QVERIFY(!window.documents().diagramEditorFor(ref));
-        QVERIFY(!window.documents().textEditorFor(ref)); // a CFC diagram is not ST text to type into
-        auto *label = document->findChild<QLabel *>();
-        QVERIFY(label);
-        QVERIFY2(label->text().contains(QStringLiteral("written in %1.").arg(language)), qPrintable(label->text()));
+        const BodyRef ref = bodyOf(window, "Flow");
+        QVERIFY(window.documents().openBody(ref));
+        editors::DiagramEditor *editor = window.documents().diagramEditorFor(ref);
+        QVERIFY(editor);
+        QVERIFY(editor->action(QStringLiteral("cfcOrderDataFlow")));
+        QVERIFY(!window.documents().textEditorFor(ref));
     }
 
     void theMenusFollowTheCurrentDiagramEditor_data()
@@ -211,8 +200,8 @@ private Q_SLOTS:
         // Cut, Copy, Paste and Delete are the window's own entries (EditActions), not twice.
         for (QAction *action : editor->actionsIn(editors::DiagramEditor::ActionGroup::Edit))
             QVERIFY2(!menuWidget->actions().contains(action), qPrintable(action->objectName()));
-        // Another document in front takes them out again: the placeholder of a CFC diagram.
-        window.documents().openBody(bodyOf(window, "Flow"));
+        // Another document in front takes them out again: ST text.
+        window.documents().openBody(bodyOf(window, "Text"));
         QVERIFY(!window.documents().currentDiagramEditor());
         for (QAction *action : std::as_const(shown))
             QVERIFY2(!menuWidget->actions().contains(action), qPrintable(action->objectName()));
@@ -269,7 +258,7 @@ private Q_SLOTS:
         viewEntry("fitToWindow")->trigger();
         QCOMPARE(label->text(), QStringLiteral("Zoom: %1 %").arg(editor->zoomPercent()));
         // No diagram in front: no zoom to show.
-        window.documents().openBody(bodyOf(window, "Flow"));
+        window.documents().openBody(bodyOf(window, "Text"));
         QVERIFY(!label->isVisible());
     }
 

@@ -9,12 +9,16 @@
 #include "interpreter/frontend/projectsource.h"
 #include "interpreter/runtime/runtime.h"
 
+#include "editors/cfc/cfcedits.h"
+#include "editors/common/diagramclipboard.h"
+#include "model/plcopen/fragment.h"
 #include "model/sfcoptions.h"
 
 #include "../interpreter/graphical/diagram.h"
 #include "../interpreter/sfc/chartelements.h"
 
 #include <QCoreApplication>
+#include <QMimeData>
 #include <QTest>
 #include <QTranslator>
 
@@ -236,6 +240,20 @@ void TestMessageTranslations::messagesAreTranslated_data()
             messages << w.message;
         return messages;
     }) << 1;
+
+    // What the diagram editors refuse, and what a paste of foreign data says.
+    QTest::newRow("cfc edits refused") << Messages([] {
+        std::vector<model::Element> none;
+        return QStringList {editors::cfc::deleteElements(none, {}).error, editors::cfc::setOrderNumber(none, 1, 1).error,
+            editors::cfc::moveInOrder(none, {1}, editors::cfc::OrderMove::Earlier).error,
+            editors::cfc::connectPins(none, 1, std::nullopt, 2, 0).error};
+    }) << 4;
+    QTest::newRow("paste of foreign data") << Messages([] {
+        QMimeData text;
+        text.setText(QStringLiteral("x := 1;"));
+        return QStringList {model::plcopen::readElementsFragment("<other/>").error,
+            editors::elementsFromMimeData(&text, editors::EditorLanguage::CFC, 1).error};
+    }) << 2;
 }
 
 void TestMessageTranslations::messagesAreTranslated()

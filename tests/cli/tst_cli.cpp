@@ -42,6 +42,7 @@ private Q_SLOTS:
     void renderDrawsActionsAndTransitions();
     void renderDrawsLadder();
     void renderDrawsFunctionBlockDiagrams();
+    void renderDrawsCodesysCfc();
     void renderRefuses_data();
     void renderRefuses();
 };
@@ -601,6 +602,57 @@ void TestCli::renderDrawsFunctionBlockDiagrams()
         QVERIFY2(bytes.contains(name), name);
 }
 
+void TestCli::renderDrawsCodesysCfc()
+{
+    // A CFC as CODESYS exports it: an empty ST body, the chart in addData, every wire through an
+    // anonymous connector, positions on CODESYS's grid.
+    const QByteArray project =
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
+        "<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">"
+        "<fileHeader companyName=\"\" productName=\"CODESYS\" productVersion=\"3.5\" creationDateTime=\"2026-11-26T10:00:00\"/>"
+        "<contentHeader name=\"cfc\"><coordinateInfo><fbd><scaling x=\"1\" y=\"1\"/></fbd><ld><scaling x=\"1\" y=\"1\"/></ld>"
+        "<sfc><scaling x=\"1\" y=\"1\"/></sfc></coordinateInfo></contentHeader>"
+        "<types><dataTypes/><pous><pou name=\"PLC_PRG\" pouType=\"program\"><interface><localVars>"
+        "<variable name=\"Start\"><type><BOOL/></type></variable><variable name=\"Lamp\"><type><BOOL/></type></variable>"
+        "<variable name=\"Delay\"><type><derived name=\"TON\"/></type></variable></localVars></interface>"
+        "<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\"/></ST>"
+        "<addData><data name=\"http://www.3s-software.com/plcopenxml/cfc\" handleUnknown=\"implementation\"><CFC>"
+        "<inVariable localId=\"1\"><position x=\"4\" y=\"6\"/><connectionPointOut><expression/></connectionPointOut><expression>Start</expression></inVariable>"
+        "<connector localId=\"2\" name=\"\"><position x=\"0\" y=\"0\"/><connectionPointIn><connection refLocalId=\"1\" formalParameter=\"Start\"/></connectionPointIn></connector>"
+        "<inVariable localId=\"3\"><position x=\"4\" y=\"7\"/><connectionPointOut><expression/></connectionPointOut><expression>T#2s</expression></inVariable>"
+        "<connector localId=\"4\" name=\"\"><position x=\"0\" y=\"0\"/><connectionPointIn><connection refLocalId=\"3\" formalParameter=\"T#2s\"/></connectionPointIn></connector>"
+        "<block localId=\"5\" executionOrderId=\"0\" typeName=\"TON\" instanceName=\"Delay\"><position x=\"12\" y=\"5\"/>"
+        "<inputVariables><variable formalParameter=\"IN\"><connectionPointIn><relPosition x=\"0\" y=\"0\"/><connection refLocalId=\"2\"/></connectionPointIn></variable>"
+        "<variable formalParameter=\"PT\"><connectionPointIn><relPosition x=\"0\" y=\"1\"/><connection refLocalId=\"4\"/></connectionPointIn></variable></inputVariables>"
+        "<inOutVariables/><outputVariables><variable formalParameter=\"Q\"><connectionPointOut><relPosition x=\"0\" y=\"0\"/><expression/></connectionPointOut></variable>"
+        "<variable formalParameter=\"ET\"><connectionPointOut><relPosition x=\"0\" y=\"1\"/><expression/></connectionPointOut></variable></outputVariables></block>"
+        "<connector localId=\"6\" name=\"\"><position x=\"0\" y=\"0\"/><connectionPointIn><connection refLocalId=\"5\" formalParameter=\"Q\"/></connectionPointIn></connector>"
+        "<outVariable localId=\"7\" executionOrderId=\"1\"><position x=\"22\" y=\"6\"/><connectionPointIn><relPosition x=\"0\" y=\"0\"/>"
+        "<connection refLocalId=\"6\"/></connectionPointIn><expression>Lamp</expression></outVariable>"
+        "</CFC></data></addData></body></pou></pous></types>"
+        "<instances><configurations/></instances></project>\n";
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("cfc.xml"));
+    QFile source(file);
+    QVERIFY(source.open(QIODevice::WriteOnly));
+    source.write(project);
+    source.close();
+    const QString out = dir.filePath(QStringLiteral("cfc.svg"));
+    const Result result = cli({QStringLiteral("render"), file, QStringLiteral("--pou"), QStringLiteral("PLC_PRG"), out});
+    QCOMPARE(result.err, QString());
+    QCOMPARE(result.exitCode, 0);
+    QFile svg(out);
+    QVERIFY(svg.open(QIODevice::ReadOnly));
+    const QByteArray bytes = svg.readAll();
+    // Every name, the pins, and the execution order counted from 1.
+    for (const char *name : {">Start<", ">T#2s<", ">TON<", ">Delay<", ">Lamp<", ">IN<", ">PT<", ">Q<", ">ET<", ">1<", ">2<"})
+        QVERIFY2(bytes.contains(name), name);
+    // Drawing it changed nothing in the file.
+    QFile after(file);
+    QVERIFY(after.open(QIODevice::ReadOnly));
+    QCOMPARE(after.readAll(), project);
+}
+
 void TestCli::renderDrawsActionsAndTransitions()
 {
     // TwinCAT's PPU keeps SFC charts in actions of its function blocks.
@@ -630,7 +682,7 @@ void TestCli::renderDrawsActionsAndTransitions()
         QStringLiteral("ACT_GreenLampOn"), out});
     QCOMPARE(result.exitCode, 1);
     QCOMPARE(result.err.trimmed(), QStringLiteral("iecstudio-cli: render: Action 'Stamp.ACT_GreenLampOn' is written in ST, "
-                                                  "which cannot be drawn yet (LD, FBD, SFC can)."));
+                                                  "which cannot be drawn yet (LD, FBD, CFC, SFC can)."));
 }
 
 void TestCli::renderRefuses_data()
@@ -642,7 +694,7 @@ void TestCli::renderRefuses_data()
     QTest::newRow("not drawable yet") << QStringList {QStringLiteral("render"), file, QStringLiteral("--pou"),
         QStringLiteral("CounterST"), QStringLiteral("x.svg")} << 1
                                       << QStringLiteral("iecstudio-cli: render: POU 'CounterST' is written in ST, which "
-                                                        "cannot be drawn yet (LD, FBD, SFC can).");
+                                                        "cannot be drawn yet (LD, FBD, CFC, SFC can).");
     QTest::newRow("no such POU") << QStringList {QStringLiteral("render"), file, QStringLiteral("--pou"),
         QStringLiteral("Nope"), QStringLiteral("x.svg")} << 2
                                  << QStringLiteral("iecstudio-cli: render: %1 has no POU named 'Nope'.").arg(file);
