@@ -338,6 +338,9 @@ void WireItem::setBroken(bool broken)
     if (m_broken == broken)
         return;
     m_broken = broken;
+    // A wire without room runs straight across whatever is in the way: drawn over the elements,
+    // so that the red line is seen.
+    setZValue(broken ? 1 : -1);
     update();
 }
 
