@@ -2971,6 +2971,22 @@ Automatisch gespeichert: %2</translation>
             <source>&amp;Delete</source>
             <translation>&amp;Löschen</translation>
         </message>
+        <message>
+            <source>Jump</source>
+            <translation>Sprung</translation>
+        </message>
+        <message>
+            <source>Label</source>
+            <translation>Marke</translation>
+        </message>
+        <message>
+            <source>Return</source>
+            <translation>Rücksprung</translation>
+        </message>
+        <message>
+            <source>Comment</source>
+            <translation>Kommentar</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::fbd::FbdEditor</name>

@@ -2966,6 +2966,22 @@ Autosaved: %2</source>
             <source>&amp;Delete</source>
             <translation>删除(&amp;D)</translation>
         </message>
+        <message>
+            <source>Jump</source>
+            <translation>跳转</translation>
+        </message>
+        <message>
+            <source>Label</source>
+            <translation>标号</translation>
+        </message>
+        <message>
+            <source>Return</source>
+            <translation>返回</translation>
+        </message>
+        <message>
+            <source>Comment</source>
+            <translation>注释</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::fbd::FbdEditor</name>

@@ -1,7 +1,8 @@
 // The CFC editor's commands as one table (DiagramEditor::ActionSpec): the Insert menu of CoDeSys
 // 2.3's CFC (seed 002 §6; box, input, output, jump, label, return, comment, connection marks), the
 // execution-order commands of its Extras menu, the window's Edit menu, the tool bar and the keys
-// (docs/editors-cfc.md lists them).
+// (docs/editors-cfc.md lists them). The Insert buttons of the tool bar also drag their element
+// onto the sheet.
 #include "editors/cfc/cfceditor.h"
 
 #include "editors/common/diagramclipboard.h"
@@ -20,10 +21,10 @@ void CfcEditor::createActions()
         {"cfcBox", QT_TR_NOOP("&Box"), "Ctrl+Shift+B", G::Insert, true, true, [this] { insertBox(); }, always, QT_TR_NOOP("Box")},
         {"cfcInput", QT_TR_NOOP("&Input"), "Ctrl+E", G::Insert, true, true, [this] { insertInput(); }, always, QT_TR_NOOP("Input")},
         {"cfcOutput", QT_TR_NOOP("O&utput"), "Ctrl+A", G::Insert, true, true, [this] { insertOutput(); }, always, QT_TR_NOOP("Output")},
-        {"cfcJump", QT_TR_NOOP("&Jump"), "Ctrl+G", G::Insert, true, false, [this] { insertJump(); }, always},
-        {"cfcLabel", QT_TR_NOOP("&Label"), "Ctrl+L", G::Insert, true, false, [this] { insertLabel(); }, always},
-        {"cfcReturn", QT_TR_NOOP("&Return"), "Ctrl+R", G::Insert, true, false, [this] { insertReturn(); }, always},
-        {"cfcComment", QT_TR_NOOP("Co&mment…"), "Ctrl+K", G::Insert, true, false, [this] { askComment(); }, always},
+        {"cfcJump", QT_TR_NOOP("&Jump"), "Ctrl+G", G::Insert, true, true, [this] { insertJump(); }, always, QT_TR_NOOP("Jump")},
+        {"cfcLabel", QT_TR_NOOP("&Label"), "Ctrl+L", G::Insert, true, true, [this] { insertLabel(); }, always, QT_TR_NOOP("Label")},
+        {"cfcReturn", QT_TR_NOOP("&Return"), "Ctrl+R", G::Insert, true, true, [this] { insertReturn(); }, always, QT_TR_NOOP("Return")},
+        {"cfcComment", QT_TR_NOOP("Co&mment…"), "Ctrl+K", G::Insert, true, true, [this] { askComment(); }, always, QT_TR_NOOP("Comment")},
         {"cfcConnector", QT_TR_NOOP("Connection Mark (&Source)"), "", G::Insert, true, false, [this] { insertConnector(); }, always},
         {"cfcContinuation", QT_TR_NOOP("Connection Mark (&Sink)"), "", G::Insert, true, false, [this] { insertContinuation(); }, always},
         {"cfcNegate", QT_TR_NOOP("Ne&gate"), "Ctrl+Shift+N", G::Element, true, false, [this] { toggleNegation(); }, selected},

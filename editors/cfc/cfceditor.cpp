@@ -204,6 +204,15 @@ bool CfcEditor::dropPou(const QString &typeName, QPointF scenePos)
     return insertBox(typeName);
 }
 
+bool CfcEditor::dropInsertAction(const QString &actionId, QPointF scenePos)
+{
+    QAction *dropped = action(actionId);
+    if (!dropped || !insertActions().contains(dropped))
+        return false;
+    setInsertPosition(scenePos);
+    return trigger(actionId);
+}
+
 // ---- inserting
 
 bool CfcEditor::insert(const QString &undoText, Element element, bool typeAfterwards)

@@ -63,6 +63,8 @@ protected:
     void connectWire(quint64 source, const QString &formalParameter, quint64 target, int inputIndex) override;
     [[nodiscard]] bool acceptsPouDrops() const override { return true; }
     bool dropPou(const QString &typeName, QPointF scenePos) override;
+    [[nodiscard]] bool acceptsInsertDrops() const override { return true; }
+    bool dropInsertAction(const QString &actionId, QPointF scenePos) override;
     bool eventFilter(QObject *watched, QEvent *event) override;
     void sceneRefreshed() override;
 

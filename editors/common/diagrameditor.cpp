@@ -9,10 +9,13 @@
 #include "model/undo/bodyelementscommand.h"
 #include "model/undo/elementcommands.h"
 
+#include <QAbstractButton>
 #include <QAction>
+#include <QApplication>
 #include <QClipboard>
 #include <QGuiApplication>
 #include <QContextMenuEvent>
+#include <QDrag>
 #include <QDropEvent>
 #include <QMimeData>
 #include <QCoreApplication>
@@ -20,6 +23,7 @@
 #include <QKeyEvent>
 #include <QLabel>
 #include <QMenu>
+#include <QMouseEvent>
 #include <QPrintDialog>
 #include <QPrinter>
 #include <QScrollBar>
@@ -143,8 +147,14 @@ void DiagramEditor::addActionEntries(std::span<const ActionSpec> specs, const QB
         translateAction(*raw);
         connect(action, &QAction::triggered, this, [this, raw] { runAction(*raw); });
         addAction(action);
-        if (spec.onToolBar)
+        if (spec.onToolBar) {
             m_toolBar->insertAction(before, action);
+            if (spec.group == ActionGroup::Insert && acceptsInsertDrops())
+                if (QWidget *button = m_toolBar->widgetForAction(action)) {
+                    button->installEventFilter(this);
+                    m_insertButtons.insert(button, action->objectName());
+                }
+        }
         m_actions.push_back(std::move(entry));
     }
 }
@@ -476,17 +486,61 @@ bool DiagramEditor::eventFilter(QObject *watched, QEvent *event)
     if ((watched == m_view || watched == m_view->viewport()) && event->type() == QEvent::KeyPress
         && handleKey(static_cast<QKeyEvent *>(event)))
         return true;
-    if (watched == m_view->viewport() && handlePouDrop(event))
+    if (watched == m_view->viewport() && handleDrop(event))
+        return true;
+    if (m_insertButtons.contains(watched) && dragInsertButton(watched, event))
         return true;
     return QWidget::eventFilter(watched, event);
 }
 
-bool DiagramEditor::handlePouDrop(QEvent *event)
+// A press and a move beyond the drag distance on an Insert button drags its command onto the
+// sheet; a plain click still runs it.
+bool DiagramEditor::dragInsertButton(QObject *button, QEvent *event)
+{
+    if (event->type() == QEvent::MouseButtonPress) {
+        m_buttonPressedAt = static_cast<QMouseEvent *>(event)->position().toPoint();
+        return false;
+    }
+    if (event->type() != QEvent::MouseMove)
+        return false;
+    const auto *mouse = static_cast<QMouseEvent *>(event);
+    if (!(mouse->buttons() & Qt::LeftButton)
+        || (mouse->position().toPoint() - m_buttonPressedAt).manhattanLength() < QApplication::startDragDistance())
+        return false;
+    auto *widget = static_cast<QWidget *>(button);
+    auto *mime = new QMimeData;
+    mime->setData(QString::fromLatin1(kInsertActionMimeType), m_insertButtons.value(button).toUtf8());
+    auto *drag = new QDrag(widget);
+    drag->setMimeData(mime);
+    drag->setPixmap(widget->grab());
+    if (auto *tool = qobject_cast<QAbstractButton *>(widget))
+        tool->setDown(false); // the drag took the press: no click afterwards
+    drag->exec(Qt::CopyAction);
+    return true;
+}
+
+bool DiagramEditor::handleDrop(QEvent *event)
 {
     const QEvent::Type type = event->type();
     if (type != QEvent::DragEnter && type != QEvent::DragMove && type != QEvent::Drop)
         return false;
     auto *drop = static_cast<QDropEvent *>(event);
+    const QString insertType = QString::fromLatin1(kInsertActionMimeType);
+    if (acceptsInsertDrops() && drop->mimeData()->hasFormat(insertType)) {
+        if (m_online) {
+            if (type == QEvent::Drop)
+                refuseWhileOnline();
+            drop->ignore();
+            return true;
+        }
+        drop->setDropAction(Qt::CopyAction);
+        drop->accept();
+        if (type == QEvent::Drop) {
+            setFocus();
+            dropInsertAction(QString::fromUtf8(drop->mimeData()->data(insertType)), m_view->mapToScene(drop->position().toPoint()));
+        }
+        return true;
+    }
     const QString mimeType = QString::fromLatin1(kPouMimeType);
     if (!acceptsPouDrops() || !drop->mimeData()->hasFormat(mimeType))
         return false;
@@ -507,6 +561,11 @@ bool DiagramEditor::handlePouDrop(QEvent *event)
 }
 
 bool DiagramEditor::dropPou(const QString &, QPointF)
+{
+    return false;
+}
+
+bool DiagramEditor::dropInsertAction(const QString &, QPointF)
 {
     return false;
 }

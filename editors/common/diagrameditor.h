@@ -37,6 +37,9 @@ class DiagramScene;
 class DiagramView;
 class OverlayMapper;
 
+// An Insert command dragged from an editor's tool bar onto its sheet: the action's id (UTF-8).
+inline constexpr const char *kInsertActionMimeType = "application/x-iecstudio-insert-action";
+
 // An edit of the elements shown (a copy): changes them and says what to select, or refuses.
 using ElementEdit = std::function<EditOutcome(std::vector<model::Element> &elements)>;
 // An edit that builds the body's elements after the gesture itself from the shown ones (an
@@ -200,6 +203,11 @@ protected:
     // `scenePos`: the language inserts its box there. Default: such drops are not accepted.
     [[nodiscard]] virtual bool acceptsPouDrops() const { return false; }
     virtual bool dropPou(const QString &typeName, QPointF scenePos);
+    // An Insert command dragged from the tool bar (kInsertActionMimeType) and dropped at
+    // `scenePos`: the language places its element there (CFC). Default: not accepted, and the
+    // tool bar's buttons only click.
+    [[nodiscard]] virtual bool acceptsInsertDrops() const { return false; }
+    virtual bool dropInsertAction(const QString &actionId, QPointF scenePos);
     // The one command that makes the body's elements `after`: a SetBodyElementsCommand (nullptr
     // when the body keeps no elements). A language that keeps its diagram elsewhere (CODESYS's
     // CFC in addData) writes it there.
@@ -232,7 +240,8 @@ private:
     static void translateAction(const ActionEntry &entry);
     const ActionEntry *entryFor(const QString &id) const;
     bool handleKey(QKeyEvent *event);
-    bool handlePouDrop(QEvent *event);
+    bool handleDrop(QEvent *event);
+    bool dragInsertButton(QObject *button, QEvent *event);
     void openContextMenu(QPoint globalPos);
     [[nodiscard]] QPoint selectionMenuPosition() const;
     void onSceneRefreshed();
@@ -260,6 +269,8 @@ private:
     std::optional<interp::RuntimeSnapshot> m_snapshot;
     bool m_lastCommandOk = true;
     QPointer<InPlaceEditor> m_inPlace;
+    QHash<QObject *, QString> m_insertButtons; // tool bar buttons that drag their Insert command
+    QPoint m_buttonPressedAt;
 };
 
 } // namespace iec::editors

@@ -22,7 +22,11 @@
 #include "model/projectmodel.h"
 #include "tests/model/roundtrip.h"
 
+#include <QApplication>
+#include <QDropEvent>
+#include <QMimeData>
 #include <QTest>
+#include <QToolBar>
 #include <QUndoStack>
 
 using namespace iec;
@@ -343,6 +347,34 @@ private Q_SLOTS:
         QCOMPARE(editors::editorLanguage(*reread.project.findPou(QStringLiteral("Main"))->body()), editors::EditorLanguage::CFC);
         QVERIFY2(m_problems.isEmpty(), qPrintable(m_problems.join(QLatin1Char('\n'))));
         checkUndoRedo(start);
+    }
+
+    void insertCommandsAreDroppedWhereTheMouseLetsGo()
+    {
+        // The tool bar's Insert buttons drag their command (kInsertActionMimeType) onto the
+        // sheet; the element lands where the drop is, as one undo step.
+        open(cfcProject());
+        auto *bar = m_editor->findChild<QToolBar *>(QStringLiteral("diagramToolBar"));
+        QVERIFY(bar);
+        for (const char *id : {"cfcBox", "cfcInput", "cfcOutput", "cfcJump", "cfcLabel", "cfcReturn", "cfcComment"})
+            QVERIFY2(bar->widgetForAction(m_editor->action(QLatin1String(id))), id);
+        const auto dropAction = [&](const QByteArray &id, QPointF where) {
+            QMimeData mime;
+            mime.setData(QString::fromLatin1(editors::kInsertActionMimeType), id);
+            QDropEvent drop(QPointF(at(where)), Qt::CopyAction, &mime, Qt::LeftButton, {});
+            QApplication::sendEvent(viewport(), &drop);
+        };
+        dropAction("cfcOutput", QPointF(300, 200));
+        type(QStringLiteral("Done"));
+        const quint64 done = named(QStringLiteral("Done"));
+        QVERIFY(done);
+        QCOMPARE(model::header(*element(done)).position, (model::Position {300, 200}));
+        QCOMPARE(m_stack.count(), 2); // the output, its name
+        // Only Insert commands land: a dropped Delete does nothing.
+        m_editor->select({done});
+        dropAction("cfcDelete", QPointF(100, 100));
+        QCOMPARE(m_stack.count(), 2);
+        QVERIFY2(m_problems.isEmpty(), qPrintable(m_problems.join(QLatin1Char('\n'))));
     }
 
     void codesysBodyIsEditedInItsOwnForm()
