@@ -4,26 +4,19 @@
 #include "editors/common/diagramscene.h"
 #include "editors/common/diagramview.h"
 #include "editors/common/overlaymapper.h"
-#include "editors/text/calltext.h"
 #include "model/projectmodel.h"
 #include "model/undo/bodyelementscommand.h"
 #include "model/undo/elementcommands.h"
 
-#include <QAbstractButton>
 #include <QAction>
-#include <QApplication>
 #include <QClipboard>
 #include <QGuiApplication>
 #include <QContextMenuEvent>
-#include <QDrag>
-#include <QDropEvent>
-#include <QMimeData>
 #include <QCoreApplication>
 #include <QFileDialog>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QMenu>
-#include <QMouseEvent>
 #include <QPrintDialog>
 #include <QPrinter>
 #include <QScrollBar>
@@ -493,83 +486,6 @@ bool DiagramEditor::eventFilter(QObject *watched, QEvent *event)
     return QWidget::eventFilter(watched, event);
 }
 
-// A press and a move beyond the drag distance on an Insert button drags its command onto the
-// sheet; a plain click still runs it.
-bool DiagramEditor::dragInsertButton(QObject *button, QEvent *event)
-{
-    if (event->type() == QEvent::MouseButtonPress) {
-        m_buttonPressedAt = static_cast<QMouseEvent *>(event)->position().toPoint();
-        return false;
-    }
-    if (event->type() != QEvent::MouseMove)
-        return false;
-    const auto *mouse = static_cast<QMouseEvent *>(event);
-    if (!(mouse->buttons() & Qt::LeftButton)
-        || (mouse->position().toPoint() - m_buttonPressedAt).manhattanLength() < QApplication::startDragDistance())
-        return false;
-    auto *widget = static_cast<QWidget *>(button);
-    auto *mime = new QMimeData;
-    mime->setData(QString::fromLatin1(kInsertActionMimeType), m_insertButtons.value(button).toUtf8());
-    auto *drag = new QDrag(widget);
-    drag->setMimeData(mime);
-    drag->setPixmap(widget->grab());
-    if (auto *tool = qobject_cast<QAbstractButton *>(widget))
-        tool->setDown(false); // the drag took the press: no click afterwards
-    drag->exec(Qt::CopyAction);
-    return true;
-}
-
-bool DiagramEditor::handleDrop(QEvent *event)
-{
-    const QEvent::Type type = event->type();
-    if (type != QEvent::DragEnter && type != QEvent::DragMove && type != QEvent::Drop)
-        return false;
-    auto *drop = static_cast<QDropEvent *>(event);
-    const QString insertType = QString::fromLatin1(kInsertActionMimeType);
-    if (acceptsInsertDrops() && drop->mimeData()->hasFormat(insertType)) {
-        if (m_online) {
-            if (type == QEvent::Drop)
-                refuseWhileOnline();
-            drop->ignore();
-            return true;
-        }
-        drop->setDropAction(Qt::CopyAction);
-        drop->accept();
-        if (type == QEvent::Drop) {
-            setFocus();
-            dropInsertAction(QString::fromUtf8(drop->mimeData()->data(insertType)), m_view->mapToScene(drop->position().toPoint()));
-        }
-        return true;
-    }
-    const QString mimeType = QString::fromLatin1(kPouMimeType);
-    if (!acceptsPouDrops() || !drop->mimeData()->hasFormat(mimeType))
-        return false;
-    if (m_online) { // refused with the message every edit gives while online
-        if (type == QEvent::Drop)
-            refuseWhileOnline();
-        drop->ignore();
-        return true;
-    }
-    drop->setDropAction(Qt::CopyAction);
-    drop->accept();
-    if (type == QEvent::Drop) {
-        const QString typeName = QString::fromUtf8(drop->mimeData()->data(mimeType));
-        setFocus();
-        dropPou(typeName, m_view->mapToScene(drop->position().toPoint()));
-    }
-    return true;
-}
-
-bool DiagramEditor::dropPou(const QString &, QPointF)
-{
-    return false;
-}
-
-bool DiagramEditor::dropInsertAction(const QString &, QPointF)
-{
-    return false;
-}
-
 QPoint DiagramEditor::selectionMenuPosition() const
 {
     const QList<quint64> ids = selection();
@@ -707,92 +623,6 @@ void DiagramEditor::setGridSize(int size)
 {
     m_view->setGridSize(size);
     m_scene->setGridSize(size);
-}
-
-// ---- diagnostics
-
-void DiagramEditor::setDiagnostics(const QList<ElementDiagnostic> &diagnostics)
-{
-    for (const ElementDiagnostic &old : std::as_const(m_diagnostics)) {
-        if (DiagramItem *item = m_scene->itemFor(old.localId))
-            item->clearDiagnostic();
-    }
-    m_diagnostics = diagnostics;
-    applyDiagnostics();
-}
-
-void DiagramEditor::applyDiagnostics()
-{
-    // Several messages on one element are shown together, the worst severity framing it.
-    QHash<quint64, ElementDiagnostic> byElement;
-    for (const ElementDiagnostic &diagnostic : std::as_const(m_diagnostics)) {
-        auto it = byElement.find(diagnostic.localId);
-        if (it == byElement.end()) {
-            byElement.insert(diagnostic.localId, diagnostic);
-            continue;
-        }
-        it->message += QLatin1Char('\n') + diagnostic.message;
-        it->severity = std::max(it->severity, diagnostic.severity);
-    }
-    for (const ElementDiagnostic &diagnostic : std::as_const(byElement)) {
-        if (DiagramItem *item = m_scene->itemFor(diagnostic.localId))
-            item->setDiagnostic(diagnostic.severity, diagnostic.message);
-    }
-}
-
-// ---- online
-
-void DiagramEditor::setOverlayMapper(std::unique_ptr<OverlayMapper> mapper)
-{
-    m_overlay = std::move(mapper);
-}
-
-QStringList DiagramEditor::onlineNames() const
-{
-    return m_overlay ? m_overlay->names(*m_scene, m_onlineInstance) : QStringList();
-}
-
-bool DiagramEditor::wantsChartState() const
-{
-    return m_overlay && m_overlay->wantsChartState();
-}
-
-void DiagramEditor::setOnlineSnapshot(const interp::RuntimeSnapshot *snapshot)
-{
-    const bool online = snapshot != nullptr;
-    if (online != m_online) {
-        m_online = online;
-        // Online the drawing is only looked at: no dragging or wiring; the commands that would
-        // change it are off (and refuse anyway); copy, zoom, export and print stay.
-        m_scene->setEditable(!online);
-        updateActionStates();
-        if (online && m_inPlace)
-            m_inPlace->cancel();
-        if (!online) {
-            m_snapshot.reset();
-            if (m_overlay)
-                m_overlay->clear(*m_scene);
-            showMessage(QString());
-        }
-    }
-    if (snapshot) {
-        m_snapshot = *snapshot;
-        if (m_overlay)
-            m_overlay->apply(*m_scene, *m_snapshot, m_onlineInstance);
-    }
-}
-
-void DiagramEditor::onSceneRefreshed()
-{
-    // The drawing changed (an edit, undo or redo, another view of the body): a refusal shown
-    // before is about a chart that is not there any more. (Online nothing changes the body.)
-    if (!m_online)
-        showMessage(QString());
-    if (m_snapshot && m_overlay)
-        m_overlay->apply(*m_scene, *m_snapshot, m_onlineInstance);
-    applyDiagnostics();
-    updateActionStates();
-    sceneRefreshed();
 }
 
 } // namespace iec::editors

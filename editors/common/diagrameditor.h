@@ -189,6 +189,12 @@ protected:
     void setOverlayMapper(std::unique_ptr<OverlayMapper> mapper);
     // Shows a refusal or an error: trigger() then reports failure.
     void showError(const QString &message);
+    // Online: the value to prepare for a variable that is `now`: the other BOOL, or one the user
+    // types (nullopt when cancelled).
+    std::optional<QString> askValueToPrepare(const QString &name, const QString &now);
+    // Online: asks the app to prepare it (prepareValueRequested) and says how to write it; the
+    // message goes once a snapshot shows the variable at that value (written or forced).
+    void announcePrepared(const QString &name, const QString &literal);
 
     // Arrow keys: by default the nearest element in that direction (frames' centres).
     virtual void navigate(Qt::Key key);
@@ -245,6 +251,7 @@ private:
     void openContextMenu(QPoint globalPos);
     [[nodiscard]] QPoint selectionMenuPosition() const;
     void onSceneRefreshed();
+    void forgetPreparedOnceWritten();
     void applyDiagnostics();
     void exportInteractive();
 
@@ -267,6 +274,11 @@ private:
     bool m_online = false;
     bool m_shownOnce = false;
     std::optional<interp::RuntimeSnapshot> m_snapshot;
+    struct Prepared
+    {
+        QString name, literal, message;
+    };
+    std::optional<Prepared> m_prepared; // while its message is shown
     bool m_lastCommandOk = true;
     QPointer<InPlaceEditor> m_inPlace;
     QHash<QObject *, QString> m_insertButtons; // tool bar buttons that drag their Insert command

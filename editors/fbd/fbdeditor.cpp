@@ -14,7 +14,6 @@
 
 #include <QGraphicsRectItem>
 #include <QGraphicsSceneMouseEvent>
-#include <QInputDialog>
 
 namespace iec::editors::fbd {
 
@@ -297,19 +296,8 @@ void FbdEditor::prepareValue(quint64 localId)
     const Element *e = document().element(localId);
     if (name.isEmpty() || !e || !(std::holds_alternative<InVariable>(*e) || std::holds_alternative<OutVariable>(*e)))
         return;
-    const QString now = m_overlay->value(name);
-    QString literal;
-    if (now.compare(QLatin1String("TRUE"), Qt::CaseInsensitive) == 0 || now.compare(QLatin1String("FALSE"), Qt::CaseInsensitive) == 0) {
-        // A BOOL: the opposite of what it is now, as in LD.
-        literal = now.compare(QLatin1String("TRUE"), Qt::CaseInsensitive) == 0 ? QStringLiteral("FALSE") : QStringLiteral("TRUE");
-    } else {
-        bool ok = false;
-        literal = QInputDialog::getText(this, tr("Prepare Value"), tr("New value of %1 (now %2):").arg(name, now), QLineEdit::Normal, now, &ok).trimmed();
-        if (!ok || literal.isEmpty())
-            return;
-    }
-    Q_EMIT prepareValueRequested(name, literal);
-    showMessage(tr("Prepared %1 := %2. Write it with Ctrl+F7 or force it with F7.").arg(name, literal));
+    if (const std::optional<QString> literal = askValueToPrepare(name, m_overlay->value(name)))
+        announcePrepared(name, *literal);
 }
 
 // ---- commands

@@ -314,8 +314,7 @@ void LdEditor::prepareToggle(quint64 localId)
         return;
     // A contact or coil is BOOL: prepare the opposite of what it is now.
     const bool now = m_overlay->value(name).compare(QLatin1String("TRUE"), Qt::CaseInsensitive) == 0;
-    Q_EMIT prepareValueRequested(name, now ? QStringLiteral("FALSE") : QStringLiteral("TRUE"));
-    showMessage(tr("Prepared %1 := %2. Write it with Ctrl+F7 or force it with F7.").arg(name, now ? QStringLiteral("FALSE") : QStringLiteral("TRUE")));
+    announcePrepared(name, now ? QStringLiteral("FALSE") : QStringLiteral("TRUE"));
 }
 
 // ---- commands

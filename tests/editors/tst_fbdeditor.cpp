@@ -495,6 +495,15 @@ private Q_SLOTS:
         const QPoint onA = m_editor->view()->mapFromScene(a->frame().center());
         QTest::mouseDClick(m_editor->view()->viewport(), Qt::LeftButton, {}, onA);
         QCOMPARE(prepared, QStringList {QStringLiteral("Main.A := FALSE")});
+        // The message says how to write it, and goes once A has the value (not before).
+        QVERIFY(m_editor->lastMessage().contains(QLatin1String("Main.A := FALSE")));
+        snapshot.cycle = 2;
+        m_editor->setOnlineSnapshot(&snapshot);
+        QVERIFY(m_editor->lastMessage().contains(QLatin1String("Main.A := FALSE")));
+        snapshot.cycle = 3;
+        snapshot.values.insert(QStringLiteral("Main.A"), QStringLiteral("FALSE"));
+        m_editor->setOnlineSnapshot(&snapshot);
+        QCOMPARE(m_editor->lastMessage(), QString());
         // Editing is refused online.
         QVERIFY(!m_editor->trigger(QStringLiteral("fbdOperator")));
         QVERIFY(!m_editor->lastMessage().isEmpty());
