@@ -1941,6 +1941,18 @@ Automatisch gespeichert: %2</translation>
             <source>Fit</source>
             <translation>Einpassen</translation>
         </message>
+        <message>
+            <source>Prepare Value</source>
+            <translation>Wert vorbereiten</translation>
+        </message>
+        <message>
+            <source>New value of %1 (now %2):</source>
+            <translation>Neuer Wert für %1 (jetzt %2):</translation>
+        </message>
+        <message>
+            <source>Prepared %1 := %2. Write it with Ctrl+F7 or force it with F7.</source>
+            <translation>%1 := %2 vorbereitet. Mit Strg+F7 schreiben oder mit F7 forcen.</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::DiagramExport</name>
@@ -2740,6 +2752,10 @@ Automatisch gespeichert: %2</translation>
             <source>The number must lie between 1 and %1.</source>
             <translation>Die Nummer muss zwischen 1 und %1 liegen.</translation>
         </message>
+        <message>
+            <source>The box is gone.</source>
+            <translation>Der Baustein ist nicht mehr da.</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::cfc::CfcEditor</name>
@@ -2854,18 +2870,6 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>Comment:</source>
             <translation>Kommentar:</translation>
-        </message>
-        <message>
-            <source>Prepare Value</source>
-            <translation>Wert vorbereiten</translation>
-        </message>
-        <message>
-            <source>New value of %1 (now %2):</source>
-            <translation>Neuer Wert für %1 (jetzt %2):</translation>
-        </message>
-        <message>
-            <source>Prepared %1 := %2. Write it with Ctrl+F7 or force it with F7.</source>
-            <translation>%1 := %2 vorbereitet. Mit Strg+F7 schreiben oder mit F7 forcen.</translation>
         </message>
         <message>
             <source>&amp;Box</source>
@@ -2987,21 +2991,25 @@ Automatisch gespeichert: %2</translation>
             <source>Comment</source>
             <translation>Kommentar</translation>
         </message>
+        <message>
+            <source>Select a box to give it EN/ENO or take them away.</source>
+            <translation>Einen Baustein auswählen, um ihm EN/ENO zu geben oder sie zu entfernen.</translation>
+        </message>
+        <message>
+            <source>Remove EN/ENO from %1</source>
+            <translation>EN/ENO von %1 entfernen</translation>
+        </message>
+        <message>
+            <source>Add EN/ENO to %1</source>
+            <translation>EN/ENO zu %1 hinzufügen</translation>
+        </message>
+        <message>
+            <source>EN/ENO</source>
+            <translation>EN/ENO</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::fbd::FbdEditor</name>
-        <message>
-            <source>Prepare Value</source>
-            <translation>Wert vorbereiten</translation>
-        </message>
-        <message>
-            <source>New value of %1 (now %2):</source>
-            <translation>Neuer Wert für %1 (jetzt %2):</translation>
-        </message>
-        <message>
-            <source>Prepared %1 := %2. Write it with Ctrl+F7 or force it with F7.</source>
-            <translation>%1 := %2 vorbereitet. Mit Strg+F7 schreiben oder mit F7 forcen.</translation>
-        </message>
         <message>
             <source>Insert network</source>
             <translation>Netzwerk einfügen</translation>
@@ -3271,10 +3279,6 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>free</source>
             <translation>frei</translation>
-        </message>
-        <message>
-            <source>Prepared %1 := %2. Write it with Ctrl+F7 or force it with F7.</source>
-            <translation>%1 := %2 vorbereitet. Mit Strg+F7 schreiben oder mit F7 forcen.</translation>
         </message>
         <message>
             <source>Insert network</source>

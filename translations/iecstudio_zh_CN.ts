@@ -1938,6 +1938,18 @@ Autosaved: %2</source>
             <source>Fit</source>
             <translation>适合窗口</translation>
         </message>
+        <message>
+            <source>Prepare Value</source>
+            <translation>准备数值</translation>
+        </message>
+        <message>
+            <source>New value of %1 (now %2):</source>
+            <translation>%1 的新值(当前 %2):</translation>
+        </message>
+        <message>
+            <source>Prepared %1 := %2. Write it with Ctrl+F7 or force it with F7.</source>
+            <translation>已准备 %1 := %2。按 Ctrl+F7 写入,或按 F7 强制。</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::DiagramExport</name>
@@ -2735,6 +2747,10 @@ Autosaved: %2</source>
             <source>The number must lie between 1 and %1.</source>
             <translation>序号必须在 1 到 %1 之间。</translation>
         </message>
+        <message>
+            <source>The box is gone.</source>
+            <translation>该功能块已不存在。</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::cfc::CfcEditor</name>
@@ -2849,18 +2865,6 @@ Autosaved: %2</source>
         <message>
             <source>Comment:</source>
             <translation>注释:</translation>
-        </message>
-        <message>
-            <source>Prepare Value</source>
-            <translation>准备数值</translation>
-        </message>
-        <message>
-            <source>New value of %1 (now %2):</source>
-            <translation>%1 的新值(当前 %2):</translation>
-        </message>
-        <message>
-            <source>Prepared %1 := %2. Write it with Ctrl+F7 or force it with F7.</source>
-            <translation>已准备 %1 := %2。按 Ctrl+F7 写入,或按 F7 强制。</translation>
         </message>
         <message>
             <source>&amp;Box</source>
@@ -2982,21 +2986,25 @@ Autosaved: %2</source>
             <source>Comment</source>
             <translation>注释</translation>
         </message>
+        <message>
+            <source>Select a box to give it EN/ENO or take them away.</source>
+            <translation>请选择一个功能块,为其添加或去掉 EN/ENO。</translation>
+        </message>
+        <message>
+            <source>Remove EN/ENO from %1</source>
+            <translation>去掉 %1 的 EN/ENO</translation>
+        </message>
+        <message>
+            <source>Add EN/ENO to %1</source>
+            <translation>为 %1 添加 EN/ENO</translation>
+        </message>
+        <message>
+            <source>EN/ENO</source>
+            <translation>EN/ENO</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::fbd::FbdEditor</name>
-        <message>
-            <source>Prepare Value</source>
-            <translation>准备数值</translation>
-        </message>
-        <message>
-            <source>New value of %1 (now %2):</source>
-            <translation>%1 的新值(当前 %2):</translation>
-        </message>
-        <message>
-            <source>Prepared %1 := %2. Write it with Ctrl+F7 or force it with F7.</source>
-            <translation>已准备 %1 := %2。按 Ctrl+F7 写入,或按 F7 强制。</translation>
-        </message>
         <message>
             <source>Insert network</source>
             <translation>插入节</translation>
@@ -3266,10 +3274,6 @@ Autosaved: %2</source>
         <message>
             <source>free</source>
             <translation>自由</translation>
-        </message>
-        <message>
-            <source>Prepared %1 := %2. Write it with Ctrl+F7 or force it with F7.</source>
-            <translation>已准备 %1 := %2。按 Ctrl+F7 写入,按 F7 强制。</translation>
         </message>
         <message>
             <source>Insert network</source>

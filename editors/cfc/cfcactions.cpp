@@ -15,6 +15,11 @@ void CfcEditor::createActions()
     const auto always = [] { return true; };
     const auto selected = [this] { return !selectedIds().empty(); };
     const auto one = [this] { return selectedIds().size() == 1; };
+    const auto oneBox = [this] {
+        const std::vector<quint64> ids = selectedIds();
+        const model::Element *e = ids.size() == 1 ? element(ids.front()) : nullptr;
+        return e && std::holds_alternative<model::Block>(*e);
+    };
     const auto runs = [this] { return selectionRuns(); };
     const auto many = [this] { return !executionOrder(elements()).empty(); };
     const ActionSpec specs[] = {
@@ -28,6 +33,7 @@ void CfcEditor::createActions()
         {"cfcConnector", QT_TR_NOOP("Connection Mark (&Source)"), "", G::Insert, true, false, [this] { insertConnector(); }, always},
         {"cfcContinuation", QT_TR_NOOP("Connection Mark (&Sink)"), "", G::Insert, true, false, [this] { insertContinuation(); }, always},
         {"cfcNegate", QT_TR_NOOP("Ne&gate"), "Ctrl+Shift+N", G::Element, true, false, [this] { toggleNegation(); }, selected},
+        {"cfcEnEno", QT_TR_NOOP("EN/ENO"), "", G::Element, true, false, [this] { toggleEnEno(); }, oneBox},
         {"cfcRename", QT_TR_NOOP("Edit &Name"), "F2", G::Element, true, false, [this] { startTyping(); }, one},
         {"cfcOrderDataFlow", QT_TR_NOOP("Order by &Data Flow"), "", G::Element, true, true, [this] { orderByDataFlow(); }, many,
             QT_TR_NOOP("Data Flow")},

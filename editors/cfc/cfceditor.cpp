@@ -67,27 +67,6 @@ bool isIdentifierPath(const QString &text)
     return std::ranges::all_of(t, [](QChar c) { return c.isLetterOrNumber() || c == QLatin1Char('_') || c == QLatin1Char('.'); });
 }
 
-// The new box keeps the wires of the pins that have the same name, then those at the same place.
-Block withWiresOf(Block fresh, const Block &old)
-{
-    const auto carry = [](std::vector<BlockVariable> &now, const std::vector<BlockVariable> &before) {
-        for (std::size_t i = 0; i < now.size(); ++i) {
-            const auto same = std::ranges::find_if(before, [&](const BlockVariable &v) {
-                return v.formalParameter.compare(now[i].formalParameter, Qt::CaseInsensitive) == 0;
-            });
-            const BlockVariable *from = same != before.end() ? &*same : (i < before.size() ? &before[i] : nullptr);
-            if (from && from->connectionPointIn && now[i].connectionPointIn)
-                now[i].connectionPointIn->connections = from->connectionPointIn->connections;
-        }
-    };
-    carry(fresh.inputVariables, old.inputVariables);
-    carry(fresh.inOutVariables, old.inOutVariables);
-    static_cast<ElementHeader &>(fresh) = static_cast<const ElementHeader &>(old);
-    if (fresh.instanceName && old.instanceName)
-        fresh.instanceName = old.instanceName;
-    return fresh;
-}
-
 } // namespace
 
 CfcEditor::CfcEditor(ProjectModel &model, BodyRef ref, QUndoStack *undoStack, QWidget *parent)
@@ -150,8 +129,10 @@ void CfcEditor::sceneRefreshed()
 QUndoCommand *CfcEditor::elementsCommand(std::vector<Element> after, const QString &undoText)
 {
     const Body *body = projectModel().body(bodyRef());
-    if (!body || cfcPolicy().storage() != CfcStorage::Codesys)
+    if (!body || cfcPolicy().storage() != CfcStorage::Codesys) {
+        writeCfcSizes(after);
         return DiagramEditor::elementsCommand(std::move(after), undoText);
+    }
     AddData addData = body->addData;
     addData[std::size_t(codesysCfcEntry(*body))].content = writeCodesysCfc(after);
     return new SetBodyAddDataCommand(projectModel(), bodyRef(), std::move(addData), undoText);
@@ -325,10 +306,31 @@ bool CfcEditor::setElementText(quint64 localId, const QString &text)
 bool CfcEditor::changeBoxType(quint64 box, const QString &typeName)
 {
     const auto *old = std::get_if<Block>(element(box));
+    return old && rebuildBox(box, typeName, hasEnEno(*old), tr("Change box to %1"));
+}
+
+bool CfcEditor::toggleEnEno()
+{
+    const std::vector<quint64> ids = selectedIds();
+    const auto *old = ids.size() == 1 ? std::get_if<Block>(element(ids.front())) : nullptr;
+    if (!old) {
+        showError(tr("Select a box to give it EN/ENO or take them away."));
+        return false;
+    }
+    return rebuildBox(ids.front(), old->typeName, !hasEnEno(*old), hasEnEno(*old) ? tr("Remove EN/ENO from %1") : tr("Add EN/ENO to %1"));
+}
+
+bool CfcEditor::hasEnEno(const Block &box)
+{
+    return !box.inputVariables.empty() && box.inputVariables.front().formalParameter.compare(QLatin1String("EN"), Qt::CaseInsensitive) == 0;
+}
+
+// The box built again for `typeName` (with EN/ENO when asked), keeping its wires (replaceBlock).
+bool CfcEditor::rebuildBox(quint64 box, const QString &typeName, bool withEn, const QString &undoText)
+{
+    const auto *old = std::get_if<Block>(element(box));
     if (!old)
         return false;
-    const bool withEn = !old->inputVariables.empty()
-        && old->inputVariables.front().formalParameter.compare(QLatin1String("EN"), Qt::CaseInsensitive) == 0;
     QString error;
     std::optional<BoxSpec> spec = boxSpecFor(projectModel().project(), typeName, withEn, &error);
     if (!spec) {
@@ -336,15 +338,11 @@ bool CfcEditor::changeBoxType(quint64 box, const QString &typeName)
         return false;
     }
     spec->withEn = withEn;
-    const Block fresh = withWiresOf(blockFromSpec(*spec), *old);
-    if (!applyEdit(tr("Change box to %1").arg(spec->typeName), [&](std::vector<Element> &elements) -> EditOutcome {
-            for (Element &e : elements)
-                if (header(e).localId == box)
-                    e = fresh;
-            return {{}, {box}};
-        }))
+    Block fresh = blockFromSpec(*spec);
+    const bool needsInstance = spec->functionBlock && (!old->instanceName || *old->instanceName == kPlaceholder);
+    if (!applyEdit(undoText.arg(spec->typeName), [&](std::vector<Element> &e) { return replaceBlock(e, box, std::move(fresh)); }))
         return false;
-    if (spec->functionBlock && fresh.instanceName == kPlaceholder)
+    if (needsInstance)
         startTyping();
     return true;
 }
@@ -543,18 +541,8 @@ void CfcEditor::prepareValue(quint64 localId)
     const Element *e = element(localId);
     if (name.isEmpty() || !e || !(std::holds_alternative<InVariable>(*e) || std::holds_alternative<OutVariable>(*e)))
         return;
-    const QString now = m_overlay->value(name);
-    QString literal;
-    if (now.compare(QLatin1String("TRUE"), Qt::CaseInsensitive) == 0 || now.compare(QLatin1String("FALSE"), Qt::CaseInsensitive) == 0) {
-        literal = now.compare(QLatin1String("TRUE"), Qt::CaseInsensitive) == 0 ? QStringLiteral("FALSE") : QStringLiteral("TRUE");
-    } else {
-        bool ok = false;
-        literal = QInputDialog::getText(this, tr("Prepare Value"), tr("New value of %1 (now %2):").arg(name, now), QLineEdit::Normal, now, &ok).trimmed();
-        if (!ok || literal.isEmpty())
-            return;
-    }
-    Q_EMIT prepareValueRequested(name, literal);
-    showMessage(tr("Prepared %1 := %2. Write it with Ctrl+F7 or force it with F7.").arg(name, literal));
+    if (const std::optional<QString> literal = askValueToPrepare(name, m_overlay->value(name)))
+        announcePrepared(name, *literal);
 }
 
 } // namespace iec::editors::cfc

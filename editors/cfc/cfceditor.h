@@ -42,6 +42,8 @@ public:
     bool insertContinuation();
     bool setElementText(quint64 localId, const QString &text);
     bool changeBoxType(quint64 box, const QString &typeName);
+    // Gives the selected box EN/ENO (CODESYS's EN/ENO command), or takes them away.
+    bool toggleEnEno();
     bool toggleNegation();
     bool deleteSelection();
     bool copy();
@@ -70,6 +72,8 @@ protected:
 
 private:
     void createActions();
+    [[nodiscard]] static bool hasEnEno(const model::Block &box);
+    bool rebuildBox(quint64 box, const QString &typeName, bool withEn, const QString &undoText);
     bool insert(const QString &undoText, model::Element element, bool typeAfterwards);
     void askComment();
     void askOrderNumber();

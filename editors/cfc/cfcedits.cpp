@@ -228,6 +228,66 @@ EditOutcome connectPins(std::vector<Element> &elements, quint64 source, const st
     return {{}, {target}};
 }
 
+namespace {
+
+bool isEnPin(const BlockVariable &pin)
+{
+    return pin.formalParameter.compare(QLatin1String("EN"), Qt::CaseInsensitive) == 0;
+}
+
+// Each pin of `now` reads what the pin of that name read in `before`; the pins left read, in
+// turn, the old pins (other than EN) left (ADD's IN1 stays MUL's IN1; AND's inputs become TON's
+// IN and PT). A new EN starts unwired.
+void carryWires(std::vector<BlockVariable> &now, const std::vector<BlockVariable> &before)
+{
+    const auto sameName = [](const BlockVariable &a, const BlockVariable &b) {
+        return a.formalParameter.compare(b.formalParameter, Qt::CaseInsensitive) == 0;
+    };
+    std::vector<const BlockVariable *> left;
+    for (const BlockVariable &old : before)
+        if (!isEnPin(old) && std::ranges::none_of(now, [&](const BlockVariable &pin) { return sameName(pin, old); }))
+            left.push_back(&old);
+    std::size_t next = 0;
+    for (BlockVariable &pin : now) {
+        const auto same = std::ranges::find_if(before, [&](const BlockVariable &old) { return sameName(pin, old); });
+        const BlockVariable *from = same != before.end() ? &*same : nullptr;
+        if (!from && !isEnPin(pin) && next < left.size())
+            from = left[next++];
+        if (from && from->connectionPointIn && pin.connectionPointIn)
+            pin.connectionPointIn->connections = from->connectionPointIn->connections;
+    }
+}
+
+} // namespace
+
+EditOutcome replaceBlock(std::vector<Element> &elements, quint64 localId, Block fresh)
+{
+    const auto it = std::ranges::find_if(elements, [&](const Element &e) { return header(e).localId == localId; });
+    const auto *old = it != elements.end() ? std::get_if<Block>(&*it) : nullptr;
+    if (!old)
+        return {tr("The box is gone."), {}};
+    carryWires(fresh.inputVariables, old->inputVariables);
+    carryWires(fresh.inOutVariables, old->inOutVariables);
+    static_cast<ElementHeader &>(fresh) = static_cast<const ElementHeader &>(*old);
+    if (fresh.instanceName && old->instanceName)
+        fresh.instanceName = old->instanceName;
+    QSet<QString> outputs;
+    for (const BlockVariable &pin : fresh.outputVariables)
+        outputs.insert(pin.formalParameter.toUpper());
+    for (const BlockVariable &pin : fresh.inOutVariables)
+        outputs.insert(pin.formalParameter.toUpper());
+    *it = std::move(fresh);
+    // A reader of an output the new box does not have (ENO taken away, Q of a box that became ADD)
+    // would name a pin that is not there: its wire goes.
+    for (Element &e : elements)
+        for (ConnectionPointIn *input : inputPoints(e))
+            std::erase_if(input->connections, [&](const Connection &c) {
+                return c.refLocalId == localId && c.formalParameter && !c.formalParameter->isEmpty()
+                    && !outputs.contains(c.formalParameter->toUpper());
+            });
+    return {{}, {localId}};
+}
+
 EditOutcome orderByDataFlow(std::vector<Element> &elements)
 {
     QHash<quint64, const Element *> byId;

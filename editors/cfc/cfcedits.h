@@ -35,6 +35,11 @@ EditOutcome nudgeElements(std::vector<model::Element> &elements, const std::vect
 // read before (an input reads one wire; an output feeds any number).
 EditOutcome connectPins(std::vector<model::Element> &elements, quint64 source, const std::optional<QString> &formalParameter,
     quint64 target, int pin);
+// Puts `fresh` (a box built for another type, or with EN/ENO added or taken away) in the place of
+// box `localId`: position, order and instance name stay; each input keeps its wire when the new box
+// has an input of that name, else the one at its place among the inputs other than EN; readers of
+// outputs the new box does not have lose their wire.
+EditOutcome replaceBlock(std::vector<model::Element> &elements, quint64 localId, model::Block fresh);
 
 // ---- execution order
 // By data flow: an element runs after the elements it reads (a feedback loop is cut where it

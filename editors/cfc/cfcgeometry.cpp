@@ -63,6 +63,16 @@ QRectF cfcRect(const Element &element)
     return {QPointF(h.position.x, h.position.y), size};
 }
 
+void writeCfcSizes(std::vector<Element> &elements)
+{
+    for (Element &e : elements) {
+        const QSizeF size = cfcRect(e).size();
+        ElementHeader &h = header(e);
+        h.width = size.width();
+        h.height = size.height();
+    }
+}
+
 std::optional<QPointF> cfcInputPin(const Element &element, int pin)
 {
     const QRectF rect = cfcRect(element);

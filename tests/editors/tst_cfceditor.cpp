@@ -358,23 +358,70 @@ private Q_SLOTS:
         QVERIFY(bar);
         for (const char *id : {"cfcBox", "cfcInput", "cfcOutput", "cfcJump", "cfcLabel", "cfcReturn", "cfcComment"})
             QVERIFY2(bar->widgetForAction(m_editor->action(QLatin1String(id))), id);
+        // As a drag does it: the sheet is entered (and says whether it takes the drop), then the
+        // drop.
         const auto dropAction = [&](const QByteArray &id, QPointF where) {
             QMimeData mime;
             mime.setData(QString::fromLatin1(editors::kInsertActionMimeType), id);
+            QDragEnterEvent enter(at(where), Qt::CopyAction, &mime, Qt::LeftButton, {});
+            QApplication::sendEvent(viewport(), &enter);
+            if (!enter.isAccepted())
+                return false;
             QDropEvent drop(QPointF(at(where)), Qt::CopyAction, &mime, Qt::LeftButton, {});
             QApplication::sendEvent(viewport(), &drop);
+            return drop.isAccepted();
         };
-        dropAction("cfcOutput", QPointF(300, 200));
+        QVERIFY(dropAction("cfcOutput", QPointF(300, 200)));
         type(QStringLiteral("Done"));
+        QVERIFY2(m_problems.isEmpty(), qPrintable(m_problems.join(QLatin1Char('\n')) + QLatin1Char(' ') + m_editor->lastMessage()));
         const quint64 done = named(QStringLiteral("Done"));
         QVERIFY(done);
         QCOMPARE(model::header(*element(done)).position, (model::Position {300, 200}));
         QCOMPARE(m_stack.count(), 2); // the output, its name
-        // Only Insert commands land: a dropped Delete does nothing.
+        // Only Insert commands land: the sheet refuses a dragged Delete.
         m_editor->select({done});
-        dropAction("cfcDelete", QPointF(100, 100));
+        QVERIFY(!dropAction("cfcDelete", QPointF(100, 100)));
         QCOMPARE(m_stack.count(), 2);
         QVERIFY2(m_problems.isEmpty(), qPrintable(m_problems.join(QLatin1Char('\n'))));
+    }
+
+    void enEnoComesAndGoesWithItsWires()
+    {
+        // A TON wired from an input gets EN/ENO (one undo step each way); its wire stays on IN,
+        // the box grows by a row and the file says so (width/height for Beremiz); ENO wired to an
+        // output loses that wire when EN/ENO go again.
+        open(cfcProject());
+        const model::Project start = m_model.project();
+        place({300, 100}, "cfcBox", QStringLiteral("TON"));
+        type(QStringLiteral("T1"));
+        place({100, 120}, "cfcInput", QStringLiteral("Start"));
+        dragWire(outputPin(QStringLiteral("Start")), inputPin(QStringLiteral("TON"), 0), QStringLiteral("Start to IN"));
+        const quint64 ton = named(QStringLiteral("TON"));
+        const double height = cfcRect(*element(ton)).height();
+        QCOMPARE(model::header(*element(ton)).height, std::optional(height));
+        m_editor->select({ton});
+        QVERIFY(trigger("cfcEnEno"));
+        const auto *block = std::get_if<model::Block>(element(ton));
+        QVERIFY(block);
+        QCOMPARE(block->inputVariables.front().formalParameter, QStringLiteral("EN"));
+        QCOMPARE(block->outputVariables.front().formalParameter, QStringLiteral("ENO"));
+        QCOMPARE(block->instanceName, std::optional(QStringLiteral("T1")));
+        QVERIFY(wireInto(ton, 1)); // IN, now the second input, still reads Start
+        QVERIFY(!wireInto(ton, 0));
+        QCOMPARE(model::header(*element(ton)).height, std::optional(height + 20));
+        place({500, 100}, "cfcOutput", QStringLiteral("Ok"));
+        dragWire(outputPin(QStringLiteral("TON"), QStringLiteral("ENO")), inputPin(QStringLiteral("Ok"), 0), QStringLiteral("ENO to Ok"));
+        QVERIFY(wireInto(named(QStringLiteral("Ok")), 0));
+        m_editor->select({ton});
+        QVERIFY(trigger("cfcEnEno"));
+        QCOMPARE(std::get<model::Block>(*element(ton)).inputVariables.front().formalParameter, QStringLiteral("IN"));
+        QVERIFY(wireInto(ton, 0));
+        QVERIFY(!wireInto(named(QStringLiteral("Ok")), 0));
+        // Only a box has EN/ENO.
+        m_editor->select({named(QStringLiteral("Ok"))});
+        QVERIFY(!m_editor->action(QStringLiteral("cfcEnEno"))->isEnabled());
+        QVERIFY2(m_problems.isEmpty(), qPrintable(m_problems.join(QLatin1Char('\n'))));
+        checkUndoRedo(start);
     }
 
     void codesysBodyIsEditedInItsOwnForm()

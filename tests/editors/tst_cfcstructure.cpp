@@ -110,6 +110,26 @@ std::vector<Element> counterLoop()
     return elements;
 }
 
+// "PIN<-source.output" for each input of box `id`, then "| reader<-" for every element reading it.
+QString wiresOf(const std::vector<Element> &elements, quint64 id)
+{
+    QStringList parts;
+    if (const auto *block = std::get_if<model::Block>(find(elements, id)))
+        for (const model::BlockVariable &pin : block->inputVariables) {
+            QString from;
+            for (const model::Connection &c : pin.connectionPointIn->connections)
+                from += QStringLiteral("%1.%2").arg(c.refLocalId).arg(c.formalParameter.value_or(QString()));
+            parts << pin.formalParameter + QStringLiteral("<-") + from;
+        }
+    parts << QStringLiteral("|");
+    for (const Element &e : elements)
+        for (const model::ConnectionPointIn *input : model::inputPoints(e))
+            for (const model::Connection &c : input->connections)
+                if (c.refLocalId == id)
+                    parts << QStringLiteral("%1<-%2").arg(model::header(e).localId).arg(c.formalParameter.value_or(QString()));
+    return parts.join(QLatin1Char(' '));
+}
+
 } // namespace
 
 class TestCfcStructure : public QObject
@@ -125,6 +145,9 @@ private Q_SLOTS:
     void insertNumbersInOrder();
     void deleteClosesTheOrder();
     void connectReplacesTheInput();
+    void replaceBlockKeepsTheWires_data();
+    void replaceBlockKeepsTheWires();
+    void takingEnEnoAwayDropsTheirWires();
     void orders_data();
     void orders();
     void moveAndSetInOrder_data();
@@ -262,6 +285,55 @@ void TestCfcStructure::connectReplacesTheInput()
     QCOMPARE(connectionInto(elements, 2, 0).formalParameter, std::optional(QStringLiteral("OUT")));
     QVERIFY(!connectPins(elements, 3, std::nullopt, 4, 1).ok()); // no such input
     QVERIFY(!connectPins(elements, 9, std::nullopt, 4, 0).ok()); // no such element
+}
+
+void TestCfcStructure::replaceBlockKeepsTheWires_data()
+{
+    // In the counter loop ADD (1) reads MOVE (2) and the constant (3); MOVE and Count (4) read ADD.
+    QTest::addColumn<quint64>("box");
+    QTest::addColumn<QStringList>("inputs");
+    QTest::addColumn<QStringList>("outputs");
+    QTest::addColumn<QString>("expected");
+    const QStringList in12 {QStringLiteral("IN1"), QStringLiteral("IN2")};
+    const QStringList out {QStringLiteral("OUT")};
+    QTest::newRow("ADD to MUL: by name") << quint64(1) << in12 << out << "IN1<-2.OUT IN2<-3. | 2<-OUT";
+    QTest::newRow("EN/ENO added: EN unwired") << quint64(1) << QStringList {QStringLiteral("EN")} + in12
+                                              << QStringList {QStringLiteral("ENO")} + out << "EN<- IN1<-2.OUT IN2<-3. | 2<-OUT";
+    QTest::newRow("ADD to SEL: by name, then in turn") << quint64(1) << QStringList {QStringLiteral("G"), QStringLiteral("IN0"), QStringLiteral("IN1")}
+                                          << out << "G<-3. IN0<- IN1<-2.OUT | 2<-OUT";
+    QTest::newRow("MOVE to TON: OUT's readers lose it") << quint64(2) << QStringList {QStringLiteral("IN"), QStringLiteral("PT")}
+                                                        << QStringList {QStringLiteral("Q"), QStringLiteral("ET")} << "IN<-1.OUT PT<- |";
+}
+
+void TestCfcStructure::replaceBlockKeepsTheWires()
+{
+    QFETCH(quint64, box);
+    QFETCH(QStringList, inputs);
+    QFETCH(QStringList, outputs);
+    QFETCH(QString, expected);
+    std::vector<Element> elements = counterLoop();
+    const model::ElementHeader before = model::header(*find(elements, box));
+    QVERIFY(replaceBlock(elements, box, ::box(QStringLiteral("NEW"), inputs, outputs, 0, 0)).ok());
+    QCOMPARE(wiresOf(elements, box), expected);
+    // Where it stands and when it runs stay.
+    QCOMPARE(model::header(*find(elements, box)).position, before.position);
+    QCOMPARE(model::header(*find(elements, box)).executionOrderId, before.executionOrderId);
+    QCOMPARE(std::get<model::Block>(*find(elements, box)).typeName, QStringLiteral("NEW"));
+    QVERIFY(!replaceBlock(elements, 4, ::box(QStringLiteral("NEW"), inputs, outputs, 0, 0)).ok()); // Count is no box
+}
+
+void TestCfcStructure::takingEnEnoAwayDropsTheirWires()
+{
+    // ADD with EN/ENO: EN reads the constant, Count reads ENO. Without them ENO's reader is unwired.
+    std::vector<Element> elements = counterLoop();
+    const QStringList in12 {QStringLiteral("IN1"), QStringLiteral("IN2")};
+    QVERIFY(replaceBlock(elements, 1, box(QStringLiteral("ADD"), QStringList {QStringLiteral("EN")} + in12,
+                                          {QStringLiteral("ENO"), QStringLiteral("OUT")}, 0, 0)).ok());
+    QVERIFY(connectPins(elements, 3, std::nullopt, 1, 0).ok());
+    QVERIFY(connectPins(elements, 1, QStringLiteral("ENO"), 4, 0).ok());
+    QCOMPARE(wiresOf(elements, 1), QStringLiteral("EN<-3. IN1<-2.OUT IN2<-3. | 2<-OUT 4<-ENO"));
+    QVERIFY(replaceBlock(elements, 1, box(QStringLiteral("ADD"), in12, {QStringLiteral("OUT")}, 0, 0)).ok());
+    QCOMPARE(wiresOf(elements, 1), QStringLiteral("IN1<-2.OUT IN2<-3. | 2<-OUT"));
 }
 
 void TestCfcStructure::orders_data()
