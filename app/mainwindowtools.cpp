@@ -74,7 +74,9 @@ void MainWindow::createProjectTools()
     addDockWidget(Qt::RightDockWidgetArea, m_libraryDock);
     m_printDocumentationAction = new QAction(this);
     m_printDocumentationAction->setObjectName(QStringLiteral("printDocumentationAction"));
-    m_printDocumentationAction->setShortcut(QKeySequence::Print);
+    // Ctrl+P prints the current diagram (its editor's Print…, as CODESYS's File → Print); two
+    // actions on one key would make Qt run neither.
+    m_printDocumentationAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
     connect(m_printDocumentationAction, &QAction::triggered, this, &MainWindow::printDocumentationInteractive);
     m_exportDocumentationAction = new QAction(this);
     m_exportDocumentationAction->setObjectName(QStringLiteral("exportDocumentationAction"));

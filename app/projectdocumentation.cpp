@@ -2,7 +2,9 @@
 
 #include "editors/declarations/declarationtext.h"
 #include "editors/globals/globallists.h"
-#include "editors/sfc/sfcscene.h"
+#include "editors/common/diagramscene.h"
+#include "editors/common/editorregistry.h"
+#include "editors/standardeditors.h"
 #include "editors/tasks/taskrows.h"
 #include "interpreter/frontend/iecprinter.h"
 #include "model/projectmodel.h"
@@ -97,10 +99,12 @@ ProjectDocumentation::ProjectDocumentation(model::ProjectModel &model, BodyPictu
 QImage ProjectDocumentation::defaultBodyPicture(model::ProjectModel &model, const BodyRef &ref)
 {
     const model::Body *body = model.body(ref);
-    if (!body || body->language() != model::BodyLanguage::SFC)
+    editors::registerStandardEditors();
+    const editors::EditorFactory *factory = body ? editors::EditorRegistry::instance().forBody(*body) : nullptr;
+    if (!factory || !factory->createPolicy)
         return {};
-    editors::sfc::SfcPolicy policy;
-    editors::DiagramScene scene(model, ref, policy);
+    const std::unique_ptr<editors::DiagramPolicy> policy = factory->createPolicy();
+    editors::DiagramScene scene(model, ref, *policy);
     scene.rebuild();
     const QRectF source = scene.itemsBoundingRect().adjusted(-10, -10, 10, 10);
     if (source.isEmpty())
@@ -119,14 +123,18 @@ std::vector<ProjectDocumentation::Section> ProjectDocumentation::sections() cons
     const model::Project &project = m_model.project();
     std::vector<Section> result;
     const auto bodyHtml = [&](Section &section, const BodyRef &ref, const model::Body &body) {
-        if (!body.isGraphical())
+        // A diagram is drawn, also CODESYS's CFC (an empty ST body with the chart in addData).
+        const editors::EditorLanguage language = editors::editorLanguage(body);
+        if (language == editors::EditorLanguage::ST || language == editors::EditorLanguage::IL)
             return body.text().trimmed().isEmpty() ? QStringLiteral("<p><i>%1</i></p>").arg(tr("The body is empty."))
                                                    : pre(body.text());
         const QImage picture = m_picture ? m_picture(m_model, ref) : QImage();
-        const QString language = interp::frontend::languageName(body.language());
+        const bool empty = body.isGraphical() && body.elements() && body.elements()->empty();
+        if (picture.isNull() && empty)
+            return QStringLiteral("<p><i>%1</i></p>").arg(tr("The body is empty."));
         if (picture.isNull())
             return QStringLiteral("<p><i>%1</i></p>")
-                .arg(tr("The %1 body is drawn in the editor; this version cannot print it as a picture.").arg(language));
+                .arg(tr("The %1 body is drawn in the editor; this version cannot print it as a picture.").arg(editors::editorLanguageName(language)));
         const QString name = QStringLiteral("body%1.png").arg(result.size() * 100 + section.images.size());
         section.images.emplace_back(name, picture);
         const int width = std::min(kPictureWidth, picture.width() / 2);

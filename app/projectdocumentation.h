@@ -30,9 +30,9 @@ class ProjectDocumentation
     Q_DECLARE_TR_FUNCTIONS(iec::app::ProjectDocumentation)
 
 public:
-    // A picture of a graphical body; a null image when there is none (the document says so in
-    // a line instead). The default draws SFC charts with the chart editor's scene; the diagram
-    // editors' registry can provide the other languages.
+    // A picture of a diagram body (LD, FBD, CFC, SFC); a null image when there is none (the
+    // document says so in a line instead). The default draws it as its editor does, through the
+    // editor registry's policy, as `iecstudio-cli render` does.
     using BodyPicture = std::function<QImage(model::ProjectModel &, const model::BodyRef &)>;
 
     // Reads `model` only (a diagram scene needs it writable).

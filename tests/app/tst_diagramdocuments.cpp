@@ -20,6 +20,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QHash>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
@@ -293,6 +294,51 @@ private Q_SLOTS:
             QVERIFY2(button, qPrintable(id));
             QVERIFY2(button->isVisible(), qPrintable(id + QStringLiteral(" is in the overflow")));
         }
+    }
+
+    void noWindowShortcutIsAlsoTheDiagramEditors_data()
+    {
+        // Qt runs neither of two actions on one key: the window's Print Documentation and the
+        // diagram editors' Print… both had Ctrl+P, so Ctrl+P did nothing in a diagram.
+        QTest::addColumn<QString>("pou");
+        QTest::newRow("ladder") << "Ladder";
+        QTest::newRow("chart") << "Chart";
+        QTest::newRow("cfc") << "Flow";
+    }
+
+    void noWindowShortcutIsAlsoTheDiagramEditors()
+    {
+        QFETCH(QString, pou);
+        MainWindow window;
+        window.projectModel().reset(project());
+        window.show();
+        window.documents().openBody(bodyOf(window, qPrintable(pou)));
+        editors::DiagramEditor *editor = window.documents().currentDiagramEditor();
+        QVERIFY(editor);
+        const auto ownedByEditor = [editor](const QObject *object) {
+            for (; object; object = object->parent())
+                if (object == editor)
+                    return true;
+            return false;
+        };
+        QHash<QKeySequence, QString> windowKeys;
+        for (QAction *action : window.findChildren<QAction *>()) {
+            if (ownedByEditor(action) || !action->isEnabled()
+                || (action->shortcutContext() != Qt::WindowShortcut && action->shortcutContext() != Qt::ApplicationShortcut))
+                continue;
+            for (const QKeySequence &key : action->shortcuts())
+                windowKeys.insert(key, action->objectName() + QLatin1Char(' ') + action->text());
+        }
+        QVERIFY(windowKeys.contains(QKeySequence(QStringLiteral("Ctrl+Shift+P"))));
+        int checked = 0;
+        for (QAction *action : editor->findChildren<QAction *>()) {
+            for (const QKeySequence &key : action->shortcuts()) {
+                ++checked;
+                QVERIFY2(!windowKeys.contains(key), qPrintable(QStringLiteral("%1 (%2) is also the window's %3")
+                                                                    .arg(action->objectName(), key.toString(), windowKeys.value(key))));
+            }
+        }
+        QVERIFY(checked > 5);
     }
 
     void buildMessagesMarkTheirElements()

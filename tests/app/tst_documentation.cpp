@@ -1,5 +1,5 @@
 // The printed documentation of a project: its contents in order, every part's text (declarations,
-// bodies, data types, global lists, tasks), charts as pictures, page numbers in the contents that
+// bodies, data types, global lists, tasks), diagrams (LD, FBD, CFC, SFC) as pictures, page numbers in the contents that
 // match the pages, and the PDF export.
 #include "app/projectdocumentation.h"
 #include "model/plcopen/reader.h"
@@ -34,7 +34,9 @@ class TestDocumentation : public QObject
 private Q_SLOTS:
     void contentsListEveryPart();
     void partsCarryTheirText();
-    void chartsArePicturesOthersSayWhy();
+    void diagramsArePictures_data();
+    void diagramsArePictures();
+    void withoutAPictureTheDocumentSaysWhy();
     void contentsPageNumbersPointAtTheParts();
     void pdfIsWritten();
 };
@@ -61,23 +63,57 @@ void TestDocumentation::partsCarryTheirText()
     QVERIFY(html.contains(QStringLiteral("page-break-before: always")));
 }
 
-void TestDocumentation::chartsArePicturesOthersSayWhy()
+void TestDocumentation::diagramsArePictures_data()
 {
+    QTest::addColumn<QString>("file");
+    QTest::newRow("SFC") << "mixing_tank.xml";
+    QTest::newRow("LD") << "motor_start_stop.xml";
+    QTest::newRow("FBD") << "staggered_fans.xml";
+    QTest::newRow("CODESYS CFC") << "";
+}
+
+void TestDocumentation::diagramsArePictures()
+{
+    QFETCH(QString, file);
     model::ProjectModel model;
-    model.reset(example("mixing_tank.xml"));
+    if (file.isEmpty()) {
+        // CODESYS keeps a CFC in the addData of an empty ST body: drawn, not "The body is empty".
+        model::Project project = example("first_steps.xml");
+        model::Body body = model::Body::withLanguage(model::BodyLanguage::ST);
+        body.addData.push_back({QStringLiteral("http://www.3s-software.com/plcopenxml/cfc"), QStringLiteral("implementation"),
+            QStringLiteral("<CFC><inVariable localId=\"1\"><position x=\"5\" y=\"5\"/><connectionPointOut><expression/></connectionPointOut>"
+                           "<expression>Start</expression></inVariable>"
+                           "<outVariable localId=\"3\" executionOrderId=\"0\"><position x=\"15\" y=\"5\"/><connectionPointIn><relPosition x=\"0\" y=\"0\"/>"
+                           "<connection refLocalId=\"1\"/></connectionPointIn><expression>Lamp</expression></outVariable></CFC>")});
+        project.types.pous.front().bodies = {body};
+        model.reset(project);
+    } else {
+        model.reset(example(qPrintable(file)));
+    }
     int pictures = 0;
     ProjectDocumentation documentation(model, [&](model::ProjectModel &m, const model::BodyRef &ref) {
         QImage image = ProjectDocumentation::defaultBodyPicture(m, ref);
-        pictures += image.isNull() ? 0 : 1;
+        // Something is drawn on the white page.
+        bool inked = false;
+        for (int y = 0; y < image.height() && !inked; y += 2)
+            for (int x = 0; x < image.width() && !inked; x += 2)
+                inked = image.pixel(x, y) != qRgb(255, 255, 255);
+        pictures += inked ? 1 : 0;
         return image;
     });
     const QString html = documentation.html();
     QVERIFY(pictures >= 1);
     QVERIFY(html.contains(QStringLiteral("<img src=\"body")));
+    QVERIFY(!html.contains(QStringLiteral("cannot print it as a picture")));
+    QVERIFY(!html.contains(QStringLiteral("The body is empty.")));
+}
 
+void TestDocumentation::withoutAPictureTheDocumentSaysWhy()
+{
+    model::ProjectModel model;
     model.reset(example("motor_start_stop.xml"));
-    QVERIFY(ProjectDocumentation(model).html().contains(
-        QStringLiteral("The LD body is drawn in the editor; this version cannot print it as a picture.")));
+    const QString html = ProjectDocumentation(model, [](model::ProjectModel &, const model::BodyRef &) { return QImage(); }).html();
+    QVERIFY(html.contains(QStringLiteral("The LD body is drawn in the editor; this version cannot print it as a picture.")));
 }
 
 void TestDocumentation::contentsPageNumbersPointAtTheParts()
