@@ -3,6 +3,7 @@
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFormLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -54,6 +55,24 @@ AutoDeclareDialog::AutoDeclareDialog(const editors::DeclarationRow &proposal, QS
     validate();
     // The type is what most often needs a look; the name was typed in the body already.
     m_type->setFocus();
+    m_type->lineEdit()->installEventFilter(this);
+}
+
+bool AutoDeclareDialog::eventFilter(QObject *watched, QEvent *event)
+{
+    // Enter in the type field declares, also while the field shows an inline completion ("IN"
+    // completed to "INT"): the line edit would take that first Enter only to accept the completion.
+    if (watched == m_type->lineEdit() && event->type() == QEvent::KeyPress) {
+        const int key = static_cast<QKeyEvent *>(event)->key();
+        if (key == Qt::Key_Return || key == Qt::Key_Enter) {
+            m_type->lineEdit()->deselect();
+            validate();
+            if (m_buttons->button(QDialogButtonBox::Ok)->isEnabled())
+                accept();
+            return true;
+        }
+    }
+    return QDialog::eventFilter(watched, event);
 }
 
 editors::DeclarationRow AutoDeclareDialog::row() const

@@ -31,6 +31,9 @@ public:
     [[nodiscard]] QComboBox *typeBox() const { return m_type; }
     [[nodiscard]] QLineEdit *initialValueEdit() const { return m_initialValue; }
 
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override;
+
 private:
     void validate();
 
