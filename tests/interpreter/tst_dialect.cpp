@@ -36,6 +36,7 @@ private Q_SLOTS:
     void implicitConversions() { check(); }
     void conversionWarnings_data();
     void conversionWarnings();
+    void pragmaMessagesNameTheirPou();
     void pointers_data();
     void pointers() { check(); }
     void pointerFaults_data();
@@ -95,6 +96,24 @@ void TestDialect::conversionWarnings()
     QFETCH(QString, body);
     QFETCH(QString, warnings);
     QCOMPARE(warningsOf(body, declarations), warnings);
+}
+
+void TestDialect::pragmaMessagesNameTheirPou()
+{
+    // In a text of several POUs a pragma's message names the POU it stands in; an attribute
+    // before a POU's keyword belongs to that POU (CODESYS writes them there).
+    Diagnostics diagnostics;
+    compileText(QStringLiteral("{frobnicate 1}\n"
+                               "FUNCTION_BLOCK Fb\nVAR_INPUT x : INT; END_VAR\n{warning 'in Fb'}\nx := x + 1;\nEND_FUNCTION_BLOCK\n"
+                               "{warning 'before Main'}\n"
+                               "PROGRAM Main\nVAR f : Fb; END_VAR\n{warning 'in Main'}\nf(x := 1);\nEND_PROGRAM\n"),
+        diagnostics);
+    QStringList lines;
+    for (const Diagnostic &d : diagnostics.all())
+        lines << QStringLiteral("%1:%2: %3").arg(d.pou).arg(d.location.line).arg(d.message);
+    QCOMPARE(lines.join(QStringLiteral(" | ")),
+        QStringLiteral("Fb:1: The pragma {frobnicate 1} means nothing to IEC Studio; it is ignored. | Fb:4: in Fb"
+                       " | Main:7: before Main | Main:10: in Main"));
 }
 
 void TestDialect::pointers_data()
