@@ -19,6 +19,7 @@
 #include <vector>
 
 class QAction;
+class QDropEvent;
 class QLabel;
 class QToolBar;
 class QUndoCommand;
@@ -247,6 +248,7 @@ private:
     const ActionEntry *entryFor(const QString &id) const;
     bool handleKey(QKeyEvent *event);
     bool handleDrop(QEvent *event);
+    bool takeDrop(QDropEvent *drop, bool takes, const std::function<void(QPointF)> &place);
     bool dragInsertButton(QObject *button, QEvent *event);
     void openContextMenu(QPoint globalPos);
     [[nodiscard]] QPoint selectionMenuPosition() const;

@@ -47,43 +47,36 @@ bool DiagramEditor::handleDrop(QEvent *event)
     if (type != QEvent::DragEnter && type != QEvent::DragMove && type != QEvent::Drop)
         return false;
     auto *drop = static_cast<QDropEvent *>(event);
+    const QMimeData *mime = drop->mimeData();
     const QString insertType = QString::fromLatin1(kInsertActionMimeType);
-    if (drop->mimeData()->hasFormat(insertType)) {
+    const QString pouType = QString::fromLatin1(kPouMimeType);
+    if (mime->hasFormat(insertType)) {
         // Only this editor's Insert commands land; anything else is refused (the no-drop cursor).
-        const QString insertId = QString::fromUtf8(drop->mimeData()->data(insertType));
-        if (!acceptsInsertDrops() || !insertActions().contains(action(insertId))) {
-            drop->ignore();
-            return true;
-        }
-        if (m_online) {
-            if (type == QEvent::Drop)
-                refuseWhileOnline();
-            drop->ignore();
-            return true;
-        }
-        drop->setDropAction(Qt::CopyAction);
-        drop->accept();
-        if (type == QEvent::Drop) {
-            setFocus();
-            dropInsertAction(insertId, m_view->mapToScene(drop->position().toPoint()));
-        }
-        return true;
+        const QString id = QString::fromUtf8(mime->data(insertType));
+        const bool ours = acceptsInsertDrops() && insertActions().contains(action(id));
+        return takeDrop(drop, ours, [this, id](QPointF at) { dropInsertAction(id, at); });
     }
-    const QString mimeType = QString::fromLatin1(kPouMimeType);
-    if (!acceptsPouDrops() || !drop->mimeData()->hasFormat(mimeType))
+    if (!acceptsPouDrops() || !mime->hasFormat(pouType))
         return false;
-    if (m_online) { // refused with the message every edit gives while online
-        if (type == QEvent::Drop)
+    const QString typeName = QString::fromUtf8(mime->data(pouType));
+    return takeDrop(drop, true, [this, typeName](QPointF at) { dropPou(typeName, at); });
+}
+
+// Accepts a drag this editor takes (refused while online, with the message every edit gives
+// there) and, on the drop, runs `place` at the drop's place on the sheet.
+bool DiagramEditor::takeDrop(QDropEvent *drop, bool takes, const std::function<void(QPointF)> &place)
+{
+    if (!takes || m_online) {
+        if (takes && drop->type() == QEvent::Drop)
             refuseWhileOnline();
         drop->ignore();
         return true;
     }
     drop->setDropAction(Qt::CopyAction);
     drop->accept();
-    if (type == QEvent::Drop) {
-        const QString typeName = QString::fromUtf8(drop->mimeData()->data(mimeType));
+    if (drop->type() == QEvent::Drop) {
         setFocus();
-        dropPou(typeName, m_view->mapToScene(drop->position().toPoint()));
+        place(m_view->mapToScene(drop->position().toPoint()));
     }
     return true;
 }
