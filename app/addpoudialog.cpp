@@ -72,7 +72,7 @@ NewPou AddPouDialog::newPou() const
 {
     return {.name = m_name->text().trimmed(),
         .kind = model::PouKind(m_kind->currentData().toInt()),
-        .language = model::BodyLanguage(m_language->currentData().toInt()),
+        .language = editors::EditorLanguage(m_language->currentData().toInt()),
         .returnType = newPouIsFunction() ? m_returnType->currentText().trimmed() : QString()};
 }
 

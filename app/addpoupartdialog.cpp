@@ -13,12 +13,12 @@
 
 namespace iec::app {
 
-using model::BodyLanguage;
+using editors::EditorLanguage;
 
 void fillLanguageChoice(QComboBox *combo)
 {
-    for (const BodyLanguage language :
-        {BodyLanguage::ST, BodyLanguage::IL, BodyLanguage::LD, BodyLanguage::FBD, BodyLanguage::SFC})
+    for (const EditorLanguage language :
+        {EditorLanguage::ST, EditorLanguage::IL, EditorLanguage::LD, EditorLanguage::FBD, EditorLanguage::CFC, EditorLanguage::SFC})
         combo->addItem(languageIcon(language), languageName(language), int(language));
 }
 
@@ -65,7 +65,7 @@ AddPouPartDialog::AddPouPartDialog(
 NewPouPart AddPouPartDialog::newPart() const
 {
     return {
-        .part = m_part, .name = m_name->text().trimmed(), .language = BodyLanguage(m_language->currentData().toInt())};
+        .part = m_part, .name = m_name->text().trimmed(), .language = EditorLanguage(m_language->currentData().toInt())};
 }
 
 QString AddPouPartDialog::problem() const

@@ -40,7 +40,8 @@ private:
     QDialogButtonBox *m_buttons = nullptr;
 };
 
-// Fills a combo box with the five IEC languages (icon, name, BodyLanguage as data).
+// Fills a combo box with the languages a body can be written in: the five IEC languages and CFC
+// (icon, name, editors::EditorLanguage as data).
 void fillLanguageChoice(QComboBox *combo);
 
 } // namespace iec::app

@@ -324,7 +324,7 @@ QWidget *DocumentArea::openBody(const BodyRef &ref)
         return nullptr;
     QWidget *document = createEditor(ref);
     document->setProperty(kBodyRefProperty, QVariant::fromValue(ref));
-    const int index = addTab(document, languageIcon(body->language()), title(m_projectModel.project(), ref));
+    const int index = addTab(document, languageIcon(editors::editorLanguage(*body)), title(m_projectModel.project(), ref));
     if (auto *declarations = document->findChild<editors::DeclarationEditor *>(); declarations && m_editingLocked)
         lockEditor(declarations, true, [this] { Q_EMIT editRefused(); });
     setCurrentIndex(index);

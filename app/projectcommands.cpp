@@ -37,12 +37,11 @@ bool fail(QString *error, const QString &message)
 
 } // namespace
 
-model::Body startingBody(model::BodyLanguage language)
+model::Body startingBody(editors::EditorLanguage language)
 {
     editors::registerStandardEditors();
-    model::Body empty = model::Body::withLanguage(language);
-    const editors::EditorFactory *factory = editors::EditorRegistry::instance().forBody(empty);
-    return factory && factory->newBody ? factory->newBody() : empty;
+    const editors::EditorFactory *factory = editors::EditorRegistry::instance().find(language);
+    return factory && factory->newBody ? factory->newBody() : model::Body::withLanguage(editors::storedLanguage(language));
 }
 
 model::Pou makePou(const NewPou &pou)

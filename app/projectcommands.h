@@ -1,5 +1,6 @@
 #pragma once
 
+#include "editors/common/editorlanguage.h"
 #include "model/body.h"
 #include "model/ids.h"
 #include "model/pou.h"
@@ -22,7 +23,7 @@ namespace iec::app {
 struct NewPou {
     QString name;
     model::PouKind kind = model::PouKind::Program;
-    model::BodyLanguage language = model::BodyLanguage::ST;
+    editors::EditorLanguage language = editors::EditorLanguage::ST; // CFC: an FBD body marked as CFC
     QString returnType; // functions only: an elementary type name or a user type
 };
 
@@ -30,7 +31,7 @@ struct NewPou {
 struct NewPouPart {
     model::BodyRef::Part part = model::BodyRef::Part::Action;
     QString name;
-    model::BodyLanguage language = model::BodyLanguage::ST;
+    editors::EditorLanguage language = editors::EditorLanguage::ST; // CFC: an FBD body marked as CFC
 };
 
 // The project tree's operations without any dialog: each checks its input, pushes one command on
@@ -69,7 +70,7 @@ private:
 
 // What a new POU, action or transition of `language` starts with: what the language's editor
 // offers (SFC: an initial step "Init", a transition TRUE, a jump back), else an empty body.
-[[nodiscard]] model::Body startingBody(model::BodyLanguage language);
+[[nodiscard]] model::Body startingBody(editors::EditorLanguage language);
 // The model's POU value for a new POU (its first body the startingBody, functions with their
 // return type).
 [[nodiscard]] model::Pou makePou(const NewPou &pou);

@@ -41,7 +41,8 @@ QString escaped(const QString &text)
 
 QString pre(const QString &text)
 {
-    return QStringLiteral("<pre style=\"font-family: monospace; font-size: 9pt;\">%1</pre>").arg(escaped(text));
+    // pre-wrap: a long declaration comment wraps at the margin instead of running off the page.
+    return QStringLiteral("<pre style=\"white-space: pre-wrap; font-family: monospace; font-size: 9pt;\">%1</pre>").arg(escaped(text));
 }
 
 QString kindText(model::PouKind kind)
@@ -143,7 +144,7 @@ std::vector<ProjectDocumentation::Section> ProjectDocumentation::sections() cons
     for (const model::Pou &pou : project.types.pous) {
         Section section;
         section.title = tr("%1 (%2, %3)").arg(pou.name, kindText(pou.kind),
-            interp::frontend::languageName(pou.language()));
+            pou.body() ? editors::editorLanguageName(editors::editorLanguage(*pou.body())) : interp::frontend::languageName(pou.language()));
         QString &html = section.html;
         if (pou.documentation && !pou.documentation->text.trimmed().isEmpty())
             html += QStringLiteral("<p>%1</p>").arg(escaped(pou.documentation->text));

@@ -57,14 +57,23 @@ int ProjectTreeModel::addNode(Node node)
     return index;
 }
 
+namespace {
+
+editors::EditorLanguage languageOf(const model::Body *body)
+{
+    return body ? editors::editorLanguage(*body) : editors::EditorLanguage::ST;
+}
+
+} // namespace
+
 void ProjectTreeModel::addPou(int folder, const model::Pou &pou)
 {
     const int pouNode = addNode({.kind = NodeKind::Pou, .key = pouKey(pou.id), .name = pou.name, .pou = pou.id,
-                                 .pouKind = pou.kind, .language = pou.language(), .parent = folder});
+                                 .pouKind = pou.kind, .language = languageOf(pou.body()), .parent = folder});
     const auto addParts = [&](const std::vector<model::PouPart> &parts, BodyRef::Part part, NodeKind kind) {
         for (const model::PouPart &value : parts) {
             addNode({.kind = kind, .key = partKey({pou.id, part, value.name}), .name = value.name, .pou = pou.id,
-                     .language = value.body.language(), .parent = pouNode});
+                     .language = languageOf(&value.body), .parent = pouNode});
         }
     };
     addParts(pou.actions, BodyRef::Part::Action, NodeKind::Action);

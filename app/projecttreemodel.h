@@ -1,5 +1,6 @@
 #pragma once
 
+#include "editors/common/editorlanguage.h"
 #include "editors/globals/globallists.h"
 #include "model/ids.h"
 #include "model/pou.h"
@@ -70,7 +71,7 @@ private:
         QString name;
         model::PouId pou;
         model::PouKind pouKind = model::PouKind::Program;
-        model::BodyLanguage language = model::BodyLanguage::ST;
+        editors::EditorLanguage language = editors::EditorLanguage::ST;
         editors::GlobalListRef list; // global variable lists
         QString configuration;       // configurations, resources and tasks
         int parent = -1; // index into m_nodes; -1: top level

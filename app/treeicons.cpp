@@ -7,20 +7,24 @@
 
 namespace iec::app {
 
+using editors::EditorLanguage;
+
 namespace {
 
-QColor languageColour(model::BodyLanguage language)
+QColor languageColour(EditorLanguage language)
 {
     switch (language) {
-    case model::BodyLanguage::ST:
+    case EditorLanguage::ST:
         return QColor(0x1e, 0x5a, 0xa8);
-    case model::BodyLanguage::IL:
+    case EditorLanguage::IL:
         return QColor(0x5f, 0x63, 0x68);
-    case model::BodyLanguage::LD:
+    case EditorLanguage::LD:
         return QColor(0x2e, 0x7d, 0x32);
-    case model::BodyLanguage::FBD:
+    case EditorLanguage::FBD:
         return QColor(0xc7, 0x62, 0x00);
-    case model::BodyLanguage::SFC:
+    case EditorLanguage::CFC:
+        return QColor(0x00, 0x79, 0x6b);
+    case EditorLanguage::SFC:
         return QColor(0x6a, 0x1b, 0x9a);
     }
     return Qt::gray;
@@ -46,41 +50,26 @@ QPixmap badge(const QString &text, const QColor &colour, int size)
 
 } // namespace
 
-QString languageShortName(model::BodyLanguage language)
+QString languageName(EditorLanguage language)
 {
     switch (language) {
-    case model::BodyLanguage::ST:
-        return QStringLiteral("ST");
-    case model::BodyLanguage::IL:
-        return QStringLiteral("IL");
-    case model::BodyLanguage::LD:
-        return QStringLiteral("LD");
-    case model::BodyLanguage::FBD:
-        return QStringLiteral("FBD");
-    case model::BodyLanguage::SFC:
-        return QStringLiteral("SFC");
-    }
-    return {};
-}
-
-QString languageName(model::BodyLanguage language)
-{
-    switch (language) {
-    case model::BodyLanguage::ST:
+    case EditorLanguage::ST:
         return ProjectTreeModel::tr("Structured Text (ST)");
-    case model::BodyLanguage::IL:
+    case EditorLanguage::IL:
         return ProjectTreeModel::tr("Instruction List (IL)");
-    case model::BodyLanguage::LD:
+    case EditorLanguage::LD:
         return ProjectTreeModel::tr("Ladder Diagram (LD)");
-    case model::BodyLanguage::FBD:
+    case EditorLanguage::FBD:
         return ProjectTreeModel::tr("Function Block Diagram (FBD)");
-    case model::BodyLanguage::SFC:
+    case EditorLanguage::CFC:
+        return ProjectTreeModel::tr("Continuous Function Chart (CFC)");
+    case EditorLanguage::SFC:
         return ProjectTreeModel::tr("Sequential Function Chart (SFC)");
     }
     return {};
 }
 
-QIcon languageIcon(model::BodyLanguage language)
+QIcon languageIcon(EditorLanguage language)
 {
     // Painted once per language and size; the tree asks for them for every visible row.
     static QHash<int, QIcon> cache;
@@ -89,7 +78,7 @@ QIcon languageIcon(model::BodyLanguage language)
         return *it;
     QIcon icon;
     for (const int size : {16, 24, 32})
-        icon.addPixmap(badge(languageShortName(language), languageColour(language), size));
+        icon.addPixmap(badge(editors::editorLanguageName(language), languageColour(language), size));
     cache.insert(int(language), icon);
     return icon;
 }

@@ -1178,6 +1178,10 @@ Automatisch gespeichert: %2</translation>
             <source>Sequential Function Chart (SFC)</source>
             <translation>Ablaufsprache (AS)</translation>
         </message>
+        <message>
+            <source>Continuous Function Chart (CFC)</source>
+            <translation>Freigraphischer Funktionsplan (CFC)</translation>
+        </message>
     </context>
     <context>
         <name>iec::app::RecentFilesMenu</name>

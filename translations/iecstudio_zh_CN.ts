@@ -1177,6 +1177,10 @@ Autosaved: %2</source>
             <source>Sequential Function Chart (SFC)</source>
             <translation>顺序功能图 (SFC)</translation>
         </message>
+        <message>
+            <source>Continuous Function Chart (CFC)</source>
+            <translation>连续功能图 (CFC)</translation>
+        </message>
     </context>
     <context>
         <name>iec::app::RecentFilesMenu</name>

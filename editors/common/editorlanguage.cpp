@@ -36,6 +36,24 @@ EditorLanguage editorLanguage(const model::Body &body)
     return EditorLanguage::ST;
 }
 
+model::BodyLanguage storedLanguage(EditorLanguage language)
+{
+    switch (language) {
+    case EditorLanguage::ST:
+        return model::BodyLanguage::ST;
+    case EditorLanguage::IL:
+        return model::BodyLanguage::IL;
+    case EditorLanguage::LD:
+        return model::BodyLanguage::LD;
+    case EditorLanguage::FBD:
+    case EditorLanguage::CFC:
+        return model::BodyLanguage::FBD;
+    case EditorLanguage::SFC:
+        return model::BodyLanguage::SFC;
+    }
+    return model::BodyLanguage::ST;
+}
+
 QString editorLanguageName(EditorLanguage language)
 {
     switch (language) {

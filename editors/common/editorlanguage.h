@@ -4,6 +4,7 @@
 
 namespace iec::model {
 struct Body;
+enum class BodyLanguage;
 }
 
 namespace iec::editors {
@@ -16,6 +17,8 @@ enum class EditorLanguage { ST, IL, LD, FBD, CFC, SFC };
 EditorLanguage editorLanguage(const model::Body &body);
 // "ST", "IL", "LD", "FBD", "CFC", "SFC" (the languages' names are the same in every UI language).
 QString editorLanguageName(EditorLanguage language);
+// The body language a new body of this editor language is stored in (CFC: FBD).
+model::BodyLanguage storedLanguage(EditorLanguage language);
 // The marker of a CODESYS CFC diagram: an addData entry whose name ends like this.
 inline constexpr const char *kCodesysCfcAddDataSuffix = "/plcopenxml/cfc";
 // The marker of a CFC made in IEC Studio: an FBD body (Beremiz opens it as one, with the same

@@ -12,6 +12,7 @@
 #include "editors/declarations/declarationtablemodel.h"
 #include "editors/globals/globallisteditor.h"
 #include "editors/tasks/configurationeditor.h"
+#include "model/plcopen/reader.h"
 #include "model/projectmodel.h"
 
 #include <QAbstractTextDocumentLayout>
@@ -102,6 +103,17 @@ int main(int argc, char *argv[])
         documentationPage(model, 3).save(QDir(out).filePath(QStringLiteral("documentation_%1.png").arg(language)));
         documentationPage(model, 1).save(QDir(out).filePath(QStringLiteral("documentation_cover_%1.png").arg(language)));
         documentationPage(model, 2).save(QDir(out).filePath(QStringLiteral("documentation_contents_%1.png").arg(language)));
+        // Diagrams in the documentation: an LD and an FBD body as their editors draw them.
+        for (const char *example : {"motor_start_stop", "staggered_fans"}) {
+            model::plcopen::ReadResult read
+                = model::plcopen::readProjectFile(QStringLiteral(IEC_SOURCE_DIR "/resources/examples/%1.xml").arg(QLatin1String(example)));
+            if (!read.ok)
+                return 1;
+            model::ProjectModel diagrams;
+            diagrams.reset(std::move(read.project));
+            documentationPage(diagrams, 3)
+                .save(QDir(out).filePath(QStringLiteral("documentation_%1_%2.png").arg(QLatin1String(example), language)));
+        }
     }
     return 0;
 }

@@ -331,7 +331,7 @@ void TestMainWindow::treeOperationsUndoOnTheProjectStack()
     const iec::model::Project opened = window.projectModel().project();
 
     // Add an ST program through the Add POU core; it calls Main, so renaming Main rewrites it.
-    const auto added = commands.addPou({.name = QStringLiteral("Caller"), .language = iec::model::BodyLanguage::ST});
+    const auto added = commands.addPou({.name = QStringLiteral("Caller"), .language = iec::editors::EditorLanguage::ST});
     QVERIFY(added);
     QVERIFY(window.hasUnsavedChanges());
     QVERIFY(window.isWindowModified());
@@ -803,7 +803,7 @@ void TestMainWindow::declarationsAreAboveThePouBody()
 
     // A chart's placeholder has the declarations too; its action declares nothing of its own.
     ProjectCommands &commands = window.projectCommands();
-    const auto chart = commands.addPou({.name = QStringLiteral("Chart"), .language = iec::model::BodyLanguage::SFC});
+    const auto chart = commands.addPou({.name = QStringLiteral("Chart"), .language = iec::editors::EditorLanguage::SFC});
     QVERIFY(chart);
     const auto action = commands.addPouPart(*chart, {.name = QStringLiteral("Fill")});
     QVERIFY(action);

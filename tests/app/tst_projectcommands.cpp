@@ -21,6 +21,7 @@
 
 using namespace iec::app;
 using namespace iec::model;
+using iec::editors::EditorLanguage;
 
 class TestProjectCommands : public QObject
 {
@@ -49,7 +50,7 @@ namespace {
 
 Pou stPou(const QString &name, PouKind kind, const QString &text)
 {
-    Pou pou = makePou({.name = name, .kind = kind, .language = BodyLanguage::ST, .returnType = QStringLiteral("INT")});
+    Pou pou = makePou({.name = name, .kind = kind, .language = EditorLanguage::ST, .returnType = QStringLiteral("INT")});
     pou.bodies.front().setText(text);
     return pou;
 }
@@ -122,11 +123,13 @@ void TestProjectCommands::newBodiesStartAsTheirEditorOffers_data()
     QTest::addColumn<int>("language");
     QTest::addColumn<QStringList>("outline");
     const QStringList chart {QStringLiteral("Step Init initial"), QStringLiteral("Transition TRUE"), QStringLiteral("Jump Init")};
-    QTest::newRow("SFC program") << int(BodyRef::Part::Pou) << int(BodyLanguage::SFC) << chart;
-    QTest::newRow("SFC action") << int(BodyRef::Part::Action) << int(BodyLanguage::SFC) << chart;
-    QTest::newRow("ST program") << int(BodyRef::Part::Pou) << int(BodyLanguage::ST) << QStringList {QStringLiteral("text ")};
-    QTest::newRow("LD action") << int(BodyRef::Part::Action) << int(BodyLanguage::LD) << QStringList {};
-    QTest::newRow("FBD program") << int(BodyRef::Part::Pou) << int(BodyLanguage::FBD) << QStringList {};
+    QTest::newRow("SFC program") << int(BodyRef::Part::Pou) << int(EditorLanguage::SFC) << chart;
+    QTest::newRow("SFC action") << int(BodyRef::Part::Action) << int(EditorLanguage::SFC) << chart;
+    QTest::newRow("ST program") << int(BodyRef::Part::Pou) << int(EditorLanguage::ST) << QStringList {QStringLiteral("text ")};
+    QTest::newRow("LD action") << int(BodyRef::Part::Action) << int(EditorLanguage::LD) << QStringList {};
+    QTest::newRow("FBD program") << int(BodyRef::Part::Pou) << int(EditorLanguage::FBD) << QStringList {};
+    QTest::newRow("CFC program") << int(BodyRef::Part::Pou) << int(EditorLanguage::CFC) << QStringList {};
+    QTest::newRow("CFC action") << int(BodyRef::Part::Action) << int(EditorLanguage::CFC) << QStringList {};
 }
 
 void TestProjectCommands::newBodiesStartAsTheirEditorOffers()
@@ -136,7 +139,7 @@ void TestProjectCommands::newBodiesStartAsTheirEditorOffers()
     QFETCH(QStringList, outline);
     ProjectModel model;
     Project start;
-    start.types.pous.push_back(makePou({.name = QStringLiteral("Main"), .language = BodyLanguage::ST}));
+    start.types.pous.push_back(makePou({.name = QStringLiteral("Main"), .language = EditorLanguage::ST}));
     model.reset(start);
     QUndoStack stack;
     ProjectCommands commands {model, stack};
@@ -146,17 +149,18 @@ void TestProjectCommands::newBodiesStartAsTheirEditorOffers()
     QString error;
     const Body *body = nullptr;
     if (BodyRef::Part(part) == BodyRef::Part::Pou) {
-        const std::optional<PouId> id = commands.addPou({.name = QStringLiteral("Chart"), .language = BodyLanguage(language)}, &error);
+        const std::optional<PouId> id = commands.addPou({.name = QStringLiteral("Chart"), .language = EditorLanguage(language)}, &error);
         QVERIFY2(id, qPrintable(error));
         body = model.body({*id, BodyRef::Part::Pou, {}});
     } else {
         const std::optional<BodyRef> ref = commands.addPouPart(main,
-            {.part = BodyRef::Part(part), .name = QStringLiteral("Sequence"), .language = BodyLanguage(language)}, &error);
+            {.part = BodyRef::Part(part), .name = QStringLiteral("Sequence"), .language = EditorLanguage(language)}, &error);
         QVERIFY2(ref, qPrintable(error));
         body = model.body(*ref);
     }
     QVERIFY(body);
     QCOMPARE(bodyOutline(*body), outline);
+    QCOMPARE(int(iec::editors::editorLanguage(*body)), language); // a CFC opens in the CFC editor
     // Valid as it is: the file validates and the build finds nothing to complain about.
     QCOMPARE(iec::test::savedSchemaErrors(model.project()), QString());
     for (const Message &message : compileMessages(model.project()))
@@ -241,7 +245,7 @@ void TestProjectCommands::eachOperationRedoUndoRedo()
     const std::vector<Operation> operations = {
         {"add ST program",
             [](Fixture &f) {
-                return f.commands.addPou({.name = QStringLiteral("Conveyor"), .language = BodyLanguage::ST})
+                return f.commands.addPou({.name = QStringLiteral("Conveyor"), .language = EditorLanguage::ST})
                     .has_value();
             },
             [](const Project &p) {
@@ -255,7 +259,7 @@ void TestProjectCommands::eachOperationRedoUndoRedo()
                 return f.commands
                     .addPou({.name = QStringLiteral("Scale"),
                         .kind = PouKind::Function,
-                        .language = BodyLanguage::IL,
+                        .language = EditorLanguage::IL,
                         .returnType = QStringLiteral("real")})
                     .has_value();
             },
@@ -269,7 +273,7 @@ void TestProjectCommands::eachOperationRedoUndoRedo()
             [](Fixture &f) {
                 return f.commands
                     .addPouPart(f.idOf(QStringLiteral("Helper")),
-                        {.part = BodyRef::Part::Action, .name = QStringLiteral("Init"), .language = BodyLanguage::LD})
+                        {.part = BodyRef::Part::Action, .name = QStringLiteral("Init"), .language = EditorLanguage::LD})
                     .has_value();
             },
             [](const Project &p) {
@@ -283,7 +287,7 @@ void TestProjectCommands::eachOperationRedoUndoRedo()
                     .addPouPart(f.idOf(QStringLiteral("Main")),
                         {.part = BodyRef::Part::Transition,
                             .name = QStringLiteral("Done"),
-                            .language = BodyLanguage::ST})
+                            .language = EditorLanguage::ST})
                     .has_value();
             },
             [](const Project &p) { QCOMPARE(p.types.pous.back().transitions.front().name, QStringLiteral("Done")); }},
@@ -399,7 +403,7 @@ void TestProjectCommands::renamingAnActionOrTransitionUpdatesTheChart()
     // A chart whose action block names action Fill twice and whose transition names Full; an ST
     // action calls Fill.
     Project project;
-    Pou chart = makePou({.name = QStringLiteral("Chart"), .language = BodyLanguage::SFC});
+    Pou chart = makePou({.name = QStringLiteral("Chart"), .language = EditorLanguage::SFC});
     chart.bodies = {Body::withLanguage(BodyLanguage::SFC)}; // this chart only, not the new one's Init
     ActionBlock block;
     block.localId = 2;
@@ -514,14 +518,14 @@ void TestProjectCommands::addPouDialogResult()
     QVERIFY(!dialog.problem().isEmpty());
     name->setText(QStringLiteral("Limit"));
     kind->setCurrentIndex(kind->findData(int(PouKind::Function)));
-    language->setCurrentIndex(language->findData(int(BodyLanguage::IL)));
+    language->setCurrentIndex(language->findData(int(EditorLanguage::IL)));
     QVERIFY(returnType->isEnabled());
     returnType->setCurrentText(QStringLiteral("LREAL"));
     QVERIFY(ok->isEnabled());
     const NewPou result = dialog.newPou();
     QCOMPARE(result.name, QStringLiteral("Limit"));
     QCOMPARE(result.kind, PouKind::Function);
-    QCOMPARE(result.language, BodyLanguage::IL);
+    QCOMPARE(result.language, EditorLanguage::IL);
     QCOMPARE(result.returnType, QStringLiteral("LREAL"));
 
     returnType->setCurrentText(QString());
@@ -543,7 +547,7 @@ void TestProjectCommands::addPouPartDialogResult()
     const NewPouPart part = dialog.newPart();
     QCOMPARE(part.part, BodyRef::Part::Transition);
     QCOMPARE(part.name, QStringLiteral("Full"));
-    QCOMPARE(part.language, BodyLanguage::IL);
+    QCOMPARE(part.language, EditorLanguage::IL);
 }
 
 void TestProjectCommands::renameDialogValidates()

@@ -73,7 +73,7 @@ Variable arrayOf(const QString &name, const QString &type)
 
 Pou pouOf(const QString &name, PouKind kind, BodyLanguage language, std::vector<VarList> lists)
 {
-    Pou pou = makePou({.name = name, .kind = kind, .language = language});
+    Pou pou = makePou({.name = name, .kind = kind, .language = iec::editors::editorLanguage(Body::withLanguage(language))});
     pou.pouInterface->varLists = std::move(lists);
     return pou;
 }
