@@ -4,7 +4,7 @@
 // command at the last and at the first network (the edit, the undo command, the scene following
 // it), and the time of one online repaint of the visible networks. Run it offscreen from a
 // Release build:
-//   QT_QPA_PLATFORM=offscreen build/release/bench/editors/bench_fbd_editor
+//   QT_QPA_PLATFORM=offscreen build/release/bench/editors/bench_fbd_editor [ROUNDS]
 // Goals (issue 14): open < 0.5 s, a command < 30 ms.
 #include "editors/common/diagramview.h"
 #include "editors/fbd/fbdedits.h"
@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 
 using namespace iec;
 using namespace iec::editors::fbd;
@@ -79,6 +80,9 @@ double ms(const QElapsedTimer &timer)
 int main(int argc, char *argv[])
 {
     QApplication app(argc, argv);
+    // An optional argument: how often each command is timed (the best is printed; more rounds
+    // for a profiler).
+    const int rounds = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
     model::ProjectModel projectModel;
     projectModel.reset(bigProject());
     const model::BodyRef ref {projectModel.project().types.pous.front().id};
@@ -95,7 +99,7 @@ int main(int argc, char *argv[])
 
     const auto command = [&](int network, const char *where) {
         double best = 1e9;
-        for (int round = 0; round < 5; ++round) {
+        for (int round = 0; round < rounds; ++round) {
             editor.setCursor(FbdCursor::at(Kind::End, network));
             timer.restart();
             editor.insertAssignment();

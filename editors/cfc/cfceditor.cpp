@@ -130,7 +130,7 @@ QUndoCommand *CfcEditor::elementsCommand(std::vector<Element> after, const QStri
 {
     const Body *body = projectModel().body(bodyRef());
     if (!body || cfcPolicy().storage() != CfcStorage::Codesys) {
-        writeCfcSizes(after);
+        writeCfcSizes(after, elements());
         return DiagramEditor::elementsCommand(std::move(after), undoText);
     }
     AddData addData = body->addData;
@@ -167,13 +167,17 @@ bool CfcEditor::eventFilter(QObject *watched, QEvent *event)
 
 void CfcEditor::navigate(Qt::Key key)
 {
-    // The arrow keys move the selection (by the grid, or 10 units without one).
+    // The arrow keys move the selection (by the grid, or 10 units without one). CODESYS's form
+    // keeps positions on its own grid: a smaller step would be rounded back, and Left or Up would
+    // never move.
     const std::vector<quint64> ids = selectedIds();
     if (ids.empty()) {
         DiagramEditor::navigate(key);
         return;
     }
-    const double step = scene()->gridSize() > 0 ? scene()->gridSize() : 10;
+    const double step = cfcPolicy().storage() == CfcStorage::Codesys ? kCodesysGrid
+        : scene()->gridSize() > 0                                    ? scene()->gridSize()
+                                                                     : 10;
     const QPointF by(key == Qt::Key_Left ? -step : key == Qt::Key_Right ? step : 0,
         key == Qt::Key_Up ? -step : key == Qt::Key_Down ? step : 0);
     applyEdit(tr("Move"), [&](std::vector<Element> &e) { return nudgeElements(e, ids, by); });

@@ -63,11 +63,18 @@ QRectF cfcRect(const Element &element)
     return {QPointF(h.position.x, h.position.y), size};
 }
 
-void writeCfcSizes(std::vector<Element> &elements)
+void writeCfcSizes(std::vector<Element> &elements, const std::vector<Element> &before)
 {
+    QHash<quint64, const Element *> old;
+    old.reserve(qsizetype(before.size()));
+    for (const Element &e : before)
+        old.insert(header(e).localId, &e);
     for (Element &e : elements) {
-        const QSizeF size = cfcRect(e).size();
         ElementHeader &h = header(e);
+        const Element *was = old.value(h.localId);
+        if (was && h.width && h.height && *was == e)
+            continue;
+        const QSizeF size = cfcRect(e).size();
         h.width = size.width();
         h.height = size.height();
     }

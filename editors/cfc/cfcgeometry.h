@@ -22,8 +22,9 @@ inline constexpr double kWireClearance = 10; // kept between a wire and a box, a
 // names; a comment keeps the size the file gives it).
 [[nodiscard]] QRectF cfcRect(const model::Element &element);
 // Writes each element's drawn size into its width and height (a comment keeps the size it has), so
-// that other tools (Beremiz reads a CFC as FBD) draw it as large as it is here.
-void writeCfcSizes(std::vector<model::Element> &elements);
+// that other tools (Beremiz reads a CFC as FBD) draw it as large as it is here. Only elements that
+// are new, changed or without a size since `before` are measured (measuring text is what costs).
+void writeCfcSizes(std::vector<model::Element> &elements, const std::vector<model::Element> &before);
 // Pins in body coordinates: input `pin` (model::inputPoints order) and the output a connection's
 // formalParameter names (the only one when empty). nullopt when there is no such pin.
 [[nodiscard]] std::optional<QPointF> cfcInputPin(const model::Element &element, int pin);

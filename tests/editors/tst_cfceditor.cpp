@@ -452,7 +452,20 @@ private Q_SLOTS:
         const QString content = now->addData.front().content;
         QVERIFY2(content.contains(QLatin1String("<position x=\"20\" y=\"5\"/>")), qPrintable(content));
         QCOMPARE(content.count(QLatin1String("<connector ")), 1);
+        // The arrow keys move by CODESYS's grid, also left and up (a smaller step was rounded
+        // back onto the same grid point).
+        const quint64 done = named(QStringLiteral("Done"));
+        m_editor->select({done});
+        m_editor->view()->setFocus();
+        for (const auto &[key, expected] : {std::pair {Qt::Key_Left, model::Position {380, 90}}, {Qt::Key_Up, model::Position {380, 70}},
+                 {Qt::Key_Right, model::Position {400, 70}}, {Qt::Key_Down, model::Position {400, 90}}}) {
+            QTest::keyClick(viewport(), key);
+            QCOMPARE(model::header(*element(done)).position, expected);
+        }
+        QCOMPARE(m_stack.count(), 5);
         QVERIFY2(m_problems.isEmpty(), qPrintable(m_problems.join(QLatin1Char('\n'))));
+        for (int i = 0; i < 4; ++i)
+            m_stack.undo();
         m_stack.undo();
         QCOMPARE(model::plcopen::writeProject(m_model.project()), unchanged);
         QCOMPARE(m_editor->elements().size(), std::size_t(2));
