@@ -10,6 +10,8 @@
 
 #include "app/documentarea.h"
 #include "app/mainwindow.h"
+#include "editors/cfc/cfcstorage.h"
+#include "editors/common/editorlanguage.h"
 #include "interpreter/frontend/iecreader.h"
 #include "model/plcopen/reader.h"
 #include "model/plcopen/writer.h"
@@ -97,6 +99,25 @@ void TestMonkey::initTestCase()
     QFile file(m_files.filePath(QStringLiteral("il.xml")));
     QVERIFY(file.open(QIODevice::WriteOnly));
     file.write(model::plcopen::writeProject(il.project));
+
+    // CFC bodies for the CFC editor: staggered_fans' diagram as IEC Studio's CFC (its FBD body
+    // marked), and in CODESYS's form (an empty ST body with the chart in addData).
+    model::plcopen::ReadResult fans = model::plcopen::readProjectFile(QStringLiteral(IEC_SOURCE_DIR "/resources/examples/staggered_fans.xml"));
+    QVERIFY(fans.ok);
+    model::Pou &main = *std::ranges::find_if(fans.project.types.pous, [](const model::Pou &p) { return p.name == QLatin1String("Main"); });
+    model::Body &diagram = main.bodies.front();
+    QVERIFY(diagram.elements() && !diagram.elements()->empty());
+    diagram.addData.push_back({QString::fromLatin1(editors::kIecStudioCfcAddDataName), QStringLiteral("implementation"), QStringLiteral("<cfc/>")});
+    const auto write = [this](const QString &name, const model::Project &project) {
+        QFile out(m_files.filePath(name));
+        return out.open(QIODevice::WriteOnly) && out.write(model::plcopen::writeProject(project)) > 0;
+    };
+    QVERIFY(write(QStringLiteral("cfc.xml"), fans.project));
+    model::Body codesys = model::Body::withLanguage(model::BodyLanguage::ST);
+    codesys.addData.push_back({QStringLiteral("http://www.3s-software.com/plcopenxml/cfc"), QStringLiteral("implementation"),
+        editors::cfc::writeCodesysCfc(*diagram.elements())});
+    main.bodies = {codesys};
+    QVERIFY(write(QStringLiteral("codesys_cfc.xml"), fans.project));
 }
 
 void TestMonkey::editorsSurviveRandomGestures_data()
@@ -112,6 +133,8 @@ void TestMonkey::editorsSurviveRandomGestures_data()
     QTest::newRow("LD star_delta") << examples + QStringLiteral("star_delta.xml") << "Main" << "";
     QTest::newRow("FBD staggered_fans") << examples + QStringLiteral("staggered_fans.xml") << "Main" << "";
     QTest::newRow("IL") << m_files.filePath(QStringLiteral("il.xml")) << "Main" << "";
+    QTest::newRow("CFC") << m_files.filePath(QStringLiteral("cfc.xml")) << "Main" << "";
+    QTest::newRow("CODESYS CFC") << m_files.filePath(QStringLiteral("codesys_cfc.xml")) << "Main" << "";
 }
 
 void TestMonkey::editorsSurviveRandomGestures()
