@@ -114,11 +114,14 @@ private:
                 first = std::min(first, m_document.indexOf(id));
             return first;
         };
-        if (!m_network.leftRail || railsTaken.contains(m_network.leftRail)) {
+        // A rail is made anew when the network has none, shares one with a network before it,
+        // or names one that is no longer in the body (the monkey found a stale id).
+        const auto needsRail = [&](quint64 rail) { return !rail || railsTaken.contains(rail) || !m_document.element(rail); };
+        if (needsRail(m_network.leftRail)) {
             m_network.leftRail = m_document.add(LeftPowerRail {}, firstIndex());
             m_network.members.push_back(m_network.leftRail);
         }
-        if (!m_network.rightRail || railsTaken.contains(m_network.rightRail)) {
+        if (needsRail(m_network.rightRail)) {
             int last = -1;
             for (quint64 id : m_network.members)
                 last = std::max(last, m_document.indexOf(id));

@@ -349,6 +349,24 @@ private Q_SLOTS:
         QVERIFY(reread.elements == once);
     }
 
+    void railsGoneFromTheBodyAreMadeAnew()
+    {
+        // The monkey (seed 2, 1,000 gestures on star_delta) reached a network whose rails were no
+        // longer in the body; writing it dereferenced them. Now the rails are made anew.
+        LadderDocument doc;
+        run(QStringLiteral("c A;coil Q").split(QLatin1Char(';')), &doc);
+        LdNetwork &network = doc.networks.front();
+        doc.remove({network.leftRail, network.rightRail});
+        network.leftRail = 9001;
+        network.rightRail = 9002;
+        writeLadder(doc);
+        const auto *left = doc.element(doc.networks.front().leftRail);
+        const auto *right = doc.element(doc.networks.front().rightRail);
+        QVERIFY(left && std::holds_alternative<model::LeftPowerRail>(*left));
+        QVERIFY(right && std::holds_alternative<model::RightPowerRail>(*right));
+        QCOMPARE(readLadder(doc.elements).networks.size(), std::size_t(1));
+    }
+
     void cursorMoves()
     {
         LadderDocument doc;
