@@ -1,6 +1,7 @@
 #include "editors/common/networkitems.h"
 
 #include <QCoreApplication>
+#include <QFontMetricsF>
 #include <QPainter>
 
 namespace iec::editors {
@@ -59,6 +60,8 @@ NetworkItem::NetworkItem(int number, const QRectF &band, const QString &label, c
     , m_freehand(freehand)
 {
     setZValue(-2);
+    if (!comment.isEmpty())
+        setToolTip(comment);
 }
 
 void NetworkItem::setNumber(int number)
@@ -107,7 +110,12 @@ void NetworkItem::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QWi
         font.setItalic(true);
         painter->setFont(font);
         painter->setPen(kComment);
-        painter->drawText(m_commentRect, Qt::AlignLeft | Qt::AlignTop, m_comment);
+        // A line longer than the network ends in "…" (the whole comment is the tool tip).
+        const QFontMetricsF metrics(font);
+        QStringList lines = m_comment.split(QLatin1Char('\n'));
+        for (QString &line : lines)
+            line = metrics.elidedText(line, Qt::ElideRight, m_commentRect.width());
+        painter->drawText(m_commentRect, Qt::AlignLeft | Qt::AlignTop, lines.join(QLatin1Char('\n')));
     }
     if (m_freehand) {
         font.setItalic(true);
