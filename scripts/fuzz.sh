@@ -7,7 +7,7 @@
 #   (tests/fuzz/regressions/TARGET). What fails is saved in build/fuzz/crashes/TARGET/: fix it and
 #   copy the input to tests/fuzz/regressions/TARGET/, and every ctest run replays it from then on.
 # scripts/fuzz.sh --list   prints the targets.
-# scripts/fuzz.sh --all [SECONDS]   runs every target for SECONDS each (default 8: what CI runs,
+# scripts/fuzz.sh --all [SECONDS]   runs every target for SECONDS each (default 8: a short check,
 #   under a minute in all) and fails when one of them fails.
 # IEC_FUZZ_JOBS=N runs N fuzzers at once (default 1); IEC_BUILD_WRAP is put before the build
 # command (e.g. "flock /tmp/build.lock" on a machine where builds take turns).
