@@ -16,6 +16,9 @@ namespace {
 template<class... Ts> struct Overloaded : Ts... {
     using Ts::operator()...;
 };
+// The guide clang 14 needs (it does not deduce an aggregate's arguments without one); the fuzz
+// build uses clang.
+template<class... Ts> Overloaded(Ts...) -> Overloaded<Ts...>;
 
 NodeKind kindOf(const model::Element &element)
 {
