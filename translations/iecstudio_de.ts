@@ -5936,6 +5936,10 @@ Automatisch gespeichert: %2</translation>
             <source>%1 is out of the range of REAL (about ±3.4E38).</source>
             <translation>%1 liegt außerhalb des Wertebereichs von REAL (etwa ±3,4E38).</translation>
         </message>
+        <message>
+            <source>%1 is out of the range of LREAL (about ±1.8E308).</source>
+            <translation>%1 liegt außerhalb des Wertebereichs von LREAL (etwa ±1,8E308).</translation>
+        </message>
     </context>
     <context>
         <name>iec::model::AddDataTypeCommand</name>

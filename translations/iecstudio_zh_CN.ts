@@ -5931,6 +5931,10 @@ Autosaved: %2</source>
             <source>%1 is out of the range of REAL (about ±3.4E38).</source>
             <translation>%1 超出了 REAL 的取值范围（约 ±3.4E38）。</translation>
         </message>
+        <message>
+            <source>%1 is out of the range of LREAL (about ±1.8E308).</source>
+            <translation>%1 超出了 LREAL 的取值范围（约 ±1.8E308）。</translation>
+        </message>
     </context>
     <context>
         <name>iec::model::AddDataTypeCommand</name>

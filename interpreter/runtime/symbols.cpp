@@ -413,8 +413,12 @@ std::optional<QString> writeLiteral(const VariableRef &ref, const QString &input
         const auto value = decodeReal(parts.body);
         if (!value)
             return bad();
-        if (e == Elem::Real && std::isfinite(*value) && std::fabs(*value) > double(std::numeric_limits<float>::max()))
+        // A literal beyond the type's range would become infinity, which reads back as a text no
+        // literal can give: refused like an integer out of range.
+        if (e == Elem::Real && (!std::isfinite(*value) || std::fabs(*value) > double(std::numeric_limits<float>::max())))
             return QCoreApplication::translate("iec::interp::Runtime", "%1 is out of the range of REAL (about ±3.4E38).").arg(text);
+        if (!std::isfinite(*value))
+            return QCoreApplication::translate("iec::interp::Runtime", "%1 is out of the range of LREAL (about ±1.8E308).").arg(text);
         if (e == Elem::Real)
             put<float>(p, static_cast<float>(*value));
         else
