@@ -102,9 +102,12 @@ void readFormattedText(pugi::xml_node node, FormattedText &text)
     } else if (elements.size() == 1 && hasOnlyText(elements.front())) {
         text.text = descendantText(elements.front()); // <xhtml:p> or CODESYS' <xhtml xmlns=..>
     } else {
-        text.text = descendantText(node);
-        for (pugi::xml_node element : elements)
+        // The text is that of the elements kept: text beside them (not XHTML, so not written back)
+        // would make the model read from the file differ from the one read after saving it.
+        for (pugi::xml_node element : elements) {
+            text.text += descendantText(element);
             text.xhtml += rawXml(element);
+        }
     }
 }
 
