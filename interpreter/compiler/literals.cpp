@@ -275,7 +275,13 @@ std::optional<std::int64_t> decodeDate(QStringView body)
     const auto date = parseDate(body);
     if (!date)
         return std::nullopt;
-    return daysFromCivil(*date) * 86'400'000'000'000LL;
+    // Dates count nanoseconds in 64 bits: about 292 years each way from 1970 (to 2262, with the
+    // time of a DT added); a date beyond is refused, not wrapped (found by fuzz_values).
+    constexpr std::int64_t kLastDay = 106'750;
+    const std::int64_t days = daysFromCivil(*date);
+    if (days > kLastDay || days < -kLastDay)
+        return std::nullopt;
+    return days * 86'400'000'000'000LL;
 }
 
 std::optional<std::int64_t> decodeTimeOfDay(QStringView body)

@@ -92,13 +92,23 @@ void XmlIn::collectUnknown(Extras *extras)
 {
     m_finished = true;
     const QString element = QString::fromUtf8(localName(m_node));
+    // Known attributes with a bad value come first, in the order they were read, then the unknown
+    // ones in file order: the order the writer puts them in, so that a file read, written and read
+    // again gives the same model (fuzz_plcopen found one with an unknown attribute first).
+    if (extras)
+        for (const char *name : m_badAttributes) {
+            const QString key = QString::fromUtf8(name);
+            const bool listed = std::ranges::any_of(extras->attributes, [&](const UnknownAttribute &a) { return a.name == key; });
+            if (pugi::xml_attribute attribute = m_node.attribute(name); attribute && !listed)
+                extras->attributes.push_back({key, QString::fromUtf8(attribute.value())});
+        }
     for (pugi::xml_attribute attribute = m_node.first_attribute(); attribute; attribute = attribute.next_attribute()) {
         const char *name = attribute.name();
         // Namespace declarations are the writer's business; xsi: attributes are harmless hints.
         if (isKnownAttribute(name) || !std::strncmp(name, "xmlns", 5))
             continue;
         const bool bad = std::ranges::any_of(m_badAttributes, [name](const char *b) { return !std::strcmp(b, name); });
-        if (extras)
+        if (extras && !bad)
             extras->attributes.push_back({QString::fromUtf8(name), QString::fromUtf8(attribute.value())});
         if (!bad && std::strncmp(name, "xsi:", 4))
             m_context.report(Diagnostic::Severity::Warning, m_node,
