@@ -350,6 +350,7 @@ public:
     };
     std::vector<Loop> m_loops;
     int m_lastLine = -1;
+    qint64 m_lastLocalId = -1;
     std::uint32_t m_lastTarget = 0;
     bool m_tooLarge = false;
     std::uint32_t m_returnJump = 0;

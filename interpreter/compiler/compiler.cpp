@@ -62,13 +62,14 @@ std::uint32_t Codegen::instr(std::uint16_t opcode, std::uint32_t a, std::uint32_
 
 void Codegen::markLine(SourceLocation at)
 {
-    if (!m_pou || at.line == m_lastLine)
+    if (!m_pou || (at.line == m_lastLine && at.localId == m_lastLocalId))
         return;
     m_lastLine = at.line;
+    m_lastLocalId = at.localId;
     if (!m_module->lines.empty() && m_module->lines.back().pc == here())
-        m_module->lines.back() = {here(), m_lineOwner, at.line};
+        m_module->lines.back() = {here(), m_lineOwner, at.line, at.localId};
     else
-        m_module->lines.push_back({here(), m_lineOwner, at.line});
+        m_module->lines.push_back({here(), m_lineOwner, at.line, at.localId});
 }
 
 bool Codegen::lastWrites(std::uint32_t operand) const
@@ -256,6 +257,7 @@ void Codegen::beginBody(PouInfo &pou, int moduleIndex, SourceLocation at)
     m_pouName = m_module->pous[size_t(moduleIndex)].name;
     m_tempTop = m_tempMax = 0;
     m_lastLine = -1;
+    m_lastLocalId = -1;
     m_pouCodeStart = here();
     m_module->pous[size_t(moduleIndex)].entry = here();
     markLine(at);

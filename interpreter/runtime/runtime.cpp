@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 
 namespace iec::interp {
 
@@ -28,6 +29,8 @@ void Runtime::coldRestart()
     m_timeNs = 0;
     m_cycle = 0;
     m_fault.reset();
+    m_halt.reset();
+    m_vm.stepMaxDepth = -1;
     m_nextDue.assign(m_module->tasks.size(), 0);
     m_singleBefore.assign(m_module->tasks.size(), false);
 }
@@ -70,38 +73,77 @@ bool Runtime::runCycle()
 {
     if (m_fault)
         return false;
+    if (m_halt)
+        return resume(ResumeKind::Continue);
+    beginCycle();
+    return runTasksFrom(0);
+}
+
+void Runtime::beginCycle()
+{
     ++m_cycle;
     applyForces();
     copyInputs();
     applyForces();
     m_vm.clockNs = m_timeNs;
-    for (size_t t = 0; t < m_module->tasks.size(); ++t) {
-        const TaskInfo &task = m_module->tasks[t];
-        bool due = true;
-        if (task.singleOffset >= 0) {
-            const bool now = m_vm.memory()[size_t(task.singleOffset)] != 0;
-            due = now && !m_singleBefore[t];
-            m_singleBefore[t] = now;
-        } else if (task.intervalNs > 0) {
-            due = m_timeNs >= m_nextDue[t];
-            if (due)
-                m_nextDue[t] += task.intervalNs * std::max<std::int64_t>(1, (m_timeNs - m_nextDue[t]) / task.intervalNs + 1);
-        }
-        if (!due)
-            continue;
-        const FaultKind kind = m_vm.run(task.entry);
-        if (kind != FaultKind::None) {
-            const LineEntry line = m_module->lineAt(m_vm.faultPc());
-            RuntimeFault fault;
-            fault.kind = kind;
-            fault.pou = line.pou >= 0 ? m_module->pous[size_t(line.pou)].name : QString();
-            fault.line = line.line;
-            fault.cycle = m_cycle;
-            fault.message = faultMessage(kind);
-            m_fault = fault;
-            return false;
-        }
+}
+
+bool Runtime::taskIsDue(size_t t)
+{
+    const TaskInfo &task = m_module->tasks[t];
+    if (task.singleOffset >= 0) {
+        const bool now = m_vm.memory()[size_t(task.singleOffset)] != 0;
+        const bool due = now && !m_singleBefore[t];
+        m_singleBefore[t] = now;
+        return due;
     }
+    if (task.intervalNs > 0) {
+        if (m_timeNs < m_nextDue[t])
+            return false;
+        m_nextDue[t] += task.intervalNs * std::max<std::int64_t>(1, (m_timeNs - m_nextDue[t]) / task.intervalNs + 1);
+    }
+    return true;
+}
+
+// Runs the due tasks from `first` on and ends the cycle; false when a task halted or faulted.
+bool Runtime::runTasksFrom(size_t first)
+{
+    for (size_t t = first; t < m_module->tasks.size(); ++t) {
+        if (!taskIsDue(t))
+            continue;
+        m_haltedTask = t;
+        if (!finishTaskRun(m_vm.run(m_module->tasks[t].entry)))
+            return false;
+    }
+    endCycle();
+    return true;
+}
+
+// What a task run ended with: a halt the debugger keeps (false), a fault (false), or the end.
+bool Runtime::finishTaskRun(FaultKind kind)
+{
+    kind = passUnwantedHalts(kind);
+    if (kind == FaultKind::Halted)
+        return false;
+    if (kind != FaultKind::None) {
+        const LineEntry line = m_module->lineAt(m_vm.faultPc());
+        RuntimeFault fault;
+        fault.kind = kind;
+        fault.pou = line.pou >= 0 ? m_module->pous[size_t(line.pou)].name : QString();
+        fault.line = line.line;
+        fault.cycle = m_cycle;
+        fault.message = faultMessage(kind);
+        m_fault = fault;
+        return false;
+    }
+    // A step that left the program's body halts at the next line run, wherever it is.
+    if (m_vm.stepMaxDepth >= 0)
+        m_vm.stepMaxDepth = std::numeric_limits<std::int64_t>::max();
+    return true;
+}
+
+void Runtime::endCycle()
+{
     for (Vm::LogMessage &message : m_vm.log) {
         if (m_log.size() < Vm::kMaxLog)
             m_log.push_back({m_cycle, message.level, std::move(message.text)});
@@ -111,7 +153,6 @@ bool Runtime::runCycle()
     copyOutputs();
     applyForces(); // a forced %Q address wins over the variable mapped to it
     m_timeNs += m_cycleNs;
-    return true;
 }
 
 std::vector<Runtime::LogEntry> Runtime::takeLog()

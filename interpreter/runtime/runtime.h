@@ -1,5 +1,6 @@
 #pragma once
 
+#include "interpreter/runtime/debugging.h"
 #include "interpreter/runtime/symbols.h"
 #include "interpreter/vm/bytecode.h"
 #include "interpreter/vm/vm.h"
@@ -34,7 +35,9 @@ public:
     // Warm restart: like cold, but RETAIN variables keep their values.
     void warmRestart();
 
-    // Runs one cycle; false (and nothing happens) once a fault stopped the program.
+    // Runs one cycle; false (and nothing happens) once a fault stopped the program, and false
+    // when a breakpoint halted it mid-cycle. Called while halted, it finishes the halted cycle
+    // (resume(Continue)).
     bool runCycle();
     bool runCycles(int count);
 
@@ -64,10 +67,34 @@ public:
     };
     std::vector<LogEntry> takeLog();
 
+    // Debugging (debugging.h). Breakpoints whose place has no code are kept but never halt.
+    // Without breakpoints and steps the program runs as fast as without a debugger.
+    void setBreakpoints(std::vector<Breakpoint> breakpoints);
+    const std::vector<Breakpoint> &breakpoints() const { return m_breakpoints; }
+    const std::optional<HaltInfo> &halt() const { return m_halt; }
+    bool isHalted() const { return m_halt.has_value(); }
+    // Goes on from the halt (or, when not halted, starts a cycle that halts at its first line
+    // for a step); true once the cycle finished, false when it halted again or faulted.
+    bool resume(ResumeKind kind);
+    // Where the code of a place starts: every pc whose line-table entry names it.
+    std::vector<std::uint32_t> codeAt(const CodeLocation &at) const;
+    // How often each breakpoint was reached since it was set.
+    const std::vector<int> &hitCounts() const { return m_hits; }
+
     Vm &vm() { return m_vm; }
     const Module &module() const { return *m_module; }
 
 private:
+    void beginCycle();
+    bool taskIsDue(size_t task);
+    bool runTasksFrom(size_t first);
+    bool finishTaskRun(FaultKind kind);
+    void endCycle();
+    FaultKind passUnwantedHalts(FaultKind kind);
+    bool breakpointHolds(int index);
+    void updateStops(bool stepping);
+    HaltInfo describeHalt(int breakpoint) const;
+    QString instanceAt(std::uint32_t offset, int pou) const;
     void copyInputs();
     void copyOutputs();
     void applyForces();
@@ -88,6 +115,14 @@ private:
     std::vector<Force> m_forces;
     std::optional<RuntimeFault> m_fault;
     std::vector<LogEntry> m_log;
+
+    std::vector<Breakpoint> m_breakpoints;
+    std::vector<int> m_hits;                               // per breakpoint
+    std::vector<std::vector<int>> m_breakpointsAtPc;       // pc -> breakpoints there (debugging only)
+    std::vector<std::uint8_t> m_lineStops;                 // Vm::LineStop at every line start
+    std::optional<HaltInfo> m_halt;
+    size_t m_haltedTask = 0;
+    QString m_conditionProblem; // of the breakpoint last checked
 };
 
 } // namespace iec::interp

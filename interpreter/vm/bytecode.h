@@ -98,7 +98,9 @@ constexpr std::uint32_t kOffsetMask = 0x7fffffffu;
                                                               references: 0 is NullPointer) */             \
     X(Fault)                                              /* stop with the fault kind in aux */           \
     X(JitEnter)                                           /* run machine-code entry a (jit.h); only in the \
-                                                              JIT's copy of the code */
+                                                              JIT's copy of the code */                    \
+    X(Break)                                              /* a place the debugger may halt at (vm.h); only \
+                                                              in the debugger's copy of the code */
 
 namespace op {
 enum : std::uint16_t {
@@ -169,6 +171,7 @@ enum class FaultKind : std::uint16_t {
     OutOfSubrange,
     NullPointer,    // a pointer or reference that is 0 was dereferenced
     InvalidAddress, // a pointer that points outside the program's memory was dereferenced
+    Halted,         // not a fault: the debugger halted the run (Vm::resume goes on)
 };
 QString faultMessage(FaultKind kind);
 
@@ -177,6 +180,7 @@ struct LineEntry {
     std::uint32_t pc = 0;
     int pou = -1;
     int line = 0;
+    qint64 localId = -1; // graphical bodies: the element the code is for (a network's root, a step)
 };
 
 struct CompiledPou {

@@ -10,6 +10,7 @@
 #include <QCoreApplication>
 
 #include <array>
+#include <limits>
 #include <cmath>
 #include <cstddef>
 #include <cstring>
@@ -35,6 +36,7 @@ QString faultMessage(FaultKind kind)
         return QCoreApplication::translate("iec::interp::Runtime", "A pointer or reference that points nowhere (0) was used.");
     case FaultKind::InvalidAddress:
         return QCoreApplication::translate("iec::interp::Runtime", "A pointer that points outside the program's memory was used.");
+    case FaultKind::Halted: return QCoreApplication::translate("iec::interp::Runtime", "The program halted.");
     }
     return {};
 }
@@ -428,6 +430,49 @@ std::size_t Vm::nativeInstructions() const
 
 FaultKind Vm::run(std::uint32_t entry)
 {
+    m_halt.reset();
+    return execute(entry, false);
+}
+
+FaultKind Vm::resume()
+{
+    if (!m_halt)
+        return FaultKind::None;
+    return execute(m_halt->pc, true);
+}
+
+void Vm::setStops(std::vector<std::uint8_t> stops)
+{
+    m_stops = std::move(stops);
+    m_debugCode.clear();
+    m_originalOps.clear();
+    if (m_stops.empty())
+        return;
+    m_stops.resize(m_module.code.size(), NoStop);
+    m_debugCode = m_module.code;
+    m_originalOps.resize(m_debugCode.size());
+    for (size_t pc = 0; pc < m_debugCode.size(); ++pc) {
+        Instr &instruction = m_debugCode[pc];
+        // A packed rung run would skip a stop inside it: the rungs run one by one instead.
+        if (instruction.op == op::RungBlock)
+            instruction.op = op::Nop;
+        m_originalOps[pc] = instruction.op;
+        if (m_stops[pc] != NoStop)
+            instruction.op = op::Break;
+    }
+}
+
+std::vector<Vm::HaltedFrame> Vm::haltedFrames() const
+{
+    if (!m_halt)
+        return {};
+    std::vector<HaltedFrame> frames = m_halt->callers;
+    frames.push_back({m_halt->pc, m_halt->instance});
+    return frames;
+}
+
+FaultKind Vm::execute(std::uint32_t entry, bool resuming)
+{
     struct Frame {
         const Instr *ip; // where to go on
         std::uint8_t *base;
@@ -438,8 +483,12 @@ FaultKind Vm::run(std::uint32_t entry)
     // them in registers although every store goes through a byte pointer that may alias anything.
     std::uint8_t *const mem = m_memory.data();
     std::uint8_t *inst = mem;
-    // With the JIT, its copy of the code, where op::JitEnter marks the way into machine code.
-    const Instr *const code = m_jit ? m_jit->code().data() : m_module.code.data();
+    // With the JIT, its copy of the code, where op::JitEnter marks the way into machine code; with
+    // stops, the debugger's copy (op::Break at each stop), run without the JIT. Resuming without
+    // stops runs the plain code: a halt may have been inside what the JIT translated.
+    const Instr *const code = !m_debugCode.empty() ? m_debugCode.data()
+        : m_jit && !resuming                       ? m_jit->code().data()
+                                                   : m_module.code.data();
     const IndexDescriptor *const descriptors = m_module.indexDescriptors.data();
     const RungRecord *const rungs = m_module.rungs.data();
     if (entry >= m_module.code.size()) {
@@ -447,6 +496,16 @@ FaultKind Vm::run(std::uint32_t entry)
         return FaultKind::InvalidProgram;
     }
     std::uint64_t budget = budgetPerRun;
+    // The stop a resumed run starts at is passed once: its instruction runs, then the run goes on.
+    std::uint32_t passStopAt = std::numeric_limits<std::uint32_t>::max();
+    if (resuming) {
+        for (const HaltedFrame &caller : m_halt->callers)
+            frames[depth++] = {code + caller.pc, mem + caller.instance};
+        inst = mem + m_halt->instance;
+        budget = m_halt->budget;
+        passStopAt = entry;
+        m_halt.reset();
+    }
 
 #define P(operand) (((operand) & kInstanceRelative ? inst : mem) + ((operand) & kOffsetMask))
 #define FAULT(kind)                                                                                                \
@@ -950,6 +1009,24 @@ FaultKind Vm::run(std::uint32_t entry)
             }
             ip = code + next;
             DISPATCH();
+        }
+        L_Break: {
+            const auto pc = static_cast<std::uint32_t>(ip - code);
+            const std::uint8_t stop = m_stops[pc];
+            const bool halt = pc != passStopAt
+                && ((stop & BreakpointStop) || ((stop & LineStop) && std::int64_t(depth) <= stepMaxDepth));
+            passStopAt = std::numeric_limits<std::uint32_t>::max();
+            if (!halt)
+                goto *dispatch[m_originalOps[pc]];
+            Halt saved;
+            saved.pc = pc;
+            saved.instance = static_cast<std::uint32_t>(inst - mem);
+            saved.budget = budget;
+            for (size_t i = 0; i < depth; ++i)
+                saved.callers.push_back({static_cast<std::uint32_t>(frames[i].ip - code), static_cast<std::uint32_t>(frames[i].base - mem)});
+            m_halt = std::move(saved);
+            m_faultPc = pc;
+            return FaultKind::Halted;
         }
     }
 #undef DISPATCH

@@ -5,6 +5,7 @@
 #include <QString>
 
 #include <memory>
+#include <optional>
 
 #include <cstdint>
 #include <vector>
@@ -46,16 +47,45 @@ public:
     static constexpr std::size_t kMaxLog = 1000;
 
     // Runs from `entry` until Halt (or the outermost Ret). Returns FaultKind::None, or the fault
-    // with faultPc() telling where.
+    // with faultPc() telling where, or FaultKind::Halted when a stop halted it (below).
     FaultKind run(std::uint32_t entry);
     std::uint32_t faultPc() const { return m_faultPc; }
 
+    // Debugging. Stops are pcs the run may halt at: a breakpoint always halts there, a line start
+    // only while stepping and at a call depth of at most stepMaxDepth. With stops, runs use a
+    // copy of the code holding op::Break at each stop and no JIT; without any, nothing is slower.
+    enum StopKind : std::uint8_t { NoStop = 0, BreakpointStop = 1, LineStop = 2 };
+    void setStops(std::vector<std::uint8_t> stops); // one per pc (shorter is padded); empty: none
+    bool hasStops() const { return !m_debugCode.empty(); }
+    std::int64_t stepMaxDepth = -1;                 // -1: not stepping
+    // After FaultKind::Halted: goes on from the halt, running the halted instruction first.
+    FaultKind resume();
+    bool isHalted() const { return m_halt.has_value(); }
+    struct HaltedFrame {
+        std::uint32_t pc = 0;       // the caller: where it goes on; the innermost: the halt
+        std::uint32_t instance = 0; // offset of the instance it runs on
+    };
+    std::vector<HaltedFrame> haltedFrames() const; // outermost first, the halted one last
+
 private:
+    FaultKind execute(std::uint32_t entry, bool resuming);
+
     const Module &m_module;
     std::unique_ptr<const JitProgram> m_jit;
     std::vector<std::uint8_t> m_memory;
     std::vector<char16_t> m_scratch;
     std::uint32_t m_faultPc = 0;
+
+    std::vector<std::uint8_t> m_stops;
+    std::vector<Instr> m_debugCode;
+    std::vector<std::uint16_t> m_originalOps; // the debug copy's ops before op::Break went in
+    struct Halt {
+        std::uint32_t pc = 0;
+        std::uint32_t instance = 0;
+        std::uint64_t budget = 0;
+        std::vector<HaltedFrame> callers;
+    };
+    std::optional<Halt> m_halt;
 };
 
 } // namespace iec::interp

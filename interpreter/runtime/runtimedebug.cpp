@@ -1,0 +1,226 @@
+// The runtime's debugger: breakpoints, halting mid-scan and going on (debugging.h).
+//
+// The VM halts at every stop it is given (vm.h); the policy lives here: whether a breakpoint's
+// hit count and condition hold, which halts a step wants, and where the halted program stands.
+#include "interpreter/runtime/conditionexpression.h"
+#include "interpreter/runtime/runtime.h"
+
+#include "interpreter/compiler/types.h"
+
+#include <limits>
+
+namespace iec::interp {
+
+void Runtime::setBreakpoints(std::vector<Breakpoint> breakpoints)
+{
+    m_breakpoints = std::move(breakpoints);
+    m_hits.assign(m_breakpoints.size(), 0);
+    if (m_halt && m_halt->breakpoint >= int(m_breakpoints.size()))
+        m_halt->breakpoint = -1;
+    updateStops(m_vm.stepMaxDepth >= 0 || m_halt.has_value());
+}
+
+std::vector<std::uint32_t> Runtime::codeAt(const CodeLocation &at) const
+{
+    std::vector<std::uint32_t> pcs;
+    for (const LineEntry &entry : m_module->lines) {
+        if (entry.pou < 0 || m_module->pous[size_t(entry.pou)].name.compare(at.pou, Qt::CaseInsensitive) != 0)
+            continue;
+        if (at.localId >= 0 ? entry.localId == at.localId : entry.line == at.line && at.line > 0)
+            pcs.push_back(entry.pc);
+    }
+    return pcs;
+}
+
+// The VM gets stops only while they are wanted: breakpoints, or a halt or step in progress (every
+// line start then, so a step can halt at the next one). Otherwise it runs its fast code.
+void Runtime::updateStops(bool stepping)
+{
+    m_breakpointsAtPc.clear();
+    bool any = false;
+    for (size_t i = 0; i < m_breakpoints.size(); ++i) {
+        if (!m_breakpoints[i].enabled)
+            continue;
+        for (const std::uint32_t pc : codeAt(m_breakpoints[i].at)) {
+            if (m_breakpointsAtPc.size() <= pc)
+                m_breakpointsAtPc.resize(size_t(pc) + 1);
+            m_breakpointsAtPc[pc].push_back(int(i));
+            any = true;
+        }
+    }
+    if (!any && !stepping) {
+        m_lineStops.clear();
+        if (m_vm.hasStops())
+            m_vm.setStops({});
+        return;
+    }
+    std::vector<std::uint8_t> stops(m_module->code.size(), Vm::NoStop);
+    for (const LineEntry &entry : m_module->lines)
+        if (entry.pc < stops.size())
+            stops[entry.pc] |= Vm::LineStop;
+    m_lineStops = stops;
+    for (size_t pc = 0; pc < m_breakpointsAtPc.size() && pc < stops.size(); ++pc)
+        if (!m_breakpointsAtPc[pc].empty())
+            stops[pc] |= Vm::BreakpointStop;
+    m_vm.setStops(std::move(stops));
+}
+
+bool Runtime::resume(ResumeKind kind)
+{
+    if (m_fault)
+        return false;
+    const bool stepping = kind != ResumeKind::Continue;
+    if (stepping && !m_vm.hasStops())
+        updateStops(true);
+    std::int64_t depth = 0;
+    if (m_halt)
+        depth = std::int64_t(m_vm.haltedFrames().size()) - 1;
+    switch (kind) {
+    case ResumeKind::Continue: m_vm.stepMaxDepth = -1; break;
+    case ResumeKind::StepInto: m_vm.stepMaxDepth = std::numeric_limits<std::int64_t>::max(); break;
+    case ResumeKind::StepOver: m_vm.stepMaxDepth = m_halt ? depth : std::numeric_limits<std::int64_t>::max(); break;
+    case ResumeKind::StepOut: m_vm.stepMaxDepth = m_halt ? depth - 1 : std::numeric_limits<std::int64_t>::max(); break;
+    }
+    if (!m_halt) {
+        beginCycle();
+        return runTasksFrom(0);
+    }
+    m_halt.reset();
+    if (!stepping)
+        updateStops(false); // without breakpoints the rest runs at full speed
+    if (!finishTaskRun(m_vm.resume()))
+        return false;
+    return runTasksFrom(m_haltedTask + 1);
+}
+
+// Goes on past halts the debugger does not want: a breakpoint whose hit count or condition does
+// not hold. Returns the kind the run finally ended with.
+FaultKind Runtime::passUnwantedHalts(FaultKind kind)
+{
+    while (kind == FaultKind::Halted) {
+        const std::uint32_t pc = m_vm.faultPc();
+        const auto depth = std::int64_t(m_vm.haltedFrames().size()) - 1;
+        const bool stepHalts = m_vm.stepMaxDepth >= 0 && pc < m_lineStops.size() && (m_lineStops[pc] & Vm::LineStop)
+            && depth <= m_vm.stepMaxDepth;
+        int hit = -1;
+        m_conditionProblem.clear();
+        if (pc < m_breakpointsAtPc.size())
+            for (const int index : m_breakpointsAtPc[pc])
+                if (hit < 0 ? breakpointHolds(index) : (++m_hits[size_t(index)], false))
+                    hit = index;
+        if (stepHalts || hit >= 0) {
+            m_vm.stepMaxDepth = -1;
+            m_halt = describeHalt(hit);
+            if (hit >= 0)
+                m_halt->conditionProblem = m_conditionProblem;
+            return kind;
+        }
+        kind = m_vm.resume();
+    }
+    return kind;
+}
+
+// Counts the hit, then checks the hit rule and the condition (an expression that cannot be
+// evaluated halts, with the reason in the halt, so a typo does not hide the place).
+bool Runtime::breakpointHolds(int index)
+{
+    const Breakpoint &b = m_breakpoints[size_t(index)];
+    const int hits = ++m_hits[size_t(index)];
+    const int target = std::max(1, b.hitTarget);
+    bool counted = true;
+    switch (b.hitRule) {
+    case HitRule::Always: break;
+    case HitRule::Equal: counted = hits == target; break;
+    case HitRule::MultipleOf: counted = hits % target == 0; break;
+    case HitRule::AtLeast: counted = hits >= target; break;
+    }
+    if (!counted || b.condition.trimmed().isEmpty())
+        return counted;
+    const std::vector<Vm::HaltedFrame> frames = m_vm.haltedFrames();
+    const LineEntry line = m_module->lineAt(frames.back().pc);
+    ConditionScope scope{*m_module, m_vm.memory().data(), {m_images[0].data(), m_images[1].data(), m_images[2].data()}, instanceAt(frames.back().instance, line.pou)};
+    const ConditionResult result = evaluateCondition(b.condition, scope);
+    m_conditionProblem = result.error;
+    return !result.value || *result.value;
+}
+
+HaltInfo Runtime::describeHalt(int breakpoint) const
+{
+    HaltInfo info;
+    info.cycle = m_cycle;
+    info.breakpoint = breakpoint;
+    info.hits = breakpoint >= 0 ? m_hits[size_t(breakpoint)] : 0;
+    const std::vector<Vm::HaltedFrame> frames = m_vm.haltedFrames();
+    // The outermost frame is the task's own code, which calls the programs: not a body.
+    for (size_t i = frames.size() > 1 ? 1 : 0; i < frames.size(); ++i) {
+        const Vm::HaltedFrame &frame = frames[i];
+        // A caller's pc is where it goes on: the call is the instruction before it.
+        const bool halted = i + 1 == frames.size();
+        const LineEntry line = m_module->lineAt(halted || frame.pc == 0 ? frame.pc : frame.pc - 1);
+        if (line.pou < 0)
+            continue;
+        StackFrame f;
+        f.pou = m_module->pous[size_t(line.pou)].name;
+        f.instance = instanceAt(frame.instance, line.pou);
+        f.line = line.line;
+        f.localId = line.localId;
+        info.stack.push_back(f);
+    }
+    if (!info.stack.empty())
+        info.at = {info.stack.back().pou, info.stack.back().line, info.stack.back().localId};
+    return info;
+}
+
+namespace {
+
+// The path of the function block instance at `offset` below `type` (found: true).
+bool findInstance(const Type *type, std::uint32_t base, std::uint32_t offset, const Type *wanted, QString &path, int depth)
+{
+    if (!type || depth > 16)
+        return false;
+    for (const Member &m : type->members) {
+        if (!m.type || m.byReference || (m.type->kind != TypeKind::FunctionBlock && m.type->kind != TypeKind::Struct))
+            continue;
+        const std::uint32_t at = base + m.offset;
+        if (offset < at || offset >= at + m.type->size)
+            continue;
+        if (at == offset && m.type == wanted) {
+            path += QLatin1Char('.') + m.name;
+            return true;
+        }
+        const int before = int(path.size());
+        path += QLatin1Char('.') + m.name;
+        if (findInstance(m.type, at, offset, wanted, path, depth + 1))
+            return true;
+        path.truncate(before);
+    }
+    return false;
+}
+
+} // namespace
+
+// The name of the instance a body runs on: a program, a global or nested function block
+// instance (Main.Counter1); empty for functions and when it cannot be told.
+QString Runtime::instanceAt(std::uint32_t offset, int pou) const
+{
+    if (pou < 0)
+        return {};
+    const CompiledPou &compiled = m_module->pous[size_t(pou)];
+    if (compiled.kind == ast::PouKind::Function || !compiled.instanceType)
+        return {};
+    for (const ProgramInstance &program : m_module->programs)
+        if (program.base == offset && m_module->pous[size_t(program.pou)].instanceType == compiled.instanceType)
+            return program.name;
+    for (const Symbol &symbol : m_module->symbols) {
+        if (!symbol.type)
+            continue;
+        if (symbol.offset == offset && symbol.type == compiled.instanceType)
+            return symbol.name;
+        QString path = symbol.name;
+        if (findInstance(symbol.type, symbol.offset, offset, compiled.instanceType, path, 0))
+            return path;
+    }
+    return {};
+}
+
+} // namespace iec::interp

@@ -1,0 +1,297 @@
+// The runtime's debugger: breakpoints on lines, hit counts and conditions, halting mid-scan,
+// stepping over, into and out of calls, and going on with the same results as without halting.
+#include "interpreter/compiler/compiler.h"
+#include "interpreter/runtime/conditionexpression.h"
+#include "interpreter/runtime/runtime.h"
+
+#include <QTest>
+
+using namespace iec::interp;
+
+namespace {
+
+std::shared_ptr<const Module> build(const QString &source)
+{
+    Diagnostics diagnostics;
+    auto module = compileText(source, diagnostics);
+    for (const Diagnostic &d : diagnostics.all())
+        qWarning("%s", qPrintable(d.toString()));
+    return module;
+}
+
+// Lines:                  1              2                                3
+const char *const kLoop = "PROGRAM Main\nVAR i : INT; sum : INT; END_VAR\nsum := 0;\n"
+                          // 4                   5                  6           7
+                          "FOR i := 1 TO 5 DO\n  sum := sum + i;\nEND_FOR;\nEND_PROGRAM\n";
+
+// Lines 1-6 a function block, 7-12 the program that calls it.
+const char *const kCalls = "FUNCTION_BLOCK Acc\nVAR_INPUT x : INT; END_VAR\nVAR_OUTPUT total : INT; END_VAR\n"
+                           "total := total + x;\ntotal := total * 1;\nEND_FUNCTION_BLOCK\n"
+                           "PROGRAM Main\nVAR a : Acc; n : INT; m : INT; END_VAR\nn := n + 1;\na(x := n);\nm := a.total;\nEND_PROGRAM\n";
+
+Breakpoint at(const QString &pou, int line)
+{
+    Breakpoint b;
+    b.at = {pou, line, -1};
+    return b;
+}
+
+QString where(const Runtime &runtime)
+{
+    if (!runtime.halt())
+        return QStringLiteral("-");
+    return QStringLiteral("%1:%2").arg(runtime.halt()->at.pou).arg(runtime.halt()->at.line);
+}
+
+} // namespace
+
+class TestDebugger : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void breakpointInALoopHaltsInEachIteration();
+    void hitCountsAndConditions_data();
+    void hitCountsAndConditions();
+    void conditionThatCannotBeEvaluatedHalts();
+    void steppingOverIntoAndOut();
+    void haltingChangesNoResult();
+    void endlessLoopStillHalts();
+    void noBreakpointsMeansNoStops();
+    void conditions_data();
+    void conditions();
+};
+
+void TestDebugger::breakpointInALoopHaltsInEachIteration()
+{
+    auto module = build(QString::fromLatin1(kLoop));
+    QVERIFY(module);
+    Runtime runtime(module);
+    runtime.setBreakpoints({at(QStringLiteral("Main"), 5)});
+    QVERIFY(!runtime.runCycle());
+    for (int i = 1; i <= 5; ++i) {
+        QVERIFY(runtime.isHalted());
+        QCOMPARE(where(runtime), QStringLiteral("Main:5"));
+        QCOMPARE(runtime.halt()->cycle, 1);
+        QCOMPARE(runtime.halt()->breakpoint, 0);
+        QCOMPARE(runtime.halt()->hits, i);
+        QCOMPARE(runtime.read(QStringLiteral("Main.i")), QString::number(i));
+        QCOMPARE(runtime.read(QStringLiteral("Main.sum")), QString::number(i * (i - 1) / 2));
+        QCOMPARE(runtime.timeNs(), 0); // the clock stands still while halted
+        QCOMPARE(runtime.resume(ResumeKind::Continue), i == 5);
+    }
+    QVERIFY(!runtime.isHalted());
+    QCOMPARE(runtime.read(QStringLiteral("Main.sum")), QStringLiteral("15"));
+    QCOMPARE(runtime.cycle(), 1);
+    QCOMPARE(runtime.timeNs(), runtime.cycleNs());
+    // The next cycle halts again, at the first iteration.
+    QVERIFY(!runtime.runCycle());
+    QCOMPARE(runtime.halt()->cycle, 2);
+    QCOMPARE(runtime.read(QStringLiteral("Main.i")), QStringLiteral("1"));
+}
+
+void TestDebugger::hitCountsAndConditions_data()
+{
+    QTest::addColumn<int>("rule");
+    QTest::addColumn<int>("target");
+    QTest::addColumn<QString>("condition");
+    QTest::addColumn<QStringList>("halts"); // cycle/i at every halt over two cycles
+    QTest::newRow("always") << int(HitRule::Always) << 1 << QString()
+                            << QStringList{"1/1", "1/2", "1/3", "1/4", "1/5", "2/1", "2/2", "2/3", "2/4", "2/5"};
+    QTest::newRow("the fourth hit") << int(HitRule::Equal) << 4 << QString() << QStringList{"1/4"};
+    QTest::newRow("every third hit") << int(HitRule::MultipleOf) << 3 << QString() << QStringList{"1/3", "2/1", "2/4"};
+    QTest::newRow("from the eighth hit") << int(HitRule::AtLeast) << 8 << QString() << QStringList{"2/3", "2/4", "2/5"};
+    QTest::newRow("condition") << int(HitRule::Always) << 1 << QStringLiteral("i = 3") << QStringList{"1/3", "2/3"};
+    QTest::newRow("condition on two variables") << int(HitRule::Always) << 1 << QStringLiteral("i >= 2 AND sum < 6")
+                                                << QStringList{"1/2", "1/3", "2/2", "2/3"};
+    QTest::newRow("hit count, then condition") << int(HitRule::AtLeast) << 4 << QStringLiteral("i MOD 2 = 1")
+                                               << QStringList{"1/5", "2/1", "2/3", "2/5"};
+}
+
+void TestDebugger::hitCountsAndConditions()
+{
+    QFETCH(int, rule);
+    QFETCH(int, target);
+    QFETCH(QString, condition);
+    QFETCH(QStringList, halts);
+    auto module = build(QString::fromLatin1(kLoop));
+    QVERIFY(module);
+    Runtime runtime(module);
+    Breakpoint b = at(QStringLiteral("Main"), 5);
+    b.hitRule = HitRule(rule);
+    b.hitTarget = target;
+    b.condition = condition;
+    runtime.setBreakpoints({b});
+    QStringList seen;
+    int guard = 0;
+    while (runtime.cycle() < 2 || runtime.isHalted()) {
+        runtime.runCycle();
+        if (runtime.isHalted())
+            seen << QStringLiteral("%1/%2").arg(runtime.halt()->cycle).arg(*runtime.read(QStringLiteral("Main.i")));
+        QVERIFY(++guard < 100);
+    }
+    QCOMPARE(seen, halts);
+    QCOMPARE(runtime.read(QStringLiteral("Main.sum")), QStringLiteral("15"));
+    QCOMPARE(runtime.hitCounts(), std::vector<int>{10});
+}
+
+void TestDebugger::conditionThatCannotBeEvaluatedHalts()
+{
+    auto module = build(QString::fromLatin1(kLoop));
+    QVERIFY(module);
+    Runtime runtime(module);
+    Breakpoint b = at(QStringLiteral("Main"), 5);
+    b.condition = QStringLiteral("nothing > 1");
+    runtime.setBreakpoints({b});
+    QVERIFY(!runtime.runCycle());
+    QVERIFY(runtime.isHalted());
+    QCOMPARE(runtime.halt()->conditionProblem, QStringLiteral("There is no variable called nothing here."));
+}
+
+void TestDebugger::steppingOverIntoAndOut()
+{
+    auto module = build(QString::fromLatin1(kCalls));
+    QVERIFY(module);
+    Runtime runtime(module);
+    runtime.setBreakpoints({at(QStringLiteral("Main"), 9)});
+    QVERIFY(!runtime.runCycle());
+    QCOMPARE(where(runtime), QStringLiteral("Main:9"));
+    QCOMPARE(runtime.halt()->stack.size(), size_t(1));
+    QCOMPARE(runtime.halt()->stack[0].instance, QStringLiteral("Main"));
+    QVERIFY(!runtime.resume(ResumeKind::StepOver));
+    QCOMPARE(where(runtime), QStringLiteral("Main:10"));
+    QCOMPARE(runtime.halt()->breakpoint, -1);
+    QVERIFY(!runtime.resume(ResumeKind::StepInto));
+    QCOMPARE(where(runtime), QStringLiteral("Acc:4"));
+    QCOMPARE(runtime.halt()->stack.size(), size_t(2));
+    QCOMPARE(runtime.halt()->stack[0].line, 10); // the call
+    QCOMPARE(runtime.halt()->stack[1].instance, QStringLiteral("Main.a"));
+    QCOMPARE(runtime.read(QStringLiteral("Main.a.x")), QStringLiteral("1"));
+    QVERIFY(!runtime.resume(ResumeKind::StepOver));
+    QCOMPARE(where(runtime), QStringLiteral("Acc:5"));
+    QVERIFY(!runtime.resume(ResumeKind::StepOut));
+    QCOMPARE(where(runtime), QStringLiteral("Main:11"));
+    QCOMPARE(runtime.read(QStringLiteral("Main.m")), QStringLiteral("0"));
+    // Stepping over the call runs it whole.
+    QVERIFY(runtime.resume(ResumeKind::StepOver)); // the last line: the cycle ends
+    QCOMPARE(runtime.read(QStringLiteral("Main.m")), QStringLiteral("1"));
+    QVERIFY(!runtime.runCycle());
+    QCOMPARE(where(runtime), QStringLiteral("Main:9"));
+    QVERIFY(!runtime.resume(ResumeKind::StepOver));
+    QVERIFY(!runtime.resume(ResumeKind::StepOver));
+    QCOMPARE(where(runtime), QStringLiteral("Main:11"));
+    QCOMPARE(runtime.read(QStringLiteral("Main.a.total")), QStringLiteral("3"));
+}
+
+// Halting at every line of every cycle and going on gives, cycle by cycle, the memory image of
+// a run without the debugger.
+void TestDebugger::haltingChangesNoResult()
+{
+    const QString source = QString::fromLatin1(kCalls) + QStringLiteral("PROGRAM Second\nVAR t : TON; q : BOOL; k : INT; END_VAR\n"
+                                                                        "t(IN := NOT q, PT := T#30ms);\nq := t.Q;\n"
+                                                                        "IF q THEN k := k + 1; END_IF;\nEND_PROGRAM\n"
+                                                                        "CONFIGURATION C RESOURCE R ON PLC\n"
+                                                                        "TASK Fast(INTERVAL := T#10ms, PRIORITY := 1);\n"
+                                                                        "TASK Slow(INTERVAL := T#20ms, PRIORITY := 2);\n"
+                                                                        "PROGRAM P1 WITH Fast : Main;\nPROGRAM P2 WITH Slow : Second;\n"
+                                                                        "END_RESOURCE END_CONFIGURATION\n");
+    auto module = build(source);
+    QVERIFY(module);
+    Runtime plain(module);
+    Runtime halting(module);
+    halting.setBreakpoints({at(QStringLiteral("Main"), 9), at(QStringLiteral("Acc"), 5), at(QStringLiteral("Second"), 16)});
+    int halts = 0;
+    for (int cycle = 1; cycle <= 12; ++cycle) {
+        QVERIFY(plain.runCycle());
+        bool done = halting.runCycle();
+        while (!done) {
+            QVERIFY(halting.isHalted());
+            ++halts;
+            done = halting.resume(halts % 3 == 0 ? ResumeKind::StepInto : ResumeKind::Continue);
+        }
+        QCOMPARE(halting.cycle(), cycle);
+        QVERIFY(halting.vm().memory() == plain.vm().memory());
+        QCOMPARE(halting.read(QStringLiteral("Second.k")), plain.read(QStringLiteral("Second.k")));
+    }
+    QVERIFY(halts >= 12 * 2 + 6);
+    QCOMPARE(plain.read(QStringLiteral("Second.k")), QStringLiteral("1"));
+}
+
+void TestDebugger::endlessLoopStillHalts()
+{
+    auto module = build(QStringLiteral("PROGRAM Main\nVAR n : DINT; END_VAR\nWHILE TRUE DO\n  n := n + 1;\nEND_WHILE;\nEND_PROGRAM\n"));
+    QVERIFY(module);
+    Runtime runtime(module);
+    runtime.vm().budgetPerRun = 1000;
+    runtime.setBreakpoints({at(QStringLiteral("Main"), 4)});
+    QVERIFY(!runtime.runCycle());
+    for (int n = 0; n < 3; ++n) {
+        QCOMPARE(where(runtime), QStringLiteral("Main:4"));
+        QCOMPARE(runtime.read(QStringLiteral("Main.n")), QString::number(n));
+        QVERIFY(!runtime.resume(ResumeKind::Continue));
+    }
+    runtime.setBreakpoints({});
+    QVERIFY(!runtime.resume(ResumeKind::Continue));
+    QVERIFY(!runtime.isHalted());
+    QVERIFY(runtime.fault());
+    QCOMPARE(runtime.fault()->kind, FaultKind::BudgetExceeded);
+    QCOMPARE(runtime.fault()->line, 3); // an endless loop is reported at its WHILE
+}
+
+void TestDebugger::noBreakpointsMeansNoStops()
+{
+    auto module = build(QString::fromLatin1(kLoop));
+    QVERIFY(module);
+    Runtime runtime(module);
+    QVERIFY(!runtime.vm().hasStops());
+    runtime.setBreakpoints({at(QStringLiteral("Main"), 5)});
+    QVERIFY(runtime.vm().hasStops());
+    QVERIFY(!runtime.runCycle());
+    runtime.setBreakpoints({});
+    QVERIFY(runtime.vm().hasStops()); // still halted: a step may follow
+    QVERIFY(runtime.resume(ResumeKind::Continue));
+    QVERIFY(!runtime.vm().hasStops());
+    // A breakpoint on a line without code is kept and never halts.
+    runtime.setBreakpoints({at(QStringLiteral("Main"), 2)});
+    QVERIFY(runtime.runCycle());
+    QCOMPARE(runtime.breakpoints().size(), size_t(1));
+}
+
+void TestDebugger::conditions_data()
+{
+    QTest::addColumn<QString>("condition");
+    QTest::addColumn<QString>("result"); // TRUE, FALSE, or the error
+    QTest::newRow("comparison") << QStringLiteral("count = 7") << QStringLiteral("TRUE");
+    QTest::newRow("arithmetic") << QStringLiteral("count * 2 + 1 > 15") << QStringLiteral("FALSE");
+    QTest::newRow("real") << QStringLiteral("level > 2.25") << QStringLiteral("TRUE");
+    QTest::newRow("bool") << QStringLiteral("NOT alarm OR count < 0") << QStringLiteral("TRUE");
+    QTest::newRow("time") << QStringLiteral("delay >= T#1s500ms") << QStringLiteral("TRUE");
+    QTest::newRow("string") << QStringLiteral("name = 'pump'") << QStringLiteral("TRUE");
+    QTest::newRow("array element") << QStringLiteral("values[count - 5] = 20") << QStringLiteral("TRUE");
+    QTest::newRow("global") << QStringLiteral("Limit = 100") << QStringLiteral("TRUE");
+    QTest::newRow("instance name") << QStringLiteral("Main.count <> 7") << QStringLiteral("FALSE");
+    QTest::newRow("number") << QStringLiteral("count + 1") << QStringLiteral("The condition must be TRUE or FALSE, not a number or a text.");
+    QTest::newRow("syntax") << QStringLiteral("count = = 2") << QStringLiteral("This is not an expression: count = = 2");
+    QTest::newRow("division by zero") << QStringLiteral("count / 0 > 1") << QStringLiteral("The condition divides by zero.");
+    QTest::newRow("a call") << QStringLiteral("ABS(count) > 1")
+                            << QStringLiteral("A condition can only read variables and compare them; it cannot call anything.");
+}
+
+void TestDebugger::conditions()
+{
+    QFETCH(QString, condition);
+    QFETCH(QString, result);
+    auto module = build(QStringLiteral("VAR_GLOBAL Limit : INT := 100; END_VAR\n"
+                                       "PROGRAM Main\nVAR count : INT := 7; level : REAL := 2.5; alarm : BOOL; delay : TIME := T#2s;\n"
+                                       "name : STRING := 'pump'; values : ARRAY[1..3] OF INT := [10, 20, 30]; END_VAR\n"
+                                       "count := count;\nEND_PROGRAM\n"));
+    QVERIFY(module);
+    Runtime runtime(module);
+    const ConditionScope scope{*module, runtime.vm().memory().data(), {runtime.image('I').data(), runtime.image('Q').data(), runtime.image('M').data()},
+                               QStringLiteral("Main")};
+    const ConditionResult r = evaluateCondition(condition, scope);
+    QCOMPARE(r.value ? QString::fromLatin1(*r.value ? "TRUE" : "FALSE") : r.error, result);
+}
+
+QTEST_GUILESS_MAIN(TestDebugger)
+#include "tst_debugger.moc"
