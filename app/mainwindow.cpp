@@ -13,6 +13,7 @@
 #include "app/listmenus.h"
 #include "app/messagespane.h"
 #include "app/newprojectdialog.h"
+#include "app/online/debugcontroller.h"
 #include "app/online/onlinecontroller.h"
 #include "app/online/watchpane.h"
 #include "app/projectcommands.h"
@@ -160,7 +161,7 @@ void MainWindow::createActions()
     m_stopAction->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F5));
     m_stopAction->setEnabled(false);
     m_singleCycleAction = new QAction(this);
-    m_singleCycleAction->setShortcut(QKeySequence(Qt::Key_F8));
+    m_singleCycleAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F5)); // F8 is Step Into, as in CODESYS
     m_singleCycleAction->setEnabled(false);
 
     m_settingsAction = new QAction(this);
@@ -228,6 +229,7 @@ void MainWindow::createMenus()
     m_onlineMenu->addAction(m_stopAction);
     m_onlineMenu->addAction(m_singleCycleAction);
     m_online->addTo(m_onlineMenu);
+    m_debug->addTo(m_onlineMenu, nullptr);
 
     m_windowMenu = new WindowMenu(*m_documents, this);
     menuBar()->addMenu(m_windowMenu);
@@ -257,6 +259,9 @@ void MainWindow::createToolBar()
     m_toolBar->addAction(m_loginAction);
     m_toolBar->addAction(m_stopAction);
     m_toolBar->addAction(m_singleCycleAction);
+    m_toolBar->addAction(m_debug->stepOverAction());
+    m_toolBar->addAction(m_debug->stepIntoAction());
+    m_toolBar->addAction(m_debug->stepOutAction());
 }
 
 void MainWindow::createDocks()
@@ -302,6 +307,7 @@ void MainWindow::createDocks()
     addDockWidget(Qt::BottomDockWidgetArea, m_watchDock);
     m_online = new OnlineController(*m_projectModel, *m_documents, *m_messages, *m_build, *m_watch, *statusBar(),
         {m_loginAction, m_stopAction, m_singleCycleAction}, this);
+    m_debug = new DebugController(*m_projectModel, *m_documents, *m_online, *statusBar(), this);
     createProjectTools();
 }
 
@@ -342,6 +348,7 @@ void MainWindow::retranslateUi()
     m_messagesDock->setWindowTitle(tr("Messages"));
     m_watchDock->setWindowTitle(tr("Watch"));
     m_online->retranslate();
+    m_debug->retranslate();
     retranslateProjectTools();
 }
 

@@ -32,6 +32,7 @@ class ExamplesMenu;
 class GlobalListCommands;
 class ImportExportActions;
 class MessagesPane;
+class DebugController;
 class OnlineController;
 class ProjectCommands;
 class ProjectTreeActions;
@@ -67,6 +68,7 @@ public:
     [[nodiscard]] BuildController &buildController() { return *m_build; }
     [[nodiscard]] DocumentArea &documents() { return *m_documents; }
     [[nodiscard]] OnlineController &online() { return *m_online; }
+    [[nodiscard]] DebugController &debugger() { return *m_debug; }
     [[nodiscard]] WatchPane &watchPane() { return *m_watch; }
     [[nodiscard]] ProjectTreeView &projectTree() { return *m_projectTree; }
     [[nodiscard]] ImportExportActions &importExport() { return *m_importExport; }
@@ -200,6 +202,7 @@ private:
     QDockWidget *m_watchDock = nullptr;
     WatchPane *m_watch = nullptr;
     OnlineController *m_online = nullptr;
+    DebugController *m_debug = nullptr;
     EditActions *m_editActions = nullptr;
     DiagramMenus *m_diagramMenus = nullptr;
     SearchActions *m_searchActions = nullptr;

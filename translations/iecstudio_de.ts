@@ -261,6 +261,53 @@
         </message>
     </context>
     <context>
+        <name>iec::app::DebugController</name>
+        <message>
+            <source>Toggle &amp;Breakpoint</source>
+            <translation>&amp;Haltepunkt ein/aus</translation>
+        </message>
+        <message>
+            <source>Remove All Breakpoints</source>
+            <translation>Alle Haltepunkte entfernen</translation>
+        </message>
+        <message>
+            <source>Step &amp;Over</source>
+            <translation>Prozedurschritt (&amp;O)</translation>
+        </message>
+        <message>
+            <source>Step &amp;Into</source>
+            <translation>Einzelschritt (&amp;I)</translation>
+        </message>
+        <message>
+            <source>Step O&amp;ut</source>
+            <translation>Rücksprung (&amp;U)</translation>
+        </message>
+        <message>
+            <source>A breakpoint goes on a line of an ST or IL body.</source>
+            <translation>Ein Haltepunkt gehört auf eine Zeile eines ST- oder AWL-Rumpfs.</translation>
+        </message>
+        <message>
+            <source>Breakpoints in transitions are not supported; put one on the step before it.</source>
+            <translation>Haltepunkte in Transitionen gibt es nicht; setzen Sie einen auf den Schritt davor.</translation>
+        </message>
+        <message>
+            <source>element %1</source>
+            <translation>Element %1</translation>
+        </message>
+        <message>
+            <source>line %1</source>
+            <translation>Zeile %1</translation>
+        </message>
+        <message>
+            <source>Halted in %1 at %2 (cycle %3). F5 continues, F10 steps over, F8 steps into, Shift+F10 steps out.</source>
+            <translation>Angehalten in %1 bei %2 (Zyklus %3). F5 setzt fort, F10 Prozedurschritt, F8 Einzelschritt, Umschalt+F10 Rücksprung.</translation>
+        </message>
+        <message>
+            <source>The breakpoint's condition could not be checked: %1</source>
+            <translation>Die Bedingung des Haltepunkts ließ sich nicht prüfen: %1</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::app::DiagramMenus</name>
         <message>
             <source>Zoom: %1 %</source>
@@ -864,8 +911,12 @@ Automatisch gespeichert: %2</translation>
             <translation> | seit dem Einloggen geändert</translation>
         </message>
         <message>
-            <source>Logged in. F5 runs the program, F8 runs one cycle. Log out to edit (Online → Logout).</source>
-            <translation>Eingeloggt. F5 startet das Programm, F8 führt einen Zyklus aus. Zum Bearbeiten ausloggen (Online → Ausloggen).</translation>
+            <source>Logged in. F5 runs the program, Ctrl+F5 runs one cycle. Log out to edit (Online → Logout).</source>
+            <translation>Eingeloggt. F5 startet das Programm, Strg+F5 führt einen Zyklus aus. Zum Bearbeiten ausloggen (Online → Ausloggen).</translation>
+        </message>
+        <message>
+            <source>HALT</source>
+            <translation>HALT</translation>
         </message>
     </context>
     <context>
@@ -5871,6 +5922,45 @@ Automatisch gespeichert: %2</translation>
         </message>
     </context>
     <context>
+        <name>iec::interp::Condition</name>
+        <message>
+            <source>The condition is nested too deeply.</source>
+            <translation>Die Bedingung ist zu tief verschachtelt.</translation>
+        </message>
+        <message>
+            <source>A condition can only read variables and compare them; it cannot call anything.</source>
+            <translation>Eine Bedingung kann nur Variablen lesen und vergleichen, nichts aufrufen.</translation>
+        </message>
+        <message>
+            <source>There is no variable called %1 here.</source>
+            <translation>Hier gibt es keine Variable namens %1.</translation>
+        </message>
+        <message>
+            <source>Text cannot be calculated with.</source>
+            <translation>Mit Text kann nicht gerechnet werden.</translation>
+        </message>
+        <message>
+            <source>AND, OR, XOR and NOT need TRUE or FALSE here.</source>
+            <translation>AND, OR, XOR und NOT brauchen hier TRUE oder FALSE.</translation>
+        </message>
+        <message>
+            <source>The condition divides by zero.</source>
+            <translation>Die Bedingung teilt durch null.</translation>
+        </message>
+        <message>
+            <source>The operator %1 cannot be used in a condition.</source>
+            <translation>Der Operator %1 ist in einer Bedingung nicht erlaubt.</translation>
+        </message>
+        <message>
+            <source>This is not an expression: %1</source>
+            <translation>Das ist kein Ausdruck: %1</translation>
+        </message>
+        <message>
+            <source>The condition must be TRUE or FALSE, not a number or a text.</source>
+            <translation>Die Bedingung muss TRUE oder FALSE sein, keine Zahl und kein Text.</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::interp::Runtime</name>
         <message>
             <source>Integer division by zero.</source>
@@ -5939,6 +6029,10 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>%1 is out of the range of LREAL (about ±1.8E308).</source>
             <translation>%1 liegt außerhalb des Wertebereichs von LREAL (etwa ±1,8E308).</translation>
+        </message>
+        <message>
+            <source>The program halted.</source>
+            <translation>Das Programm ist angehalten.</translation>
         </message>
     </context>
     <context>

@@ -260,6 +260,53 @@
         </message>
     </context>
     <context>
+        <name>iec::app::DebugController</name>
+        <message>
+            <source>Toggle &amp;Breakpoint</source>
+            <translation>切换断点(&amp;B)</translation>
+        </message>
+        <message>
+            <source>Remove All Breakpoints</source>
+            <translation>删除所有断点</translation>
+        </message>
+        <message>
+            <source>Step &amp;Over</source>
+            <translation>单步跳过(&amp;O)</translation>
+        </message>
+        <message>
+            <source>Step &amp;Into</source>
+            <translation>单步进入(&amp;I)</translation>
+        </message>
+        <message>
+            <source>Step O&amp;ut</source>
+            <translation>单步跳出(&amp;U)</translation>
+        </message>
+        <message>
+            <source>A breakpoint goes on a line of an ST or IL body.</source>
+            <translation>断点只能设在 ST 或 IL 程序体的某一行上。</translation>
+        </message>
+        <message>
+            <source>Breakpoints in transitions are not supported; put one on the step before it.</source>
+            <translation>转换中不支持断点；请把断点设在它前面的步上。</translation>
+        </message>
+        <message>
+            <source>element %1</source>
+            <translation>元素 %1</translation>
+        </message>
+        <message>
+            <source>line %1</source>
+            <translation>第 %1 行</translation>
+        </message>
+        <message>
+            <source>Halted in %1 at %2 (cycle %3). F5 continues, F10 steps over, F8 steps into, Shift+F10 steps out.</source>
+            <translation>已在 %1 的%2处暂停（周期 %3）。F5 继续，F10 单步跳过，F8 单步进入，Shift+F10 单步跳出。</translation>
+        </message>
+        <message>
+            <source>The breakpoint's condition could not be checked: %1</source>
+            <translation>无法检查断点的条件：%1</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::app::DiagramMenus</name>
         <message>
             <source>Zoom: %1 %</source>
@@ -863,8 +910,12 @@ Autosaved: %2</source>
             <translation> | 登录后已更改</translation>
         </message>
         <message>
-            <source>Logged in. F5 runs the program, F8 runs one cycle. Log out to edit (Online → Logout).</source>
-            <translation>已登录。F5 运行程序，F8 运行一个周期。要编辑，请先注销（在线 → 注销）。</translation>
+            <source>Logged in. F5 runs the program, Ctrl+F5 runs one cycle. Log out to edit (Online → Logout).</source>
+            <translation>已登录。F5 运行程序，Ctrl+F5 运行一个周期。要编辑，请先注销（在线 → 注销）。</translation>
+        </message>
+        <message>
+            <source>HALT</source>
+            <translation>暂停</translation>
         </message>
     </context>
     <context>
@@ -5866,6 +5917,45 @@ Autosaved: %2</source>
         </message>
     </context>
     <context>
+        <name>iec::interp::Condition</name>
+        <message>
+            <source>The condition is nested too deeply.</source>
+            <translation>条件嵌套太深。</translation>
+        </message>
+        <message>
+            <source>A condition can only read variables and compare them; it cannot call anything.</source>
+            <translation>条件只能读取并比较变量，不能调用任何东西。</translation>
+        </message>
+        <message>
+            <source>There is no variable called %1 here.</source>
+            <translation>这里没有名为 %1 的变量。</translation>
+        </message>
+        <message>
+            <source>Text cannot be calculated with.</source>
+            <translation>文本不能参与计算。</translation>
+        </message>
+        <message>
+            <source>AND, OR, XOR and NOT need TRUE or FALSE here.</source>
+            <translation>AND、OR、XOR 和 NOT 在这里需要 TRUE 或 FALSE。</translation>
+        </message>
+        <message>
+            <source>The condition divides by zero.</source>
+            <translation>条件中除以零。</translation>
+        </message>
+        <message>
+            <source>The operator %1 cannot be used in a condition.</source>
+            <translation>条件中不能使用运算符 %1。</translation>
+        </message>
+        <message>
+            <source>This is not an expression: %1</source>
+            <translation>这不是一个表达式：%1</translation>
+        </message>
+        <message>
+            <source>The condition must be TRUE or FALSE, not a number or a text.</source>
+            <translation>条件必须是 TRUE 或 FALSE，而不是数字或文本。</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::interp::Runtime</name>
         <message>
             <source>Integer division by zero.</source>
@@ -5934,6 +6024,10 @@ Autosaved: %2</source>
         <message>
             <source>%1 is out of the range of LREAL (about ±1.8E308).</source>
             <translation>%1 超出了 LREAL 的取值范围（约 ±1.8E308）。</translation>
+        </message>
+        <message>
+            <source>The program halted.</source>
+            <translation>程序已暂停。</translation>
         </message>
     </context>
     <context>

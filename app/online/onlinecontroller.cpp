@@ -234,7 +234,7 @@ bool OnlineController::login()
     send([request = requestFor(m_sent)](RuntimeWorker &worker) { worker.setWatch(request); });
     // Editing is refused while online (the window locks the editors on onlineChanged): say so.
     m_statusBar.showMessage(
-        tr("Logged in. F5 runs the program, F8 runs one cycle. Log out to edit (Online → Logout)."), 10000);
+        tr("Logged in. F5 runs the program, Ctrl+F5 runs one cycle. Log out to edit (Online → Logout)."), 10000);
     updateActions();
     updateStatus();
     Q_EMIT onlineChanged(true);
@@ -299,6 +299,18 @@ void OnlineController::singleCycle()
     if (!login())
         return;
     send([](RuntimeWorker &worker) { worker.singleCycle(); });
+}
+
+void OnlineController::setBreakpoints(const std::vector<interp::Breakpoint> &breakpoints)
+{
+    send([breakpoints](RuntimeWorker &worker) { worker.setBreakpoints(breakpoints); });
+}
+
+void OnlineController::resume(interp::ResumeKind kind)
+{
+    if (!login())
+        return;
+    send([kind](RuntimeWorker &worker) { worker.resume(kind); });
 }
 
 void OnlineController::runCycles(int count)
@@ -492,7 +504,10 @@ void OnlineController::updateStatus()
         : m_speed == RunSpeed::Times10                  ? tr("10x")
                                                         : tr("full speed");
     const std::int64_t cycleNs = m_latest ? m_latest->cycleNs : m_cycleNs;
-    QString state = m_latest && m_latest->fault ? tr("FAULT") : m_running ? tr("RUN") : tr("STOP");
+    QString state = m_latest && m_latest->fault ? tr("FAULT")
+        : m_latest && m_latest->halt             ? tr("HALT")
+        : m_running                              ? tr("RUN")
+                                                 : tr("STOP");
     QString text = tr("ONLINE %1 | cycle %2 | t = %3 s | %4 ms, %5")
                        .arg(state)
                        .arg(m_latest ? m_latest->cycle : 0)
@@ -502,8 +517,9 @@ void OnlineController::updateStatus()
     if (m_latest && m_latest->modelRevision != m_projectModel.revision())
         text += tr(" | changed since login");
     m_statusLabel->setText(text);
-    m_statusLabel->setStyleSheet(m_latest && m_latest->fault ? QStringLiteral("color: #b00000; font-weight: bold;")
-                                                             : QStringLiteral("color: #0b4fa0; font-weight: bold;"));
+    m_statusLabel->setStyleSheet(m_latest && m_latest->fault  ? QStringLiteral("color: #b00000; font-weight: bold;")
+                                     : m_latest && m_latest->halt ? QStringLiteral("color: #8a6d00; font-weight: bold;")
+                                                                  : QStringLiteral("color: #0b4fa0; font-weight: bold;"));
 }
 
 } // namespace iec::app

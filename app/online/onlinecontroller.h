@@ -40,7 +40,7 @@ public:
     struct Actions {
         QAction *login = nullptr;       // Login and Run (F5)
         QAction *stop = nullptr;        // Stop (Shift+F5)
-        QAction *singleCycle = nullptr; // Single Cycle (F8)
+        QAction *singleCycle = nullptr; // Single Cycle (Ctrl+F5)
     };
 
     OnlineController(model::ProjectModel &projectModel, DocumentArea &documents, MessagesPane &messages,
@@ -83,6 +83,10 @@ public Q_SLOTS:
     void setCycleTime(std::int64_t cycleNs);
     void setSpeed(iec::app::RunSpeed speed);
     void setBudget(std::uint64_t backwardJumps);
+    // Debugging: the breakpoints the program halts at (sent again at every login), and going on
+    // from a halt; a step logs in when needed and halts at the next line run.
+    void setBreakpoints(const std::vector<interp::Breakpoint> &breakpoints);
+    void resume(interp::ResumeKind kind);
 
 Q_SIGNALS:
     void onlineChanged(bool online);

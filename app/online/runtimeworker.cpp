@@ -51,6 +51,7 @@ void RuntimeWorker::rebuildRuntime(bool keepRetain)
             m_runtime->force(forced.name, forced.literal);
     }
     m_runtime->vm().budgetPerRun = m_budget;
+    m_runtime->setBreakpoints(m_breakpoints);
     m_pendingWrites.clear();
     resolveWatch(); // a rebuilt runtime is a new symbol owner
 }
@@ -233,22 +234,53 @@ bool RuntimeWorker::stepOnce()
 {
     if (m_runtime->fault())
         return false; // stopped until a reset; the fault was reported when it happened
+    applyPendingWrites();
+    return checkCycleEnd(m_runtime->runCycle());
+}
+
+// Writes wait for the start of a cycle: a halted program goes on without them.
+void RuntimeWorker::applyPendingWrites()
+{
+    if (m_runtime->isHalted())
+        return;
     for (const auto &[name, literal] : m_pendingWrites) {
         if (std::optional<QString> problem = m_runtime->write(name, literal))
             Q_EMIT commandFailed(tr("%1: %2").arg(name, *problem));
     }
     m_pendingWrites.clear();
-    if (m_runtime->runCycle())
+}
+
+// After a cycle ran (or went on from a halt): a halt or a fault ends Run.
+bool RuntimeWorker::checkCycleEnd(bool finished)
+{
+    if (finished)
         return true;
-    if (m_runtime->fault()) {
-        if (m_running) {
-            m_running = false;
-            m_tick->stop();
-            Q_EMIT stopped();
-        }
-        Q_EMIT faulted(*m_runtime->fault());
+    if (m_running) {
+        m_running = false;
+        m_cyclesLeft = 0;
+        m_tick->stop();
+        Q_EMIT stopped();
     }
+    if (m_runtime->fault())
+        Q_EMIT faulted(*m_runtime->fault());
     return false;
+}
+
+void RuntimeWorker::setBreakpoints(const std::vector<interp::Breakpoint> &breakpoints)
+{
+    m_breakpoints = breakpoints;
+    m_runtime->setBreakpoints(breakpoints);
+}
+
+void RuntimeWorker::resume(interp::ResumeKind kind)
+{
+    if (m_running)
+        finishRun();
+    if (m_runtime->fault())
+        return;
+    applyPendingWrites();
+    checkCycleEnd(m_runtime->resume(kind));
+    publish();
 }
 
 void RuntimeWorker::runSlice()
@@ -297,6 +329,7 @@ void RuntimeWorker::publish()
     snapshot->cycleNs = m_runtime->cycleNs();
     snapshot->running = m_running;
     snapshot->fault = m_runtime->fault();
+    snapshot->halt = m_runtime->halt();
     snapshot->values.reserve(qsizetype(m_watched.size()));
     for (const Watched &watched : m_watched) {
         if (watched.ref)

@@ -72,6 +72,10 @@ public:
     // The instruction budget per task run (an endless loop faults when it is used up).
     void setBudget(std::uint64_t backwardJumps);
     void publish();
+    // Debugging: the breakpoints (kept across resets), and going on from a halt: Continue, or a
+    // step (which, when not halted, starts a cycle and halts at its first line).
+    void setBreakpoints(const std::vector<interp::Breakpoint> &breakpoints);
+    void resume(interp::ResumeKind kind);
 
     [[nodiscard]] bool isRunning() const { return m_running; }
     [[nodiscard]] const interp::Runtime &runtime() const { return *m_runtime; }
@@ -87,7 +91,9 @@ Q_SIGNALS:
 
 private:
     void runSlice();
-    bool stepOnce(); // false: a fault stopped the program
+    bool stepOnce(); // false: a fault stopped the program, or it halted
+    void applyPendingWrites();
+    bool checkCycleEnd(bool finished);
     void reset(bool keepRetain); // stops a run, restarts the program, publishes
     void rebuildRuntime(bool keepRetain);
     void resolveWatch();
@@ -116,6 +122,7 @@ private:
     };
     std::vector<Forced> m_forced;
     std::vector<std::pair<QString, QString>> m_pendingWrites;
+    std::vector<interp::Breakpoint> m_breakpoints;
 
     bool m_running = false;
     int m_cyclesLeft = 0; // 0: unbounded

@@ -5,6 +5,10 @@
 #include <QString>
 #include <QStringList>
 
+#include <functional>
+#include <optional>
+#include <vector>
+
 namespace iec::editors {
 
 // An editor that can show the running program (DESIGN.md: an overlay restyles items from the
@@ -27,6 +31,35 @@ public:
     // nullptr leaves online mode: the editor drops every overlay and becomes editable again.
     // While online the editor refuses edits with a clear message.
     virtual void setOnlineSnapshot(const interp::RuntimeSnapshot *snapshot) = 0;
+
+    // Debugging. A place in this body a breakpoint can be on: a line of a text body, or the
+    // element (localId) of a graphical one.
+    struct Place {
+        int line = 0;
+        qint64 localId = -1;
+        bool operator==(const Place &) const = default;
+    };
+    // Where the cursor is, for Toggle Breakpoint (F9); nullopt where no breakpoint can be.
+    virtual std::optional<Place> breakpointPlace() const { return std::nullopt; }
+    // The breakpoints of this body, shown offline and online, and the place the program is
+    // halted at when it is in this body.
+    virtual void setBreakpointMarks(const std::vector<Place> &breakpoints, std::optional<Place> halted)
+    {
+        (void)breakpoints;
+        (void)halted;
+    }
+    // Called when the user toggles a breakpoint in the editor itself (a click in the margin).
+    void setBreakpointToggle(std::function<void(const Place &)> toggle) { m_breakpointToggle = std::move(toggle); }
+
+protected:
+    void requestBreakpointToggle(const Place &place) const
+    {
+        if (m_breakpointToggle)
+            m_breakpointToggle(place);
+    }
+
+private:
+    std::function<void(const Place &)> m_breakpointToggle;
 };
 
 } // namespace iec::editors

@@ -87,6 +87,13 @@ public:
     [[nodiscard]] const std::vector<QList<OnlineChip>> &onlineChips() const { return m_onlineChips; }
     [[nodiscard]] static QString onlineEditRefusal();
 
+    // Debugging: red dots in the margin on breakpoint lines, the line the program is halted at
+    // in yellow (1-based lines; 0: none). A click in the margin's left column asks for a toggle.
+    void setBreakpointLines(const QList<int> &lines);
+    [[nodiscard]] const QList<int> &breakpointLines() const { return m_breakpointLines; }
+    void setHaltedLine(int line);
+    [[nodiscard]] int haltedLine() const { return m_haltedLine; }
+
     [[nodiscard]] int lineNumberAreaWidth() const;
     void paintLineNumberArea(QPaintEvent *event);
     void lineNumberAreaClicked(const QPoint &position);
@@ -109,6 +116,8 @@ Q_SIGNALS:
     void editRefused(const QString &message);
     // Context menu "Add to Watch" on a variable (a dotted path as written).
     void addToWatchRequested(const QString &path);
+    // A click in the margin's breakpoint column, on a 1-based line.
+    void breakpointToggleRequested(int line);
 
 protected:
     void keyPressEvent(QKeyEvent *event) override;
@@ -164,6 +173,8 @@ private:
     void paintOnlineChips(const QPaintEvent *event);
     bool m_online = false;
     std::vector<QList<OnlineChip>> m_onlineChips;
+    QList<int> m_breakpointLines;
+    int m_haltedLine = 0;
 };
 
 } // namespace iec::editors

@@ -23,6 +23,8 @@ constexpr int kMarkColumnWidth = 10;
 constexpr int kBracketWindowLines = 150; // lines searched each way for a matching bracket
 
 const QColor kCurrentLine(0xe8, 0xf2, 0xfe);
+const QColor kHaltedLine(0xff, 0xf1, 0x76);  // CODESYS shows where the program is halted in yellow
+const QColor kBreakpoint(0xd3, 0x2f, 0x2f);
 const QColor kGutterBackground(0xf5, 0xf5, 0xf5);
 const QColor kGutterText(0x9a, 0x9a, 0x9a);
 const QColor kGutterCurrentText(0x30, 0x30, 0x30);
@@ -118,6 +120,20 @@ void CodeEditor::paintLineNumberArea(QPaintEvent *event)
             painter.drawText(
                 0, top, numberRight, lineHeight, Qt::AlignRight | Qt::AlignVCenter, QString::number(number + 1));
 
+            if (m_breakpointLines.contains(number + 1)) {
+                painter.setPen(QPen(Qt::white, 1));
+                painter.setBrush(kBreakpoint);
+                const double r = std::min(kMarkColumnWidth / 2.0, lineHeight / 2.0 - 1);
+                painter.drawEllipse(QPointF(kMarkColumnWidth / 2.0 + 1, top + lineHeight / 2.0), r, r);
+            }
+            if (number + 1 == m_haltedLine) {
+                // An arrow into the line, as debuggers show the next statement.
+                const double y = top + lineHeight / 2.0;
+                const QPointF arrow[] = {{1, y - 4}, {kMarkColumnWidth - 1.0, y}, {1, y + 4}};
+                painter.setPen(QPen(QColor(0x80, 0x60, 0x00), 1));
+                painter.setBrush(QColor(0xff, 0xd6, 0x00));
+                painter.drawPolygon(arrow, 3);
+            }
             if (const auto mark = marks.constFind(number); mark != marks.constEnd()) {
                 painter.setPen(Qt::NoPen);
                 painter.setBrush(severityColor(*mark));
@@ -144,10 +160,14 @@ void CodeEditor::paintLineNumberArea(QPaintEvent *event)
 
 void CodeEditor::lineNumberAreaClicked(const QPoint &position)
 {
-    if (position.x() < m_lineNumberArea->width() - kFoldColumnWidth - 2)
-        return;
     const QTextBlock block = cursorForPosition(QPoint(0, position.y())).block();
     if (!block.isValid())
+        return;
+    if (position.x() <= kMarkColumnWidth + 2) {
+        Q_EMIT breakpointToggleRequested(block.blockNumber() + 1);
+        return;
+    }
+    if (position.x() < m_lineNumberArea->width() - kFoldColumnWidth - 2)
         return;
     for (const FoldRange &range : std::as_const(m_foldRanges)) {
         if (range.firstLine == block.blockNumber()) {
@@ -190,6 +210,15 @@ void CodeEditor::updateExtraSelections()
         line.cursor = textCursor();
         line.cursor.clearSelection();
         selections.append(line);
+    }
+    if (m_haltedLine > 0) {
+        if (const QTextBlock block = document()->findBlockByNumber(m_haltedLine - 1); block.isValid()) {
+            QTextEdit::ExtraSelection halted;
+            halted.format.setBackground(kHaltedLine);
+            halted.format.setProperty(QTextFormat::FullWidthSelection, true);
+            halted.cursor = QTextCursor(block);
+            selections.append(halted);
+        }
     }
     for (const PlacedDiagnostic &placed : std::as_const(m_diagnostics)) {
         QTextEdit::ExtraSelection underline;
@@ -531,6 +560,26 @@ void CodeEditor::paintOnlineChips(const QPaintEvent *event)
         const QRectF lineRect(geometry.left(), geometry.top(), geometry.width(), fontMetrics().height());
         editors::paintOnlineChips(painter, lineRect, x, m_onlineChips[line], fontMetrics());
     }
+}
+
+
+void CodeEditor::setBreakpointLines(const QList<int> &lines)
+{
+    if (lines == m_breakpointLines)
+        return;
+    m_breakpointLines = lines;
+    m_lineNumberArea->update();
+}
+
+void CodeEditor::setHaltedLine(int line)
+{
+    if (line == m_haltedLine)
+        return;
+    m_haltedLine = line;
+    if (line > 0)
+        goToLine(line);
+    updateExtraSelections();
+    m_lineNumberArea->update();
 }
 
 } // namespace iec::editors

@@ -25,6 +25,7 @@ TextEditorWidget::TextEditorWidget(TextLanguage language, QWidget *parent)
     m_onlineBanner->setWordWrap(true);
     m_onlineBanner->hide();
     layout->addWidget(m_onlineBanner);
+    connect(m_editor, &CodeEditor::breakpointToggleRequested, this, [this](int line) { requestBreakpointToggle({line, -1}); });
     connect(m_editor, &CodeEditor::editRefused, this, [this](const QString &message) {
         m_refusalShown.start();
         showBanner(message, true);
@@ -130,6 +131,21 @@ void TextEditorWidget::showBanner(const QString &text, bool warning)
     m_onlineBanner->setStyleSheet(warning ? QStringLiteral("background: #fde2c4; color: #6b3000;")
                                           : QStringLiteral("background: #d7e6fb; color: #12335c;"));
     m_onlineBanner->show();
+}
+
+std::optional<OnlineView::Place> TextEditorWidget::breakpointPlace() const
+{
+    return Place{m_editor->textCursor().blockNumber() + 1, -1};
+}
+
+void TextEditorWidget::setBreakpointMarks(const std::vector<Place> &breakpoints, std::optional<Place> halted)
+{
+    QList<int> lines;
+    for (const Place &place : breakpoints)
+        if (place.line > 0)
+            lines.append(place.line);
+    m_editor->setBreakpointLines(lines);
+    m_editor->setHaltedLine(halted ? halted->line : 0);
 }
 
 void TextEditorWidget::setOnlineSnapshot(const interp::RuntimeSnapshot *snapshot)

@@ -41,6 +41,8 @@ public:
     QString onlineInstance() const override;
     QStringList onlineNames() const override;
     void setOnlineSnapshot(const interp::RuntimeSnapshot *snapshot) override;
+    std::optional<Place> breakpointPlace() const override;
+    void setBreakpointMarks(const std::vector<Place> &breakpoints, std::optional<Place> halted) override;
     [[nodiscard]] QLabel *onlineBanner() const { return m_onlineBanner; }
 
 Q_SIGNALS:

@@ -13,11 +13,6 @@ namespace iec::interp {
 
 namespace {
 
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("iec::interp::Condition", text);
-}
-
 // A value while evaluating: Boolean, a number (durations and dates in nanoseconds), or text
 // (strings, enumeration values).
 using Value = std::variant<bool, double, QString>;
@@ -66,7 +61,7 @@ public:
     Value eval(const ast::Expr &e, int depth = 0)
     {
         if (depth > 200)
-            throw Failed{tr("The condition is nested too deeply.")};
+            throw Failed{QCoreApplication::translate("iec::interp::Condition", "The condition is nested too deeply.")};
         switch (e.kind) {
         case ast::ExprKind::Literal: return valueOfLiteral(e.text);
         case ast::ExprKind::Name:
@@ -76,7 +71,7 @@ public:
         case ast::ExprKind::DirectAddress: return read(path(e, depth));
         case ast::ExprKind::Unary: return unary(e.text.toUpper(), eval(e.operands.at(0), depth + 1));
         case ast::ExprKind::Binary: return binary(e.text.toUpper(), eval(e.operands.at(0), depth + 1), eval(e.operands.at(1), depth + 1));
-        default: throw Failed{tr("A condition can only read variables and compare them; it cannot call anything.")};
+        default: throw Failed{QCoreApplication::translate("iec::interp::Condition", "A condition can only read variables and compare them; it cannot call anything.")};
         }
     }
 
@@ -94,7 +89,7 @@ private:
                 indices << QString::number(std::llround(number(eval(e.operands[i], depth + 1))));
             return path(e.operands.at(0), depth + 1) + QLatin1Char('[') + indices.join(QLatin1Char(',')) + QLatin1Char(']');
         }
-        default: throw Failed{tr("A condition can only read variables and compare them; it cannot call anything.")};
+        default: throw Failed{QCoreApplication::translate("iec::interp::Condition", "A condition can only read variables and compare them; it cannot call anything.")};
         }
     }
 
@@ -106,7 +101,7 @@ private:
         if (!ref)
             ref = resolveSymbol(m_scope.module, name);
         if (!ref)
-            throw Failed{tr("There is no variable called %1 here.").arg(name)};
+            throw Failed{QCoreApplication::translate("iec::interp::Condition", "There is no variable called %1 here.").arg(name)};
         const int area = ref->imageArea == 'I' ? 0 : ref->imageArea == 'Q' ? 1 : 2;
         return valueOfLiteral(formatValue(*ref, m_scope.memory, m_scope.images[size_t(area)]));
     }
@@ -117,13 +112,13 @@ private:
             return *d;
         if (const bool *b = std::get_if<bool>(&v))
             return *b ? 1 : 0;
-        throw Failed{tr("Text cannot be calculated with.")};
+        throw Failed{QCoreApplication::translate("iec::interp::Condition", "Text cannot be calculated with.")};
     }
     static bool boolean(const Value &v)
     {
         if (const bool *b = std::get_if<bool>(&v))
             return *b;
-        throw Failed{tr("AND, OR, XOR and NOT need TRUE or FALSE here.")};
+        throw Failed{QCoreApplication::translate("iec::interp::Condition", "AND, OR, XOR and NOT need TRUE or FALSE here.")};
     }
 
     static Value unary(const QString &op, const Value &v)
@@ -174,10 +169,10 @@ private:
         if (op == QLatin1String("**")) return std::pow(x, y);
         if (op == QLatin1String("/") || op == QLatin1String("MOD")) {
             if (y == 0)
-                throw Failed{tr("The condition divides by zero.")};
+                throw Failed{QCoreApplication::translate("iec::interp::Condition", "The condition divides by zero.")};
             return op == QLatin1String("/") ? x / y : std::fmod(x, y);
         }
-        throw Failed{tr("The operator %1 cannot be used in a condition.").arg(op)};
+        throw Failed{QCoreApplication::translate("iec::interp::Condition", "The operator %1 cannot be used in a condition.").arg(op)};
     }
 
     const ConditionScope &m_scope;
@@ -190,7 +185,7 @@ std::optional<ast::Expr> parseCondition(const QString &text, QString *error)
     std::vector<ast::Stmt> statements = parseStBody(QStringLiteral("__condition := (%1);").arg(text), QString(), diagnostics);
     if (diagnostics.hasErrors() || statements.size() != 1 || statements[0].kind != ast::StmtKind::Assign) {
         if (error)
-            *error = tr("This is not an expression: %1").arg(text);
+            *error = QCoreApplication::translate("iec::interp::Condition", "This is not an expression: %1").arg(text);
         return std::nullopt;
     }
     return std::move(statements[0].value);
@@ -209,7 +204,7 @@ ConditionResult evaluateCondition(const QString &text, const ConditionScope &sco
         if (const bool *b = std::get_if<bool>(&value))
             result.value = *b;
         else
-            result.error = tr("The condition must be TRUE or FALSE, not a number or a text.");
+            result.error = QCoreApplication::translate("iec::interp::Condition", "The condition must be TRUE or FALSE, not a number or a text.");
     } catch (const Failed &failed) {
         result.error = failed.message;
     }

@@ -23,6 +23,7 @@ struct RuntimeSnapshot {
     std::int64_t cycleNs = 0;  // the cycle time the runtime runs with
     bool running = false;      // cycles run on their own (Run), not single-stepped
     std::optional<RuntimeFault> fault;
+    std::optional<HaltInfo> halt;   // halted mid-cycle by a breakpoint or a step
     QHash<QString, QString> values; // name as requested ("Main.Count") -> value
     QSet<QString> forced;           // names held by a force, in upper case (IEC names ignore case)
     std::vector<sfc::ChartState> charts; // every chart an open editor asked for

@@ -1,0 +1,84 @@
+#pragma once
+
+#include "app/documentarea.h"
+#include "editors/common/onlineview.h"
+#include "interpreter/runtime/debugging.h"
+#include "model/ids.h"
+
+#include <QObject>
+
+#include <optional>
+#include <vector>
+
+class QAction;
+class QMenu;
+class QStatusBar;
+class QToolBar;
+
+namespace iec::model {
+class ProjectModel;
+}
+
+namespace iec::app {
+
+class OnlineController;
+
+// Breakpoints and stepping in the window (docs/debugging.md): Toggle Breakpoint (F9) on the
+// place at the cursor of the current editor, or a click in a text editor's margin; Step Over
+// (F10), Step Into (F8), Step Out (Shift+F10). Breakpoints belong to bodies (ids, so a rename
+// keeps them) and are shown in every open editor, offline and online. When the program halts,
+// the body it halted in is opened and the place shown, and the status bar says where.
+class DebugController : public QObject
+{
+    Q_OBJECT
+
+public:
+    struct StoredBreakpoint {
+        model::BodyRef body;
+        editors::OnlineView::Place place;
+        interp::Breakpoint settings; // hit rule, condition, enabled; `at` is filled in when sent
+    };
+
+    DebugController(model::ProjectModel &projectModel, DocumentArea &documents, OnlineController &online,
+                    QStatusBar &statusBar, QObject *parent = nullptr);
+
+    void addTo(QMenu *menu, QToolBar *toolBar);
+    void retranslate();
+
+    [[nodiscard]] const std::vector<StoredBreakpoint> &breakpoints() const { return m_breakpoints; }
+    [[nodiscard]] QAction *toggleBreakpointAction() const { return m_toggle; }
+    [[nodiscard]] QAction *stepOverAction() const { return m_stepOver; }
+    [[nodiscard]] QAction *stepIntoAction() const { return m_stepInto; }
+    [[nodiscard]] QAction *stepOutAction() const { return m_stepOut; }
+
+public Q_SLOTS:
+    // F9: on the place at the cursor of the current editor.
+    void toggleBreakpointAtCursor();
+    void toggleBreakpoint(const model::BodyRef &body, const editors::OnlineView::Place &place);
+    void removeAllBreakpoints();
+
+Q_SIGNALS:
+    void breakpointsChanged();
+
+private:
+    void sendBreakpoints();
+    void refreshMarks();
+    void showHalt(const interp::RuntimeSnapshot &snapshot);
+    void updateActions();
+    [[nodiscard]] QString ownerName(const model::BodyRef &body) const;
+    [[nodiscard]] std::optional<model::BodyRef> bodyOfOwner(const QString &owner) const;
+
+    model::ProjectModel &m_projectModel;
+    DocumentArea &m_documents;
+    OnlineController &m_online;
+    QStatusBar &m_statusBar;
+    std::vector<StoredBreakpoint> m_breakpoints;
+    std::optional<interp::HaltInfo> m_halt;
+    QAction *m_toggle = nullptr;
+    QAction *m_removeAll = nullptr;
+    QAction *m_stepOver = nullptr;
+    QAction *m_stepInto = nullptr;
+    QAction *m_stepOut = nullptr;
+};
+
+} // namespace iec::app
