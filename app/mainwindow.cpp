@@ -498,7 +498,7 @@ bool MainWindow::recover(const QString &recoveryFile, QString *error)
 bool MainWindow::saveProject(const QString &path, QString *error)
 {
     m_documents->flushEdits();
-    if (!model::plcopen::saveProjectFile(m_projectModel->project(), path, error))
+    if (!model::plcopen::saveProjectFile(m_debug->projectToSave(), path, error))
         return false;
     m_recovery->discardCurrent();
     m_undoStacks->setClean();

@@ -254,6 +254,49 @@
         </message>
     </context>
     <context>
+        <name>iec::app::BreakpointDialog</name>
+        <message>
+            <source>Enabled</source>
+            <translation>Aktiviert</translation>
+        </message>
+        <message>
+            <source>Breakpoint Properties</source>
+            <translation>Haltepunkt-Eigenschaften</translation>
+        </message>
+        <message>
+            <source>Break always</source>
+            <translation>Immer anhalten</translation>
+        </message>
+        <message>
+            <source>Break when the hit count is equal to</source>
+            <translation>Anhalten, wenn die Trefferzahl gleich ist</translation>
+        </message>
+        <message>
+            <source>Break when the hit count is a multiple of</source>
+            <translation>Anhalten, wenn die Trefferzahl ein Vielfaches ist von</translation>
+        </message>
+        <message>
+            <source>Break when the hit count is greater than or equal to</source>
+            <translation>Anhalten, wenn die Trefferzahl größer oder gleich ist</translation>
+        </message>
+        <message>
+            <source>for example  Count = 5 AND NOT Alarm</source>
+            <translation>zum Beispiel  Count = 5 AND NOT Alarm</translation>
+        </message>
+        <message>
+            <source>Place:</source>
+            <translation>Stelle:</translation>
+        </message>
+        <message>
+            <source>Hit count:</source>
+            <translation>Trefferzahl:</translation>
+        </message>
+        <message>
+            <source>Break when TRUE:</source>
+            <translation>Anhalten, wenn TRUE:</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::app::BuildController</name>
         <message>
             <source>%1 Hint: %2</source>
@@ -283,10 +326,6 @@
             <translation>Rücksprung (&amp;U)</translation>
         </message>
         <message>
-            <source>A breakpoint goes on a line of an ST or IL body.</source>
-            <translation>Ein Haltepunkt gehört auf eine Zeile eines ST- oder AWL-Rumpfs.</translation>
-        </message>
-        <message>
             <source>Breakpoints in transitions are not supported; put one on the step before it.</source>
             <translation>Haltepunkte in Transitionen gibt es nicht; setzen Sie einen auf den Schritt davor.</translation>
         </message>
@@ -305,6 +344,22 @@
         <message>
             <source>The breakpoint's condition could not be checked: %1</source>
             <translation>Die Bedingung des Haltepunkts ließ sich nicht prüfen: %1</translation>
+        </message>
+        <message>
+            <source>Breakpoint &amp;Properties...</source>
+            <translation>Haltepunkt-&amp;Eigenschaften...</translation>
+        </message>
+        <message>
+            <source>%1, element %2</source>
+            <translation>%1, Element %2</translation>
+        </message>
+        <message>
+            <source>%1, line %2</source>
+            <translation>%1, Zeile %2</translation>
+        </message>
+        <message>
+            <source>A breakpoint goes on a line of an ST or IL body, a network of an LD or FBD body, or a step or transition of a chart: put the cursor there first.</source>
+            <translation>Ein Haltepunkt gehört auf eine Zeile eines ST- oder AWL-Rumpfs, ein Netzwerk eines KOP- oder FUP-Rumpfs oder einen Schritt oder eine Transition eines Ablaufplans: setzen Sie den Cursor zuerst dorthin.</translation>
         </message>
     </context>
     <context>
@@ -3217,6 +3272,10 @@ Automatisch gespeichert: %2</translation>
             <source>&amp;Delete</source>
             <translation>&amp;Löschen</translation>
         </message>
+        <message>
+            <source>network %1</source>
+            <translation>Netzwerk %1</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::fbd::FbdEdits</name>
@@ -3522,6 +3581,10 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>S/R</source>
             <translation>S/R</translation>
+        </message>
+        <message>
+            <source>network %1</source>
+            <translation>Netzwerk %1</translation>
         </message>
     </context>
     <context>
@@ -3911,6 +3974,26 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>Leave</source>
             <translation>Verlassen</translation>
+        </message>
+        <message>
+            <source>step %1</source>
+            <translation>Schritt %1</translation>
+        </message>
+        <message>
+            <source>a transition</source>
+            <translation>eine Transition</translation>
+        </message>
+        <message>
+            <source>the transition after %1</source>
+            <translation>die Transition nach %1</translation>
+        </message>
+        <message>
+            <source>an action block</source>
+            <translation>ein Aktionsblock</translation>
+        </message>
+        <message>
+            <source>the actions of %1</source>
+            <translation>die Aktionen von %1</translation>
         </message>
     </context>
     <context>

@@ -253,6 +253,49 @@
         </message>
     </context>
     <context>
+        <name>iec::app::BreakpointDialog</name>
+        <message>
+            <source>Enabled</source>
+            <translation>启用</translation>
+        </message>
+        <message>
+            <source>Breakpoint Properties</source>
+            <translation>断点属性</translation>
+        </message>
+        <message>
+            <source>Break always</source>
+            <translation>总是暂停</translation>
+        </message>
+        <message>
+            <source>Break when the hit count is equal to</source>
+            <translation>命中次数等于时暂停</translation>
+        </message>
+        <message>
+            <source>Break when the hit count is a multiple of</source>
+            <translation>命中次数为下值的倍数时暂停</translation>
+        </message>
+        <message>
+            <source>Break when the hit count is greater than or equal to</source>
+            <translation>命中次数大于或等于时暂停</translation>
+        </message>
+        <message>
+            <source>for example  Count = 5 AND NOT Alarm</source>
+            <translation>例如  Count = 5 AND NOT Alarm</translation>
+        </message>
+        <message>
+            <source>Place:</source>
+            <translation>位置：</translation>
+        </message>
+        <message>
+            <source>Hit count:</source>
+            <translation>命中次数：</translation>
+        </message>
+        <message>
+            <source>Break when TRUE:</source>
+            <translation>为 TRUE 时暂停：</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::app::BuildController</name>
         <message>
             <source>%1 Hint: %2</source>
@@ -282,10 +325,6 @@
             <translation>单步跳出(&amp;U)</translation>
         </message>
         <message>
-            <source>A breakpoint goes on a line of an ST or IL body.</source>
-            <translation>断点只能设在 ST 或 IL 程序体的某一行上。</translation>
-        </message>
-        <message>
             <source>Breakpoints in transitions are not supported; put one on the step before it.</source>
             <translation>转换中不支持断点；请把断点设在它前面的步上。</translation>
         </message>
@@ -304,6 +343,22 @@
         <message>
             <source>The breakpoint's condition could not be checked: %1</source>
             <translation>无法检查断点的条件：%1</translation>
+        </message>
+        <message>
+            <source>Breakpoint &amp;Properties...</source>
+            <translation>断点属性(&amp;P)...</translation>
+        </message>
+        <message>
+            <source>%1, element %2</source>
+            <translation>%1，元素 %2</translation>
+        </message>
+        <message>
+            <source>%1, line %2</source>
+            <translation>%1，第 %2 行</translation>
+        </message>
+        <message>
+            <source>A breakpoint goes on a line of an ST or IL body, a network of an LD or FBD body, or a step or transition of a chart: put the cursor there first.</source>
+            <translation>断点可设在 ST 或 IL 程序体的一行、LD 或 FBD 程序体的一个网络，或顺序功能图的一个步或转换上：请先把光标放到那里。</translation>
         </message>
     </context>
     <context>
@@ -3212,6 +3267,10 @@ Autosaved: %2</source>
             <source>&amp;Delete</source>
             <translation>删除(&amp;D)</translation>
         </message>
+        <message>
+            <source>network %1</source>
+            <translation>网络 %1</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::fbd::FbdEdits</name>
@@ -3517,6 +3576,10 @@ Autosaved: %2</source>
         <message>
             <source>S/R</source>
             <translation>S/R</translation>
+        </message>
+        <message>
+            <source>network %1</source>
+            <translation>网络 %1</translation>
         </message>
     </context>
     <context>
@@ -3906,6 +3969,26 @@ Autosaved: %2</source>
         <message>
             <source>Leave</source>
             <translation>退出宏</translation>
+        </message>
+        <message>
+            <source>step %1</source>
+            <translation>步 %1</translation>
+        </message>
+        <message>
+            <source>a transition</source>
+            <translation>一个转换</translation>
+        </message>
+        <message>
+            <source>the transition after %1</source>
+            <translation>%1 之后的转换</translation>
+        </message>
+        <message>
+            <source>an action block</source>
+            <translation>一个动作块</translation>
+        </message>
+        <message>
+            <source>the actions of %1</source>
+            <translation>%1 的动作</translation>
         </message>
     </context>
     <context>

@@ -1,7 +1,9 @@
 #include "app/online/debugcontroller.h"
 
+#include "app/online/breakpointdialog.h"
 #include "app/online/onlinecontroller.h"
 #include "model/projectmodel.h"
+#include "model/savedbreakpoints.h"
 
 #include <QAction>
 #include <QMenu>
@@ -21,6 +23,8 @@ DebugController::DebugController(model::ProjectModel &projectModel, DocumentArea
     m_toggle = new QAction(this);
     m_toggle->setShortcut(QKeySequence(Qt::Key_F9));
     connect(m_toggle, &QAction::triggered, this, &DebugController::toggleBreakpointAtCursor);
+    m_properties = new QAction(this);
+    connect(m_properties, &QAction::triggered, this, &DebugController::editBreakpointAtCursor);
     m_removeAll = new QAction(this);
     connect(m_removeAll, &QAction::triggered, this, &DebugController::removeAllBreakpoints);
     m_stepOver = new QAction(this);
@@ -45,11 +49,8 @@ DebugController::DebugController(model::ProjectModel &projectModel, DocumentArea
             [this](std::shared_ptr<const interp::RuntimeSnapshot> snapshot) { showHalt(*snapshot); });
     // Editors opened later show the marks too.
     connect(&m_documents, &QTabWidget::currentChanged, this, &DebugController::refreshMarks);
-    // A body that is gone takes its breakpoints with it.
-    connect(&m_projectModel, &model::ProjectModel::projectReset, this, [this] {
-        m_breakpoints.clear();
-        Q_EMIT breakpointsChanged();
-    });
+    // Another project: its own breakpoints, as it saved them.
+    connect(&m_projectModel, &model::ProjectModel::projectReset, this, &DebugController::loadFromProject);
     retranslate();
     updateActions();
 }
@@ -58,6 +59,7 @@ void DebugController::addTo(QMenu *menu, QToolBar *toolBar)
 {
     menu->addSeparator();
     menu->addAction(m_toggle);
+    menu->addAction(m_properties);
     menu->addAction(m_removeAll);
     menu->addAction(m_stepOver);
     menu->addAction(m_stepInto);
@@ -72,6 +74,7 @@ void DebugController::addTo(QMenu *menu, QToolBar *toolBar)
 void DebugController::retranslate()
 {
     m_toggle->setText(tr("Toggle &Breakpoint"));
+    m_properties->setText(tr("Breakpoint &Properties..."));
     m_removeAll->setText(tr("Remove All Breakpoints"));
     m_stepOver->setText(tr("Step &Over"));
     m_stepInto->setText(tr("Step &Into"));
@@ -88,20 +91,58 @@ void DebugController::updateActions()
     m_removeAll->setEnabled(!m_breakpoints.empty());
 }
 
-void DebugController::toggleBreakpointAtCursor()
+std::optional<std::pair<model::BodyRef, editors::OnlineView::Place>> DebugController::placeAtCursor() const
 {
     const std::optional<model::BodyRef> body = m_documents.currentBody();
     if (!body)
+        return std::nullopt;
+    for (const DocumentArea::OnlineDocument &document : m_documents.onlineViews())
+        if (document.body == *body)
+            if (const std::optional<editors::OnlineView::Place> place = document.view->breakpointPlace())
+                return std::pair{*body, *place};
+    return std::nullopt;
+}
+
+void DebugController::editBreakpointAtCursor()
+{
+    const auto at = placeAtCursor();
+    if (!at) {
+        toggleBreakpointAtCursor(); // says where a breakpoint can go
         return;
-    for (const DocumentArea::OnlineDocument &document : m_documents.onlineViews()) {
-        if (!(document.body == *body))
-            continue;
-        if (const std::optional<editors::OnlineView::Place> place = document.view->breakpointPlace()) {
-            toggleBreakpoint(*body, *place);
-            return;
-        }
     }
-    m_statusBar.showMessage(tr("A breakpoint goes on a line of an ST or IL body."), 8000);
+    interp::Breakpoint settings;
+    for (const StoredBreakpoint &stored : m_breakpoints)
+        if (stored.body == at->first && stored.place == at->second)
+            settings = stored.settings;
+    const QString place = at->second.localId >= 0 ? tr("%1, element %2").arg(ownerName(at->first)).arg(at->second.localId)
+                                                  : tr("%1, line %2").arg(ownerName(at->first)).arg(at->second.line);
+    BreakpointDialog dialog(place, settings, m_documents.window());
+    if (dialog.exec() == QDialog::Accepted)
+        setBreakpointSettings(at->first, at->second, dialog.settings());
+}
+
+void DebugController::setBreakpointSettings(const model::BodyRef &body, const editors::OnlineView::Place &place,
+                                            const interp::Breakpoint &settings)
+{
+    auto stored = std::ranges::find_if(m_breakpoints, [&](const StoredBreakpoint &b) { return b.body == body && b.place == place; });
+    if (stored == m_breakpoints.end())
+        stored = m_breakpoints.insert(m_breakpoints.end(), {body, place, {}});
+    stored->settings = settings;
+    sendBreakpoints();
+    refreshMarks();
+    updateActions();
+    Q_EMIT breakpointsChanged();
+}
+
+void DebugController::toggleBreakpointAtCursor()
+{
+    if (const auto at = placeAtCursor()) {
+        toggleBreakpoint(at->first, at->second);
+        return;
+    }
+    m_statusBar.showMessage(tr("A breakpoint goes on a line of an ST or IL body, a network of an LD or FBD body, or a step "
+                               "or transition of a chart: put the cursor there first."),
+                            8000);
 }
 
 void DebugController::toggleBreakpoint(const model::BodyRef &body, const editors::OnlineView::Place &place)
@@ -149,6 +190,52 @@ std::optional<model::BodyRef> DebugController::bodyOfOwner(const QString &owner)
     return std::nullopt;
 }
 
+void DebugController::loadFromProject()
+{
+    m_breakpoints.clear();
+    for (const model::SavedBreakpoint &saved : model::savedBreakpoints(m_projectModel.project())) {
+        const QString owner = saved.action.isEmpty() ? saved.pou : saved.pou + QLatin1Char('.') + saved.action;
+        const std::optional<model::BodyRef> body = bodyOfOwner(owner);
+        if (!body)
+            continue;
+        StoredBreakpoint stored{*body, {saved.line, saved.localId, saved.elements}, {}};
+        stored.settings.hitRule = interp::HitRule(saved.hitRule);
+        stored.settings.hitTarget = saved.hitTarget;
+        stored.settings.condition = saved.condition;
+        stored.settings.enabled = saved.enabled;
+        m_breakpoints.push_back(std::move(stored));
+    }
+    m_halt.reset();
+    refreshMarks();
+    updateActions();
+    Q_EMIT breakpointsChanged();
+}
+
+model::Project DebugController::projectToSave() const
+{
+    model::Project project = m_projectModel.project();
+    std::vector<model::SavedBreakpoint> saved;
+    for (const StoredBreakpoint &stored : m_breakpoints) {
+        const model::Pou *pou = project.findPou(stored.body.pou);
+        if (!pou)
+            continue;
+        model::SavedBreakpoint b;
+        b.pou = pou->name;
+        if (stored.body.part == model::BodyRef::Part::Action)
+            b.action = stored.body.name;
+        b.line = stored.place.line;
+        b.localId = stored.place.localId;
+        b.elements = stored.place.elements;
+        b.hitRule = int(stored.settings.hitRule);
+        b.hitTarget = stored.settings.hitTarget;
+        b.condition = stored.settings.condition;
+        b.enabled = stored.settings.enabled;
+        saved.push_back(std::move(b));
+    }
+    model::setSavedBreakpoints(project, saved);
+    return project;
+}
+
 void DebugController::sendBreakpoints()
 {
     if (!m_online.isOnline())
@@ -156,7 +243,7 @@ void DebugController::sendBreakpoints()
     std::vector<interp::Breakpoint> breakpoints;
     for (const StoredBreakpoint &stored : m_breakpoints) {
         interp::Breakpoint b = stored.settings;
-        b.at = {ownerName(stored.body), stored.place.line, stored.place.localId};
+        b.at = {ownerName(stored.body), stored.place.line, stored.place.localId, stored.place.elements};
         breakpoints.push_back(std::move(b));
     }
     m_online.setBreakpoints(breakpoints);
@@ -190,10 +277,14 @@ void DebugController::showHalt(const interp::RuntimeSnapshot &snapshot)
         return;
     if (m_halt) {
         // The body it halted in comes to the front, opened if need be.
-        if (const std::optional<model::BodyRef> body = bodyOfOwner(m_halt->at.pou))
+        QString place = m_halt->at.localId >= 0 ? tr("element %1").arg(m_halt->at.localId) : tr("line %1").arg(m_halt->at.line);
+        if (const std::optional<model::BodyRef> body = bodyOfOwner(m_halt->at.pou)) {
             m_documents.openBody(*body);
-        const QString place = m_halt->at.localId >= 0 ? tr("element %1").arg(m_halt->at.localId)
-                                                      : tr("line %1").arg(m_halt->at.line);
+            for (const DocumentArea::OnlineDocument &document : m_documents.onlineViews())
+                if (document.body == *body && m_halt->at.localId >= 0)
+                    if (const QString name = document.view->placeName(m_halt->at.localId); !name.isEmpty())
+                        place = name;
+        }
         QString message = tr("Halted in %1 at %2 (cycle %3). F5 continues, F10 steps over, F8 steps into, Shift+F10 steps out.")
                               .arg(m_halt->at.pou, place)
                               .arg(m_halt->cycle);

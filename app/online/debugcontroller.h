@@ -4,6 +4,7 @@
 #include "editors/common/onlineview.h"
 #include "interpreter/runtime/debugging.h"
 #include "model/ids.h"
+#include "model/project.h"
 
 #include <QObject>
 
@@ -46,6 +47,9 @@ public:
     void retranslate();
 
     [[nodiscard]] const std::vector<StoredBreakpoint> &breakpoints() const { return m_breakpoints; }
+    // The project as it is to be saved: with the breakpoints in our own addData (the model
+    // itself is not changed; breakpoints are no edit of the program).
+    [[nodiscard]] model::Project projectToSave() const;
     [[nodiscard]] QAction *toggleBreakpointAction() const { return m_toggle; }
     [[nodiscard]] QAction *stepOverAction() const { return m_stepOver; }
     [[nodiscard]] QAction *stepIntoAction() const { return m_stepInto; }
@@ -56,16 +60,23 @@ public Q_SLOTS:
     void toggleBreakpointAtCursor();
     void toggleBreakpoint(const model::BodyRef &body, const editors::OnlineView::Place &place);
     void removeAllBreakpoints();
+    // Breakpoint Properties… for the place at the cursor (a new breakpoint when there is none).
+    void editBreakpointAtCursor();
+    // Sets (or creates) the breakpoint at a place with the given hit rule, condition and state.
+    void setBreakpointSettings(const model::BodyRef &body, const editors::OnlineView::Place &place,
+                               const interp::Breakpoint &settings);
 
 Q_SIGNALS:
     void breakpointsChanged();
 
 private:
+    void loadFromProject();
     void sendBreakpoints();
     void refreshMarks();
     void showHalt(const interp::RuntimeSnapshot &snapshot);
     void updateActions();
     [[nodiscard]] QString ownerName(const model::BodyRef &body) const;
+    [[nodiscard]] std::optional<std::pair<model::BodyRef, editors::OnlineView::Place>> placeAtCursor() const;
     [[nodiscard]] std::optional<model::BodyRef> bodyOfOwner(const QString &owner) const;
 
     model::ProjectModel &m_projectModel;
@@ -76,6 +87,7 @@ private:
     std::optional<interp::HaltInfo> m_halt;
     QAction *m_toggle = nullptr;
     QAction *m_removeAll = nullptr;
+    QAction *m_properties = nullptr;
     QAction *m_stepOver = nullptr;
     QAction *m_stepInto = nullptr;
     QAction *m_stepOut = nullptr;

@@ -159,6 +159,8 @@ public:
     [[nodiscard]] QList<ElementDiagnostic> diagnostics() const { return m_diagnostics; }
 
     // ---- OnlineView
+    std::optional<Place> breakpointPlace() const override;
+    void setBreakpointMarks(const std::vector<Place> &breakpoints, std::optional<Place> halted) override;
     QString onlineInstance() const override { return m_onlineInstance; }
     QStringList onlineNames() const override;
     bool wantsChartState() const override;
@@ -225,6 +227,14 @@ protected:
     virtual void connectWire(quint64 source, const QString &formalParameter, quint64 target, int inputIndex);
     // Texts the subclass set itself (labels), on LanguageChange; the actions are done already.
     virtual void retranslate() { }
+    // Breakpoints: the elements a breakpoint at the cursor stands for, the first naming it (by
+    // default the first selected element; LD and FBD: the elements of the cursor's network).
+    [[nodiscard]] virtual std::vector<quint64> breakpointElementsAtCursor() const;
+    // Where the mark of the place named by `localId` goes, in scene coordinates (by default the
+    // item of that element; LD and FBD: the band of its network). Empty: not shown.
+    [[nodiscard]] virtual QRectF breakpointAnchor(qint64 localId) const;
+    // Draws the marks again (after the scene changed).
+    void refreshBreakpointMarks();
     // After the scene was rebuilt or updated: online styles and diagnostics are applied again by
     // the base first.
     virtual void sceneRefreshed() { }
@@ -262,6 +272,8 @@ private:
     QUndoStack *m_undoStack;
     std::unique_ptr<DiagramPolicy> m_policy;
     std::unique_ptr<OverlayMapper> m_overlay;
+    std::vector<Place> m_breakpointPlaces;
+    std::optional<Place> m_haltedPlace;
     DiagramScene *m_scene = nullptr;
     DiagramView *m_view = nullptr;
     QToolBar *m_toolBar = nullptr;

@@ -132,6 +132,7 @@ void DiagramEditor::onSceneRefreshed()
     applyDiagnostics();
     updateActionStates();
     sceneRefreshed();
+    refreshBreakpointMarks();
 }
 
 } // namespace iec::editors

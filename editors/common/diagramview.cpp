@@ -73,6 +73,38 @@ void DiagramView::drawBackground(QPainter *painter, const QRectF &rect)
     painter->restore();
 }
 
+void DiagramView::setBreakpointMarks(QList<QRectF> breakpoints, QRectF halted)
+{
+    if (breakpoints == m_breakpointMarks && halted == m_haltedMark)
+        return;
+    const bool newHalt = !halted.isEmpty() && halted != m_haltedMark;
+    m_breakpointMarks = std::move(breakpoints);
+    m_haltedMark = halted;
+    if (newHalt)
+        ensureVisible(halted, 40, 40);
+    viewport()->update();
+}
+
+void DiagramView::drawForeground(QPainter *painter, const QRectF &rect)
+{
+    QGraphicsView::drawForeground(painter, rect);
+    if (m_breakpointMarks.isEmpty() && m_haltedMark.isEmpty())
+        return;
+    painter->save();
+    painter->setRenderHint(QPainter::Antialiasing);
+    if (!m_haltedMark.isEmpty() && m_haltedMark.intersects(rect)) {
+        // CODESYS shows where the program is halted in yellow.
+        painter->setPen(QPen(QColor(0xe0, 0xa0, 0x00), 2));
+        painter->setBrush(QColor(0xff, 0xeb, 0x3b, 90));
+        painter->drawRect(m_haltedMark.adjusted(-3, -3, 3, 3));
+    }
+    painter->setPen(QPen(Qt::white, 1.5));
+    painter->setBrush(QColor(0xd3, 0x2f, 0x2f));
+    for (const QRectF &mark : std::as_const(m_breakpointMarks))
+        painter->drawEllipse(QPointF(mark.left() + 3, mark.top() + 3), 6, 6);
+    painter->restore();
+}
+
 void DiagramView::wheelEvent(QWheelEvent *event)
 {
     if (!(event->modifiers() & Qt::ControlModifier)) {

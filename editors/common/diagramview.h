@@ -25,11 +25,19 @@ public:
     void setGridSize(int size);
     [[nodiscard]] int gridSize() const { return m_gridSize; }
 
+    // Debugging marks over the drawing (scene rectangles): a red dot at the top left of each
+    // breakpoint's place, the place the program is halted at tinted yellow (an empty rectangle:
+    // none). Not part of the scene, so exports and prints leave them out.
+    void setBreakpointMarks(QList<QRectF> breakpoints, QRectF halted);
+    [[nodiscard]] const QList<QRectF> &breakpointMarks() const { return m_breakpointMarks; }
+    [[nodiscard]] QRectF haltedMark() const { return m_haltedMark; }
+
 Q_SIGNALS:
     void zoomChanged(double factor);
 
 protected:
     void drawBackground(QPainter *painter, const QRectF &rect) override;
+    void drawForeground(QPainter *painter, const QRectF &rect) override;
     void wheelEvent(QWheelEvent *event) override;
     void mousePressEvent(QMouseEvent *event) override;
     void mouseMoveEvent(QMouseEvent *event) override;
@@ -40,6 +48,8 @@ private:
     bool m_panning = false;
     QPoint m_lastPanPosition;
     int m_gridSize = 0;
+    QList<QRectF> m_breakpointMarks;
+    QRectF m_haltedMark;
 };
 
 } // namespace iec::editors

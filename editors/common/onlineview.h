@@ -36,8 +36,10 @@ public:
     // element (localId) of a graphical one.
     struct Place {
         int line = 0;
-        qint64 localId = -1;
-        bool operator==(const Place &) const = default;
+        qint64 localId = -1;          // graphical: the element that names the place
+        std::vector<qint64> elements; // graphical: every element it stands for (an LD/FBD network's)
+        // Two places are one when they name the same line or element, whatever else they hold.
+        bool operator==(const Place &other) const { return line == other.line && localId == other.localId; }
     };
     // Where the cursor is, for Toggle Breakpoint (F9); nullopt where no breakpoint can be.
     virtual std::optional<Place> breakpointPlace() const { return std::nullopt; }
@@ -47,6 +49,12 @@ public:
     {
         (void)breakpoints;
         (void)halted;
+    }
+    // How the status bar names a place of this body ("network 3"); empty: the app says "element N".
+    virtual QString placeName(qint64 localId) const
+    {
+        (void)localId;
+        return {};
     }
     // Called when the user toggles a breakpoint in the editor itself (a click in the margin).
     void setBreakpointToggle(std::function<void(const Place &)> toggle) { m_breakpointToggle = std::move(toggle); }

@@ -433,4 +433,27 @@ void SfcEditor::chooseJumpTarget(bool withTransition)
         edit(tr("Insert jump"), [&](ChartDocument &d, const auto &s) { return insertJump(d, s, target); });
 }
 
+QString SfcEditor::placeName(qint64 localId) const
+{
+    if (localId < 0)
+        return {};
+    const ChartDocument chart = document();
+    const model::Element *element = chart.element(quint64(localId));
+    if (!element)
+        return {};
+    if (const auto *step = std::get_if<model::Step>(element))
+        return tr("step %1").arg(step->name);
+    // A transition or an action block is named by the step wired into it.
+    QString before;
+    for (const model::ConnectionPointIn *point : model::inputPoints(*element))
+        for (const model::Connection &c : point->connections)
+            if (before.isEmpty())
+                before = chart.stepName(c.refLocalId);
+    if (std::holds_alternative<model::Transition>(*element))
+        return before.isEmpty() ? tr("a transition") : tr("the transition after %1").arg(before);
+    if (std::holds_alternative<model::ActionBlock>(*element))
+        return before.isEmpty() ? tr("an action block") : tr("the actions of %1").arg(before);
+    return {};
+}
+
 } // namespace iec::editors::sfc

@@ -31,6 +31,8 @@ public:
     [[nodiscard]] ChartDocument document() const;
     // The localId of the step with that name on the level shown (0 when none).
     [[nodiscard]] quint64 stepId(const QString &name) const;
+    // "step Fill", "the transition after Fill", "the actions of Fill" for the status bar.
+    QString placeName(qint64 localId) const override;
 
     // The one path of every chart command: `change` edits a copy of the level shown (with the
     // selection at the time of the call); the result is wired, placed and pushed as one undo

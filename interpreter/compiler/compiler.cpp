@@ -62,14 +62,15 @@ std::uint32_t Codegen::instr(std::uint16_t opcode, std::uint32_t a, std::uint32_
 
 void Codegen::markLine(SourceLocation at)
 {
-    if (!m_pou || (at.line == m_lastLine && at.localId == m_lastLocalId))
+    const qint64 place = at.place == SourceLocation::kNoPlace ? -1 : at.place >= 0 ? at.place : at.localId;
+    if (!m_pou || (at.line == m_lastLine && place == m_lastLocalId))
         return;
     m_lastLine = at.line;
-    m_lastLocalId = at.localId;
+    m_lastLocalId = place;
     if (!m_module->lines.empty() && m_module->lines.back().pc == here())
-        m_module->lines.back() = {here(), m_lineOwner, at.line, at.localId};
+        m_module->lines.back() = {here(), m_lineOwner, at.line, place};
     else
-        m_module->lines.push_back({here(), m_lineOwner, at.line, at.localId});
+        m_module->lines.push_back({here(), m_lineOwner, at.line, place});
 }
 
 bool Codegen::lastWrites(std::uint32_t operand) const

@@ -14,6 +14,11 @@ struct SourceLocation {
     int line = 0;
     int column = 0;
     qint64 localId = -1; // -1: none
+    // What the debugger's line table names for graphical code when it is not localId (only the
+    // line table reads it, never a diagnostic): an LD/FBD network (the localId of its first
+    // root), an SFC transition's firing; kNoPlace for code that is no place of its own.
+    qint64 place = -1;
+    static constexpr qint64 kNoPlace = -2;
 };
 
 struct Diagnostic {

@@ -201,6 +201,26 @@ void relocate(ast::Expr &expr, SourceLocation at)
     }
 }
 
+void setPlace(std::vector<ast::Stmt> &statements, qint64 place)
+{
+    std::vector<std::vector<ast::Stmt> *> pending {&statements};
+    while (!pending.empty()) {
+        std::vector<ast::Stmt> *list = pending.back();
+        pending.pop_back();
+        for (ast::Stmt &s : *list) {
+            s.location.place = place;
+            s.value.location.place = place; // REPEAT marks its condition's line
+            pending.push_back(&s.body);
+            for (ast::ConditionalBlock &branch : s.branches) {
+                branch.location.place = place;
+                pending.push_back(&branch.body);
+            }
+            for (ast::CaseBranch &branch : s.cases)
+                pending.push_back(&branch.body);
+        }
+    }
+}
+
 void relocate(std::vector<ast::Stmt> &statements, SourceLocation at)
 {
     for (ast::Stmt &s : statements) {

@@ -40,6 +40,9 @@ bool isSimple(const ast::Expr &expr);
 void relocate(ast::Expr &expr, SourceLocation at);
 // Sets the location of every statement, branch and expression in `statements`.
 void relocate(std::vector<ast::Stmt> &statements, SourceLocation at);
+// Sets SourceLocation::place of every statement and branch in `statements` (the debugger's place
+// for them; diagnostics keep their locations).
+void setPlace(std::vector<ast::Stmt> &statements, qint64 place);
 
 // Parses the text of a variable, contact, coil or pin ("Motor", "Tank.Level", "%QX0.1", "a + 1",
 // "T#5s") as one ST expression. Problems go to `diagnostics` under `owner`, located at `at`.

@@ -8,6 +8,8 @@
 
 #include <QCoreApplication>
 
+#include <map>
+
 namespace iec::interp::graphical {
 
 namespace {
@@ -78,6 +80,42 @@ std::vector<ast::Stmt> segmentLoop(std::vector<std::vector<ast::Stmt>> segments,
 
 } // namespace
 
+namespace {
+
+// The debugger's place for each root: elements wired together (rails aside, which Beremiz shares
+// between rungs) are one network, named by the localId of its first root in execution order. So
+// a breakpoint on a network halts once, and a step moves one network.
+std::vector<qint64> networkPlaces(const Network &network, const std::vector<std::size_t> &roots)
+{
+    std::vector<std::size_t> parent(network.nodes().size());
+    for (std::size_t i = 0; i < parent.size(); ++i)
+        parent[i] = i;
+    const auto find = [&parent](std::size_t i) {
+        while (parent[i] != i)
+            i = parent[i] = parent[parent[i]];
+        return i;
+    };
+    const auto isRail = [&network](std::size_t i) {
+        return network.node(i).kind == NodeKind::LeftRail || network.node(i).kind == NodeKind::RightRail;
+    };
+    for (std::size_t i = 0; i < parent.size(); ++i) {
+        if (isRail(i))
+            continue;
+        for (const std::size_t source : network.node(i).sources)
+            if (source < parent.size() && !isRail(source))
+                parent[find(i)] = find(source);
+    }
+    std::map<std::size_t, qint64> placeOfGroup;
+    std::vector<qint64> places;
+    for (const std::size_t root : roots) {
+        const qint64 localId = qint64(network.node(root).localId);
+        places.push_back(placeOfGroup.try_emplace(find(root), localId).first->second);
+    }
+    return places;
+}
+
+} // namespace
+
 std::vector<ast::Stmt> lowerBody(const model::Body &body, LoweringContext &context)
 {
     const std::vector<model::Element> *elements = body.elements();
@@ -92,14 +130,18 @@ std::vector<ast::Stmt> lowerBody(const model::Body &body, LoweringContext &conte
     const bool jumps = std::ranges::any_of(network.nodes(), [](const Node &n) { return n.kind == NodeKind::Jump; });
     const QString pc = jumps ? evaluator.hiddenVariable(QStringLiteral("jump"), namedType(QStringLiteral("INT"))) : QString();
     evaluator.setJumpTargets(labels, pc);
+    const std::vector<qint64> places = networkPlaces(network, roots);
     std::vector<std::vector<ast::Stmt>> segments(1);
-    for (const std::size_t root : roots) {
-        if (network.node(root).kind == NodeKind::Label) {
+    for (std::size_t r = 0; r < roots.size(); ++r) {
+        if (network.node(roots[r]).kind == NodeKind::Label) {
             segments.emplace_back();
             continue;
         }
-        evaluator.setSink(&segments.back());
-        evaluator.run(root);
+        std::vector<ast::Stmt> rootStatements;
+        evaluator.setSink(&rootStatements);
+        evaluator.run(roots[r]);
+        setPlace(rootStatements, places[r]);
+        std::ranges::move(rootStatements, std::back_inserter(segments.back()));
     }
     evaluator.declareHidden();
     if (jumps)

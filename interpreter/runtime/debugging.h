@@ -16,6 +16,8 @@ struct CodeLocation {
     QString pou;         // the body's owner as the module names it: Main, or Main.Reset for an action
     int line = 0;        // text bodies: the line, counted from 1 as the editor shows it
     qint64 localId = -1; // graphical bodies: the element's localId; -1 for text
+    // Graphical bodies: any of these elements (the elements of an LD/FBD network), besides localId.
+    std::vector<qint64> elements;
 
     bool operator==(const CodeLocation &) const = default;
 };

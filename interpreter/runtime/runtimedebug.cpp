@@ -7,6 +7,7 @@
 
 #include "interpreter/compiler/types.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace iec::interp {
@@ -23,11 +24,21 @@ void Runtime::setBreakpoints(std::vector<Breakpoint> breakpoints)
 std::vector<std::uint32_t> Runtime::codeAt(const CodeLocation &at) const
 {
     std::vector<std::uint32_t> pcs;
+    const bool graphical = at.localId >= 0 || !at.elements.empty();
+    bool previousMatched = false;
     for (const LineEntry &entry : m_module->lines) {
-        if (entry.pou < 0 || m_module->pous[size_t(entry.pou)].name.compare(at.pou, Qt::CaseInsensitive) != 0)
-            continue;
-        if (at.localId >= 0 ? entry.localId == at.localId : entry.line == at.line && at.line > 0)
+        if (entry.line <= 0 && entry.localId < 0)
+            continue; // code that is no place (a chart's bookkeeping)
+        bool matches = entry.pou >= 0 && m_module->pous[size_t(entry.pou)].name.compare(at.pou, Qt::CaseInsensitive) == 0;
+        if (matches && graphical)
+            matches = ((at.localId >= 0 && entry.localId == at.localId) || std::ranges::find(at.elements, entry.localId) != at.elements.end());
+        else if (matches)
+            matches = entry.line == at.line && at.line > 0;
+        // A place whose code is interrupted by no other place's (a network of several coils) is
+        // reached once: where it starts.
+        if (matches && !previousMatched)
             pcs.push_back(entry.pc);
+        previousMatched = matches;
     }
     return pcs;
 }
@@ -55,8 +66,9 @@ void Runtime::updateStops(bool stepping)
         return;
     }
     std::vector<std::uint8_t> stops(m_module->code.size(), Vm::NoStop);
+    // Every line start that names a place (a line, an element): the chart's bookkeeping is none.
     for (const LineEntry &entry : m_module->lines)
-        if (entry.pc < stops.size())
+        if (entry.pc < stops.size() && (entry.line > 0 || entry.localId >= 0))
             stops[entry.pc] |= Vm::LineStop;
     m_lineStops = stops;
     for (size_t pc = 0; pc < m_breakpointsAtPc.size() && pc < stops.size(); ++pc)

@@ -712,11 +712,16 @@ private:
     }
 
     // Located generated code goes through a splice so each element keeps its localId.
-    QString located(const QString &text, quint64 localId)
+    // `isPlace` false: the code keeps localId for its diagnostics but is no place for the
+    // debugger (a breakpoint on the element does not halt there, nor does a step).
+    QString located(const QString &text, quint64 localId, bool isPlace = true)
     {
         if (text.isEmpty())
             return {};
-        return spliceText(code(text, localId));
+        std::vector<ast::Stmt> statements = code(text, localId);
+        if (!isPlace)
+            graphical::setPlace(statements, SourceLocation::kNoPlace);
+        return spliceText(std::move(statements));
     }
 
     QString stepReset(bool activateInitial)
@@ -833,8 +838,15 @@ private:
         const QString enabled = hasFlag("SFCEnableLimit") ? QStringLiteral(" AND SFCEnableLimit") : QString();
         for (int i = 0; i < int(m_chart.steps.size()); ++i) {
             const ChartStep &s = m_chart.steps[size_t(i)];
-            QString step = QStringLiteral("IF %3 THEN\nIF %1 THEN %2 := __sfc_now; END_IF;\n%4 := __sfc_now - %2;\n")
-                               .arg(hidden("s", i, "en"), hidden("s", i, "start"), stepActive(s), stepTime(s));
+            // Only the code run when the step is entered carries its localId: a breakpoint on a
+            // step halts in the cycle it becomes active (en implies x).
+            std::vector<ast::Stmt> entered =
+                code(QStringLiteral("IF %1 THEN %2 := __sfc_now; END_IF;\n").arg(hidden("s", i, "en"), hidden("s", i, "start")), s.localId);
+            graphical::setPlace(entered, SourceLocation::kNoPlace); // the test runs every cycle
+            if (!entered.empty() && !entered.front().branches.empty())
+                graphical::setPlace(entered.front().branches.front().body, qint64(s.localId));
+            text += spliceText(std::move(entered));
+            QString step = QStringLiteral("IF %1 THEN\n%2 := __sfc_now - %3;\n").arg(stepActive(s), stepTime(s), hidden("s", i, "start"));
             const QString max = s.options.maxTime.trimmed();
             if (!max.isEmpty() && checkDuration(max, s.localId, QT_TRANSLATE_NOOP("iec::interp::Compiler", "The maximum time"))) {
                 QString raise = QStringLiteral("__sfc_error := TRUE;\n");
@@ -850,7 +862,7 @@ private:
                 checkDuration(s.options.minTime.trimmed(), s.localId, QT_TRANSLATE_NOOP("iec::interp::Compiler", "The minimum time"));
             step += stepActionText(s.options.activeAction, s);
             step += QStringLiteral("END_IF;\n");
-            text += located(step, s.localId);
+            text += located(step, s.localId, false);
         }
         for (const ChartMacro &macro : m_chart.macros) {
             text += QStringLiteral("IF %1.x THEN\n").arg(macro.name);
@@ -1079,14 +1091,20 @@ private:
             for (size_t i = 1; i < t.sources.size(); ++i)
                 active << stepActive(m_chart.steps[size_t(t.sources[i])]);
             QString body = QStringLiteral("IF %1 THEN\nIF %2 THEN\n").arg(stepActive(first), (active + enabled).join(QStringLiteral(" AND ")));
+            // The condition is no place for the debugger (it is checked every cycle); the firing
+            // carries the transition's localId, so a breakpoint on it halts when it fires.
+            graphical::setPlace(pre, SourceLocation::kNoPlace);
             body += spliceText(std::move(pre));
             body += QStringLiteral("IF %1 THEN\n").arg(fire.arg(c));
+            QString fired;
             for (int s : t.sources)
-                body += QStringLiteral("%1 := FALSE;\n").arg(stepNext(m_chart.steps[size_t(s)]));
+                fired += QStringLiteral("%1 := FALSE;\n").arg(stepNext(m_chart.steps[size_t(s)]));
             for (int s : t.targets)
-                body += QStringLiteral("%1 := TRUE; %2 := TRUE;\n").arg(stepNext(m_chart.steps[size_t(s)]), hidden("s", s, "re"));
-            body += QStringLiteral("__sfc_trans := TRUE;\nEND_IF;\nELSE %1 := FALSE;\nEND_IF;\nELSE %1 := FALSE;\nEND_IF;\n").arg(c);
-            text += located(body, t.localId);
+                fired += QStringLiteral("%1 := TRUE; %2 := TRUE;\n").arg(stepNext(m_chart.steps[size_t(s)]), hidden("s", s, "re"));
+            fired += QStringLiteral("__sfc_trans := TRUE;\n");
+            body += located(fired, t.localId);
+            body += QStringLiteral("END_IF;\nELSE %1 := FALSE;\nEND_IF;\nELSE %1 := FALSE;\nEND_IF;\n").arg(c);
+            text += located(body, t.localId, false);
         }
         return text;
     }

@@ -4,6 +4,8 @@
 #include "app/documentarea.h"
 #include "editors/text/codeeditor.h"
 #include "app/mainwindow.h"
+#include "app/online/debugcontroller.h"
+#include "app/online/onlinecontroller.h"
 #include "app/projecttreemodel.h"
 #include "app/projecttreeview.h"
 
@@ -41,6 +43,16 @@ int main(int argc, char *argv[])
                 auto *editor = window.documents().textEditorFor(*body);
                 editor->appendPlainText(QStringLiteral("Countr := 0;"));
                 window.buildController().build();
+            }
+            // IEC_SHOT_HALT=1 puts a breakpoint on the place at the cursor (line 3 of a text body,
+            // the first network of a diagram), logs in and runs a cycle, which halts there.
+            if (qEnvironmentVariableIsSet("IEC_SHOT_HALT")) {
+                window.online().setThreaded(false);
+                if (auto *editor = window.documents().textEditorFor(*body))
+                    editor->goToLine(3);
+                window.debugger().toggleBreakpointAtCursor();
+                window.online().login();
+                window.online().singleCycle();
             }
         }
         QCoreApplication::processEvents();

@@ -3,16 +3,29 @@
 // saying where, Step Over moves to the next line, a single cycle finishes the halted one.
 #include "app/documentarea.h"
 #include "app/mainwindow.h"
+#include "app/online/breakpointdialog.h"
 #include "app/online/debugcontroller.h"
 #include "app/online/onlinecontroller.h"
+#include "editors/common/diagramview.h"
+#include "editors/ld/ldeditor.h"
+#include "editors/sfc/sfceditor.h"
 #include "editors/text/codeeditor.h"
 #include "editors/text/texteditorwidget.h"
 #include "interpreter/frontend/iecreader.h"
+#include "model/plcopen/reader.h"
 #include "model/projectmodel.h"
+#include "model/savedbreakpoints.h"
 
 #include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSpinBox>
 #include <QLabel>
 #include <QStatusBar>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTextBlock>
 
@@ -46,6 +59,10 @@ class TestDebugging : public QObject
 private Q_SLOTS:
     void shortcuts();
     void breakpointHaltsStepsAndFinishesTheCycle();
+    void ladderNetworkBreakpoint();
+    void sfcStepBreakpoint();
+    void propertiesDialog();
+    void hitCountFromTheWindow();
 };
 
 void TestDebugging::shortcuts()
@@ -113,6 +130,155 @@ void TestDebugging::breakpointHaltsStepsAndFinishesTheCycle()
     online.logout();
     // The breakpoint stays with the body after logout.
     QCOMPARE(editor->breakpointLines(), QList<int>{3});
+
+    // Saved with the project (our own addData) and back after opening it again.
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("debug.xml"));
+    QVERIFY(window.saveProject(path));
+    QVERIFY(window.projectModel().project().addData.empty()); // the model itself is not changed
+    window.projectModel().reset(model::Project{});
+    QVERIFY(window.debugger().breakpoints().empty());
+    const model::plcopen::ReadResult read = model::plcopen::readProjectFile(path);
+    QCOMPARE(model::savedBreakpoints(read.project).size(), size_t(1));
+    QCOMPARE(model::savedBreakpoints(read.project).front().pou, QStringLiteral("Main"));
+    QCOMPARE(model::savedBreakpoints(read.project).front().line, 3);
+    window.projectModel().reset(read.project);
+    QCOMPARE(window.debugger().breakpoints().size(), size_t(1));
+    QCOMPARE(window.debugger().breakpoints().front().place.line, 3);
+}
+
+// F9 on a network of the star-delta example: its band gets the dot, the program halts there
+// with the band tinted, Step Over moves to the next network.
+void TestDebugging::ladderNetworkBreakpoint()
+{
+    MainWindow window;
+    window.online().setThreaded(false);
+    model::plcopen::ReadResult read = model::plcopen::readProjectFile(QStringLiteral(IEC_SOURCE_DIR "/resources/examples/star_delta.xml"));
+    window.projectModel().reset(read.project);
+    const model::Pou *main = window.projectModel().project().findPou(QStringLiteral("Main"));
+    QVERIFY(main);
+    QWidget *document = window.documents().openBody({main->id, model::BodyRef::Part::Pou, {}});
+    auto *ld = document->findChild<editors::ld::LdEditor *>();
+    QVERIFY(ld);
+    QVERIFY(ld->document().networks.size() >= 3);
+    ld->setCursor(editors::ld::LdCursor::atNetwork(1));
+    window.debugger().toggleBreakpointAction()->trigger();
+    QCOMPARE(window.debugger().breakpoints().size(), size_t(1));
+    QCOMPARE(ld->view()->breakpointMarks().size(), 1);
+    const QRectF secondBand = ld->view()->breakpointMarks().front();
+
+    OnlineController &online = window.online();
+    QVERIFY(online.login());
+    online.singleCycle();
+    QVERIFY(online.latestSnapshot()->halt);
+    QCOMPARE(online.latestSnapshot()->halt->cycle, 1);
+    QCOMPARE(ld->view()->haltedMark(), secondBand);
+    QVERIFY2(window.statusBar()->currentMessage().startsWith(QStringLiteral("Halted in Main at network 2 (cycle 1).")),
+             qPrintable(window.statusBar()->currentMessage()));
+    window.debugger().stepOverAction()->trigger();
+    QVERIFY(online.latestSnapshot()->halt);
+    QVERIFY(ld->view()->haltedMark().top() > secondBand.top());
+    QVERIFY2(window.statusBar()->currentMessage().startsWith(QStringLiteral("Halted in Main at network 3 (cycle 1).")),
+             qPrintable(window.statusBar()->currentMessage()));
+    online.singleCycle();
+    QVERIFY(!online.latestSnapshot()->halt);
+    QVERIFY(ld->view()->haltedMark().isEmpty());
+    // F9 again on the same network takes the breakpoint away.
+    online.logout();
+    ld->setCursor(editors::ld::LdCursor::atNetwork(1));
+    window.debugger().toggleBreakpointAction()->trigger();
+    QVERIFY(window.debugger().breakpoints().empty());
+    QVERIFY(ld->view()->breakpointMarks().isEmpty());
+}
+
+// The mixing tank: a breakpoint on step FillA halts in the cycle after SB1 made the transition
+// fire, with the step tinted and named in the status bar.
+void TestDebugging::sfcStepBreakpoint()
+{
+    MainWindow window;
+    window.online().setThreaded(false);
+    window.projectModel().reset(model::plcopen::readProjectFile(QStringLiteral(IEC_SOURCE_DIR "/resources/examples/mixing_tank.xml")).project);
+    const model::Pou *main = window.projectModel().project().findPou(QStringLiteral("Main"));
+    QVERIFY(main);
+    QWidget *document = window.documents().openBody({main->id, model::BodyRef::Part::Pou, {}});
+    auto *chart = document->findChild<editors::sfc::SfcEditor *>();
+    QVERIFY(chart);
+    const quint64 fill = chart->stepId(QStringLiteral("FillA"));
+    QVERIFY(fill != 0);
+    chart->select({fill});
+    window.debugger().toggleBreakpointAction()->trigger();
+    QCOMPARE(chart->view()->breakpointMarks().size(), 1);
+
+    OnlineController &online = window.online();
+    QVERIFY(online.login());
+    online.singleCycle();
+    QVERIFY(!online.latestSnapshot()->halt);
+    online.write(QStringLiteral("Tank.SB1"), QStringLiteral("TRUE"));
+    online.singleCycle(); // the transition fires
+    QVERIFY(!online.latestSnapshot()->halt);
+    online.singleCycle(); // FillA is entered
+    QVERIFY(online.latestSnapshot()->halt);
+    QCOMPARE(online.latestSnapshot()->halt->cycle, 3);
+    QCOMPARE(chart->view()->haltedMark(), chart->view()->breakpointMarks().front());
+    QVERIFY2(window.statusBar()->currentMessage().startsWith(QStringLiteral("Halted in Main at step FillA (cycle 3).")),
+             qPrintable(window.statusBar()->currentMessage()));
+    online.singleCycle();
+    QVERIFY(!online.latestSnapshot()->halt);
+    online.singleCycle(); // FillA stays active: no halt
+    QVERIFY(!online.latestSnapshot()->halt);
+}
+
+void TestDebugging::propertiesDialog()
+{
+    interp::Breakpoint start;
+    start.hitRule = interp::HitRule::Equal;
+    start.hitTarget = 4;
+    BreakpointDialog dialog(QStringLiteral("Main, line 3"), start, nullptr);
+    QCOMPARE(dialog.hitRuleBox()->currentIndex(), int(interp::HitRule::Equal));
+    QCOMPARE(dialog.hitTargetBox()->value(), 4);
+    QVERIFY(dialog.hitTargetBox()->isEnabled());
+    dialog.hitRuleBox()->setCurrentIndex(int(interp::HitRule::Always));
+    QVERIFY(!dialog.hitTargetBox()->isEnabled());
+    dialog.hitRuleBox()->setCurrentIndex(int(interp::HitRule::MultipleOf));
+    dialog.hitTargetBox()->setValue(3);
+    dialog.conditionEdit()->setText(QStringLiteral("Count = = 2"));
+    QVERIFY(!dialog.buttons()->button(QDialogButtonBox::Ok)->isEnabled());
+    QCOMPARE(dialog.problemLabel()->text(), QStringLiteral("This is not an expression: Count = = 2"));
+    dialog.conditionEdit()->setText(QStringLiteral(" Count = 2 "));
+    QVERIFY(dialog.buttons()->button(QDialogButtonBox::Ok)->isEnabled());
+    dialog.enabledBox()->setChecked(false);
+    const interp::Breakpoint result = dialog.settings();
+    QCOMPARE(int(result.hitRule), int(interp::HitRule::MultipleOf));
+    QCOMPARE(result.hitTarget, 3);
+    QCOMPARE(result.condition, QStringLiteral("Count = 2"));
+    QVERIFY(!result.enabled);
+}
+
+// A breakpoint on the first line that halts on its third hit only.
+void TestDebugging::hitCountFromTheWindow()
+{
+    MainWindow window;
+    window.online().setThreaded(false);
+    window.projectModel().reset(interp::frontend::readIecText(QString::fromUtf8(kProgram), QStringLiteral("Test")).project);
+    const model::Pou *main = window.projectModel().project().findPou(QStringLiteral("Main"));
+    const model::BodyRef body{main->id, model::BodyRef::Part::Pou, {}};
+    window.documents().openBody(body);
+    interp::Breakpoint settings;
+    settings.hitRule = interp::HitRule::Equal;
+    settings.hitTarget = 3;
+    window.debugger().setBreakpointSettings(body, {1, -1, {}}, settings);
+    OnlineController &online = window.online();
+    QVERIFY(online.login());
+    QStringList halts;
+    for (int i = 0; i < 5; ++i) {
+        online.singleCycle();
+        if (online.latestSnapshot()->halt) {
+            halts << QString::number(online.latestSnapshot()->halt->cycle);
+            online.singleCycle(); // finishes the halted cycle
+        }
+    }
+    QCOMPARE(halts, QStringList{QStringLiteral("3")});
+    QCOMPARE(online.latestSnapshot()->cycle, 5);
 }
 
 QTEST_MAIN(TestDebugging)

@@ -1,11 +1,16 @@
 // The runtime's debugger: breakpoints on lines, hit counts and conditions, halting mid-scan,
 // stepping over, into and out of calls, and going on with the same results as without halting.
 #include "interpreter/compiler/compiler.h"
+#include "interpreter/frontend/iecreader.h"
+#include "interpreter/frontend/projectsource.h"
 #include "interpreter/runtime/conditionexpression.h"
 #include "interpreter/runtime/runtime.h"
 
+#include "graphical/diagram.h"
+
 #include <QTest>
 
+using namespace iec;
 using namespace iec::interp;
 
 namespace {
@@ -60,6 +65,9 @@ private Q_SLOTS:
     void noBreakpointsMeansNoStops();
     void conditions_data();
     void conditions();
+    void ladderNetworkHaltsOnceAndStepsByNetwork();
+    void sfcStepHaltsWhenItBecomesActive();
+    void sfcTransitionHaltsWhenItFires();
 };
 
 void TestDebugger::breakpointInALoopHaltsInEachIteration()
@@ -291,6 +299,153 @@ void TestDebugger::conditions()
                                QStringLiteral("Main")};
     const ConditionResult r = evaluateCondition(condition, scope);
     QCOMPARE(r.value ? QString::fromLatin1(*r.value ? "TRUE" : "FALSE") : r.error, result);
+}
+
+namespace {
+
+std::shared_ptr<const Module> buildProject(const model::Project &project)
+{
+    Diagnostics diagnostics;
+    auto module = frontend::compileProject(project, diagnostics);
+    for (const Diagnostic &d : diagnostics.all())
+        qWarning("%s", qPrintable(d.toString()));
+    return module;
+}
+
+// Init --go--> Run --NOT go--> Init, with n counted while Run is active.
+const char *const kChart = "PROGRAM Main\nVAR go : BOOL; n : INT; END_VAR\n"
+                           "INITIAL_STEP Init: END_STEP\n"
+                           "TRANSITION FROM Init TO Run := go; END_TRANSITION\n"
+                           "STEP Run: Count(N); END_STEP\n"
+                           "TRANSITION FROM Run TO Init := NOT go; END_TRANSITION\n"
+                           "ACTION Count: n := n + 1; END_ACTION\n"
+                           "END_PROGRAM\n";
+
+model::Project chartProject()
+{
+    return frontend::readIecText(QString::fromLatin1(kChart), QStringLiteral("t")).project;
+}
+
+const std::vector<model::Element> &chartElements(const model::Project &project)
+{
+    return *project.findPou(QStringLiteral("Main"))->bodies.front().elements();
+}
+
+qint64 stepId(const model::Project &project, const QString &name)
+{
+    for (const model::Element &e : chartElements(project))
+        if (const auto *step = std::get_if<model::Step>(&e); step && step->name == name)
+            return qint64(step->localId);
+    return -1;
+}
+
+// The transition below step `from` (wired to it).
+qint64 transitionAfter(const model::Project &project, qint64 from)
+{
+    for (const model::Element &e : chartElements(project))
+        if (const auto *t = std::get_if<model::Transition>(&e); t && t->connectionPointIn)
+            for (const model::Connection &c : t->connectionPointIn->connections)
+                if (qint64(c.refLocalId) == from)
+                    return qint64(t->localId);
+    return -1;
+}
+
+} // namespace
+
+// Two rungs on one shared left rail (as Beremiz draws them); the first has two coils in series.
+void TestDebugger::ladderNetworkHaltsOnceAndStepsByNetwork()
+{
+    iec::testing::Diagram d;
+    d.rail(1).contact(2, QStringLiteral("a"), {{1, {}}}).coil(3, QStringLiteral("x"), {{2, {}}}).coil(4, QStringLiteral("y"), {{3, {}}}, 600);
+    d.contact(5, QStringLiteral("x"), {{1, {}}}, 0, 100).coil(6, QStringLiteral("z"), {{5, {}}}, 500, 100);
+    auto module = buildProject(iec::testing::diagramProject(QStringLiteral("VAR a, x, y, z : BOOL; END_VAR"), model::BodyLanguage::LD, d));
+    QVERIFY(module);
+    Runtime runtime(module);
+    QVERIFY(runtime.write(QStringLiteral("Main.a"), QStringLiteral("TRUE")) == std::nullopt);
+    Breakpoint first;
+    first.at = {QStringLiteral("Main"), 0, -1, {2, 3, 4}};
+    runtime.setBreakpoints({first});
+    QVERIFY(!runtime.runCycle());
+    QCOMPARE(runtime.halt()->breakpoint, 0);
+    const qint64 firstPlace = runtime.halt()->at.localId;
+    QVERIFY2(firstPlace == 3 || firstPlace == 4, qPrintable(QString::number(firstPlace)));
+    QCOMPARE(runtime.read(QStringLiteral("Main.x")), QStringLiteral("FALSE"));
+    // Step over: the whole first rung ran, the program stands at the second.
+    QVERIFY(!runtime.resume(ResumeKind::StepOver));
+    QCOMPARE(runtime.halt()->at.localId, 6);
+    QCOMPARE(runtime.halt()->breakpoint, -1);
+    QCOMPARE(runtime.read(QStringLiteral("Main.x")), QStringLiteral("TRUE"));
+    QCOMPARE(runtime.read(QStringLiteral("Main.y")), QStringLiteral("TRUE"));
+    QCOMPARE(runtime.read(QStringLiteral("Main.z")), QStringLiteral("FALSE"));
+    QVERIFY(runtime.resume(ResumeKind::StepOver)); // the last rung: the cycle ends
+    QCOMPARE(runtime.read(QStringLiteral("Main.z")), QStringLiteral("TRUE"));
+    // The breakpoint halts once per cycle, not once per coil.
+    QVERIFY(!runtime.runCycle());
+    QCOMPARE(runtime.halt()->hits, 2);
+    QVERIFY(runtime.resume(ResumeKind::Continue));
+    // A breakpoint on the second rung by one of its elements.
+    Breakpoint second;
+    second.at = {QStringLiteral("Main"), 0, 5, {5, 6}};
+    runtime.setBreakpoints({second});
+    QVERIFY(!runtime.runCycle());
+    QCOMPARE(runtime.halt()->at.localId, 6);
+}
+
+void TestDebugger::sfcStepHaltsWhenItBecomesActive()
+{
+    const model::Project project = chartProject();
+    const qint64 run = stepId(project, QStringLiteral("Run"));
+    QVERIFY(run >= 0);
+    auto module = buildProject(project);
+    QVERIFY(module);
+    Runtime runtime(module);
+    Breakpoint b;
+    b.at = {QStringLiteral("Main"), 0, run, {}};
+    runtime.setBreakpoints({b});
+    QStringList halts;
+    for (int cycle = 1; cycle <= 8; ++cycle) {
+        if (cycle == 2)
+            runtime.write(QStringLiteral("Main.go"), QStringLiteral("TRUE"));
+        if (cycle == 5)
+            runtime.write(QStringLiteral("Main.go"), QStringLiteral("FALSE"));
+        if (cycle == 7)
+            runtime.write(QStringLiteral("Main.go"), QStringLiteral("TRUE"));
+        if (!runtime.runCycle()) {
+            QVERIFY(runtime.isHalted());
+            QCOMPARE(runtime.halt()->at.localId, run);
+            halts << QStringLiteral("%1:%2").arg(runtime.halt()->cycle).arg(*runtime.read(QStringLiteral("Main.n")));
+            QVERIFY(runtime.resume(ResumeKind::Continue));
+        }
+        QCOMPARE(runtime.cycle(), cycle);
+    }
+    // go before cycle 2: the transition fires in cycle 2, Run is active from cycle 3 (its action
+    // has not run yet when the program halts); Init again in cycle 6 (where Count runs a last
+    // time), Run from cycle 8.
+    QCOMPARE(halts, (QStringList{QStringLiteral("3:0"), QStringLiteral("8:4")})); // n: cycles 3-5 and the last run in 6
+}
+
+void TestDebugger::sfcTransitionHaltsWhenItFires()
+{
+    const model::Project project = chartProject();
+    const qint64 back = transitionAfter(project, stepId(project, QStringLiteral("Run")));
+    QVERIFY(back >= 0);
+    auto module = buildProject(project);
+    QVERIFY(module);
+    Runtime runtime(module);
+    Breakpoint b;
+    b.at = {QStringLiteral("Main"), 0, back, {}};
+    runtime.setBreakpoints({b});
+    runtime.write(QStringLiteral("Main.go"), QStringLiteral("TRUE"));
+    for (int cycle = 1; cycle <= 4; ++cycle)
+        QVERIFY(runtime.runCycle()); // Run is active, NOT go is FALSE: nothing fires
+    runtime.write(QStringLiteral("Main.go"), QStringLiteral("FALSE"));
+    QVERIFY(!runtime.runCycle());
+    QCOMPARE(runtime.halt()->cycle, 5);
+    QCOMPARE(runtime.halt()->at.localId, back);
+    QCOMPARE(runtime.hitCounts(), std::vector<int>{1});
+    QVERIFY(runtime.resume(ResumeKind::Continue));
+    QVERIFY(runtime.runCycle());
+    QCOMPARE(runtime.hitCounts(), std::vector<int>{1});
 }
 
 QTEST_GUILESS_MAIN(TestDebugger)
