@@ -307,7 +307,7 @@ void MainWindow::createDocks()
     addDockWidget(Qt::BottomDockWidgetArea, m_watchDock);
     m_online = new OnlineController(*m_projectModel, *m_documents, *m_messages, *m_build, *m_watch, *statusBar(),
         {m_loginAction, m_stopAction, m_singleCycleAction}, this);
-    m_debug = new DebugController(*m_projectModel, *m_documents, *m_online, *statusBar(), this);
+    m_debug = new DebugController(*m_projectModel, *m_documents, *m_online, *m_messages, *statusBar(), this);
     createProjectTools();
 }
 

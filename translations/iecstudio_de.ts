@@ -361,6 +361,22 @@
             <source>A breakpoint goes on a line of an ST or IL body, a network of an LD or FBD body, or a step or transition of a chart: put the cursor there first.</source>
             <translation>Ein Haltepunkt gehört auf eine Zeile eines ST- oder AWL-Rumpfs, ein Netzwerk eines KOP- oder FUP-Rumpfs oder einen Schritt oder eine Transition eines Ablaufplans: setzen Sie den Cursor zuerst dorthin.</translation>
         </message>
+        <message>
+            <source>Run to &amp;Cursor</source>
+            <translation>Bis zum &amp;Cursor ausführen</translation>
+        </message>
+        <message>
+            <source>%1 (instance %2)</source>
+            <translation>%1 (Instanz %2)</translation>
+        </message>
+        <message>
+            <source>Halted in %1 at %2 (cycle %3).</source>
+            <translation>Angehalten in %1 bei %2 (Zyklus %3).</translation>
+        </message>
+        <message>
+            <source>Called from %1 at %2.</source>
+            <translation>Aufgerufen von %1 bei %2.</translation>
+        </message>
     </context>
     <context>
         <name>iec::app::DiagramMenus</name>

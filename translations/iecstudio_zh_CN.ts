@@ -360,6 +360,22 @@
             <source>A breakpoint goes on a line of an ST or IL body, a network of an LD or FBD body, or a step or transition of a chart: put the cursor there first.</source>
             <translation>断点可设在 ST 或 IL 程序体的一行、LD 或 FBD 程序体的一个网络，或顺序功能图的一个步或转换上：请先把光标放到那里。</translation>
         </message>
+        <message>
+            <source>Run to &amp;Cursor</source>
+            <translation>运行到光标处(&amp;C)</translation>
+        </message>
+        <message>
+            <source>%1 (instance %2)</source>
+            <translation>%1（实例 %2）</translation>
+        </message>
+        <message>
+            <source>Halted in %1 at %2 (cycle %3).</source>
+            <translation>已在 %1 的%2处暂停（周期 %3）。</translation>
+        </message>
+        <message>
+            <source>Called from %1 at %2.</source>
+            <translation>由 %1 的%2处调用。</translation>
+        </message>
     </context>
     <context>
         <name>iec::app::DiagramMenus</name>

@@ -1,6 +1,7 @@
 #include "app/online/debugcontroller.h"
 
 #include "app/online/breakpointdialog.h"
+#include "app/messagespane.h"
 #include "app/online/onlinecontroller.h"
 #include "model/projectmodel.h"
 #include "model/savedbreakpoints.h"
@@ -13,11 +14,12 @@
 namespace iec::app {
 
 DebugController::DebugController(model::ProjectModel &projectModel, DocumentArea &documents, OnlineController &online,
-                                 QStatusBar &statusBar, QObject *parent)
+                                 MessagesPane &messages, QStatusBar &statusBar, QObject *parent)
     : QObject(parent)
     , m_projectModel(projectModel)
     , m_documents(documents)
     , m_online(online)
+    , m_messages(messages)
     , m_statusBar(statusBar)
 {
     m_toggle = new QAction(this);
@@ -37,11 +39,18 @@ DebugController::DebugController(model::ProjectModel &projectModel, DocumentArea
     m_stepOut->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F10));
     connect(m_stepOut, &QAction::triggered, this, [this] { m_online.resume(interp::ResumeKind::StepOut); });
 
+    m_runToCursor = new QAction(this);
+    m_runToCursor->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F10));
+    connect(m_runToCursor, &QAction::triggered, this, &DebugController::runToCursor);
+
     connect(&m_online, &OnlineController::onlineChanged, this, [this](bool online) {
-        if (online)
+        if (online) {
             sendBreakpoints();
-        else
+        } else {
             m_halt.reset();
+            m_cursorTarget.reset();
+            listCallStack();
+        }
         refreshMarks();
         updateActions();
     });
@@ -64,6 +73,7 @@ void DebugController::addTo(QMenu *menu, QToolBar *toolBar)
     menu->addAction(m_stepOver);
     menu->addAction(m_stepInto);
     menu->addAction(m_stepOut);
+    menu->addAction(m_runToCursor);
     if (toolBar) {
         toolBar->addAction(m_stepOver);
         toolBar->addAction(m_stepInto);
@@ -79,6 +89,7 @@ void DebugController::retranslate()
     m_stepOver->setText(tr("Step &Over"));
     m_stepInto->setText(tr("Step &Into"));
     m_stepOut->setText(tr("Step O&ut"));
+    m_runToCursor->setText(tr("Run to &Cursor"));
 }
 
 void DebugController::updateActions()
@@ -86,6 +97,7 @@ void DebugController::updateActions()
     const bool running = m_online.isRunning();
     m_stepOver->setEnabled(!running);
     m_stepInto->setEnabled(!running);
+    m_runToCursor->setEnabled(!running);
     // Only while halted: Shift+F10 is also the keyboard's context menu key elsewhere.
     m_stepOut->setEnabled(m_halt.has_value());
     m_removeAll->setEnabled(!m_breakpoints.empty());
@@ -132,6 +144,18 @@ void DebugController::setBreakpointSettings(const model::BodyRef &body, const ed
     refreshMarks();
     updateActions();
     Q_EMIT breakpointsChanged();
+}
+
+void DebugController::runToCursor()
+{
+    const auto at = placeAtCursor();
+    if (!at) {
+        toggleBreakpointAtCursor(); // says where the cursor must be
+        return;
+    }
+    m_cursorTarget = StoredBreakpoint{at->first, at->second, {}};
+    sendBreakpoints();
+    m_online.loginAndRun();
 }
 
 void DebugController::toggleBreakpointAtCursor()
@@ -241,11 +265,15 @@ void DebugController::sendBreakpoints()
     if (!m_online.isOnline())
         return;
     std::vector<interp::Breakpoint> breakpoints;
-    for (const StoredBreakpoint &stored : m_breakpoints) {
+    const auto add = [&](const StoredBreakpoint &stored) {
         interp::Breakpoint b = stored.settings;
         b.at = {ownerName(stored.body), stored.place.line, stored.place.localId, stored.place.elements};
         breakpoints.push_back(std::move(b));
-    }
+    };
+    for (const StoredBreakpoint &stored : m_breakpoints)
+        add(stored);
+    if (m_cursorTarget)
+        add(*m_cursorTarget);
     m_online.setBreakpoints(breakpoints);
 }
 
@@ -266,6 +294,30 @@ void DebugController::refreshMarks()
     }
 }
 
+// Innermost first, as debuggers list it; each entry opens its place.
+void DebugController::listCallStack()
+{
+    QList<Message> list;
+    if (m_halt) {
+        for (auto frame = m_halt->stack.rbegin(); frame != m_halt->stack.rend(); ++frame) {
+            const QString where = frame->localId >= 0 ? tr("element %1").arg(frame->localId) : tr("line %1").arg(frame->line);
+            const QString body = frame->instance.isEmpty() || frame->instance.compare(frame->pou, Qt::CaseInsensitive) == 0
+                ? frame->pou
+                : tr("%1 (instance %2)").arg(frame->pou, frame->instance);
+            Message message;
+            message.severity = Message::Severity::Info;
+            message.text = frame == m_halt->stack.rbegin() ? tr("Halted in %1 at %2 (cycle %3).").arg(body, where).arg(m_halt->cycle)
+                                                            : tr("Called from %1 at %2.").arg(body, where);
+            message.pouName = frame->pou;
+            message.line = frame->line;
+            if (frame->localId >= 0)
+                message.localId = quint64(frame->localId);
+            list.append(message);
+        }
+    }
+    m_messages.model().setMessages(QStringLiteral("debugger"), list);
+}
+
 void DebugController::showHalt(const interp::RuntimeSnapshot &snapshot)
 {
     const bool changed = snapshot.halt.has_value() != m_halt.has_value()
@@ -275,6 +327,11 @@ void DebugController::showHalt(const interp::RuntimeSnapshot &snapshot)
     updateActions();
     if (!changed)
         return;
+    if (m_halt && m_cursorTarget) {
+        m_cursorTarget.reset(); // reached, or another breakpoint came first: Run to Cursor is over
+        sendBreakpoints();
+    }
+    listCallStack();
     if (m_halt) {
         // The body it halted in comes to the front, opened if need be.
         QString place = m_halt->at.localId >= 0 ? tr("element %1").arg(m_halt->at.localId) : tr("line %1").arg(m_halt->at.line);

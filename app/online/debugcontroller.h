@@ -22,13 +22,15 @@ class ProjectModel;
 
 namespace iec::app {
 
+class MessagesPane;
 class OnlineController;
 
 // Breakpoints and stepping in the window (docs/debugging.md): Toggle Breakpoint (F9) on the
 // place at the cursor of the current editor, or a click in a text editor's margin; Step Over
 // (F10), Step Into (F8), Step Out (Shift+F10). Breakpoints belong to bodies (ids, so a rename
 // keeps them) and are shown in every open editor, offline and online. When the program halts,
-// the body it halted in is opened and the place shown, and the status bar says where.
+// the body it halted in is opened and the place shown, the status bar says where, and the call
+// stack is listed in the messages pane (an entry opens its place).
 class DebugController : public QObject
 {
     Q_OBJECT
@@ -41,7 +43,7 @@ public:
     };
 
     DebugController(model::ProjectModel &projectModel, DocumentArea &documents, OnlineController &online,
-                    QStatusBar &statusBar, QObject *parent = nullptr);
+                    MessagesPane &messages, QStatusBar &statusBar, QObject *parent = nullptr);
 
     void addTo(QMenu *menu, QToolBar *toolBar);
     void retranslate();
@@ -54,6 +56,7 @@ public:
     [[nodiscard]] QAction *stepOverAction() const { return m_stepOver; }
     [[nodiscard]] QAction *stepIntoAction() const { return m_stepInto; }
     [[nodiscard]] QAction *stepOutAction() const { return m_stepOut; }
+    [[nodiscard]] QAction *runToCursorAction() const { return m_runToCursor; }
 
 public Q_SLOTS:
     // F9: on the place at the cursor of the current editor.
@@ -62,6 +65,9 @@ public Q_SLOTS:
     void removeAllBreakpoints();
     // Breakpoint Properties… for the place at the cursor (a new breakpoint when there is none).
     void editBreakpointAtCursor();
+    // Run to Cursor (Ctrl+F10): runs (logging in when needed) until the place at the cursor is
+    // reached, as if a breakpoint were there, which goes once the program halts anywhere.
+    void runToCursor();
     // Sets (or creates) the breakpoint at a place with the given hit rule, condition and state.
     void setBreakpointSettings(const model::BodyRef &body, const editors::OnlineView::Place &place,
                                const interp::Breakpoint &settings);
@@ -74,6 +80,7 @@ private:
     void sendBreakpoints();
     void refreshMarks();
     void showHalt(const interp::RuntimeSnapshot &snapshot);
+    void listCallStack();
     void updateActions();
     [[nodiscard]] QString ownerName(const model::BodyRef &body) const;
     [[nodiscard]] std::optional<std::pair<model::BodyRef, editors::OnlineView::Place>> placeAtCursor() const;
@@ -82,6 +89,7 @@ private:
     model::ProjectModel &m_projectModel;
     DocumentArea &m_documents;
     OnlineController &m_online;
+    MessagesPane &m_messages;
     QStatusBar &m_statusBar;
     std::vector<StoredBreakpoint> m_breakpoints;
     std::optional<interp::HaltInfo> m_halt;
@@ -91,6 +99,8 @@ private:
     QAction *m_stepOver = nullptr;
     QAction *m_stepInto = nullptr;
     QAction *m_stepOut = nullptr;
+    QAction *m_runToCursor = nullptr;
+    std::optional<StoredBreakpoint> m_cursorTarget; // Run to Cursor's breakpoint until a halt
 };
 
 } // namespace iec::app

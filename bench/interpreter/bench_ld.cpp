@@ -13,6 +13,7 @@
 #include "benchutil.h"
 
 #include <cstdint>
+#include <limits>
 #include <cstdio>
 #include <vector>
 
@@ -97,6 +98,18 @@ int main()
     Runtime runtime(module);
     const double vm = nsPerScan(2000, [&] { runtime.runCycle(); });
 
+    // With the debugger armed: a breakpoint on the last rung that never halts (on its
+    // 2,147,483,647th hit), so every scan runs the debugger's code (op::Break at each rung, no JIT).
+    Runtime debugged(module);
+    Breakpoint never;
+    const qint64 last = 10 * qint64(kRungs - 1) + 10;
+    never.at = {QStringLiteral("Main"), 0, last + 4, {last, last + 1, last + 2, last + 3, last + 4}};
+    never.hitRule = HitRule::Equal;
+    never.hitTarget = std::numeric_limits<int>::max();
+    debugged.setBreakpoints({never});
+    const double armed = nsPerScan(2000, [&] { debugged.runCycle(); });
+    const bool armedHits = debugged.hitCounts().front() > 0;
+
     CppRungs rungs(kRungs);
     const double cpp = nsPerScan(2000, [&] {
         rungs.scan();
@@ -123,5 +136,7 @@ int main()
     std::printf("VM %9.0f ns/scan   C++ -O2 %9.0f ns/scan   ratio %5.2fx   %s\n", vm, cpp, vm / cpp,
         differences == 0 ? "same results" : "RESULTS DIFFER");
     std::printf("the same rungs in ST: VM %9.0f ns/scan, %zu instructions\n", st, stModule ? stModule->code.size() : 0);
+    std::printf("with a breakpoint that never halts: %9.0f ns/scan (%.2fx; the breakpoint was %s)\n", armed, armed / vm,
+        armedHits ? "reached every scan" : "NEVER REACHED");
     return differences == 0 ? 0 : 1;
 }

@@ -839,14 +839,15 @@ private:
         for (int i = 0; i < int(m_chart.steps.size()); ++i) {
             const ChartStep &s = m_chart.steps[size_t(i)];
             // Only the code run when the step is entered carries its localId: a breakpoint on a
-            // step halts in the cycle it becomes active (en implies x).
+            // step halts in the cycle it becomes active. (Inside IF x, as before: most steps are
+            // inactive, and one test each is what the chart costs.)
             std::vector<ast::Stmt> entered =
                 code(QStringLiteral("IF %1 THEN %2 := __sfc_now; END_IF;\n").arg(hidden("s", i, "en"), hidden("s", i, "start")), s.localId);
             graphical::setPlace(entered, SourceLocation::kNoPlace); // the test runs every cycle
             if (!entered.empty() && !entered.front().branches.empty())
                 graphical::setPlace(entered.front().branches.front().body, qint64(s.localId));
-            text += spliceText(std::move(entered));
-            QString step = QStringLiteral("IF %1 THEN\n%2 := __sfc_now - %3;\n").arg(stepActive(s), stepTime(s), hidden("s", i, "start"));
+            QString step = QStringLiteral("IF %1 THEN\n%2%3 := __sfc_now - %4;\n")
+                               .arg(stepActive(s), spliceText(std::move(entered)), stepTime(s), hidden("s", i, "start"));
             const QString max = s.options.maxTime.trimmed();
             if (!max.isEmpty() && checkDuration(max, s.localId, QT_TRANSLATE_NOOP("iec::interp::Compiler", "The maximum time"))) {
                 QString raise = QStringLiteral("__sfc_error := TRUE;\n");

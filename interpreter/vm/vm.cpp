@@ -453,9 +453,13 @@ void Vm::setStops(std::vector<std::uint8_t> stops)
     m_originalOps.resize(m_debugCode.size());
     for (size_t pc = 0; pc < m_debugCode.size(); ++pc) {
         Instr &instruction = m_debugCode[pc];
-        // A packed rung run would skip a stop inside it: the rungs run one by one instead.
-        if (instruction.op == op::RungBlock)
-            instruction.op = op::Nop;
+        // A packed rung run would skip a stop inside it: the rungs run one by one instead, the
+        // first from its packed record (RungBlock took its instruction's place).
+        if (instruction.op == op::RungBlock) {
+            const RungRecord &r = m_module.rungs[instruction.b];
+            const auto at = [&r](std::int16_t delta) { return static_cast<std::uint32_t>(std::int64_t(r.a) + delta); };
+            instruction = {op::BoolAndNotOrAndRel, 0, r.a, at(r.b), at(r.c), at(r.d), at(r.e)};
+        }
         m_originalOps[pc] = instruction.op;
         if (m_stops[pc] != NoStop)
             instruction.op = op::Break;

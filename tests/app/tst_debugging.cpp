@@ -3,6 +3,7 @@
 // saying where, Step Over moves to the next line, a single cycle finishes the halted one.
 #include "app/documentarea.h"
 #include "app/mainwindow.h"
+#include "app/messagespane.h"
 #include "app/online/breakpointdialog.h"
 #include "app/online/debugcontroller.h"
 #include "app/online/onlinecontroller.h"
@@ -63,6 +64,8 @@ private Q_SLOTS:
     void sfcStepBreakpoint();
     void propertiesDialog();
     void hitCountFromTheWindow();
+    void callStackInTheMessages();
+    void runToCursor();
 };
 
 void TestDebugging::shortcuts()
@@ -279,6 +282,62 @@ void TestDebugging::hitCountFromTheWindow()
     }
     QCOMPARE(halts, QStringList{QStringLiteral("3")});
     QCOMPARE(online.latestSnapshot()->cycle, 5);
+}
+
+// Halted inside a function block: the messages list the stack, innermost first.
+void TestDebugging::callStackInTheMessages()
+{
+    const char *const source = "FUNCTION_BLOCK Acc\nVAR_INPUT x : INT; END_VAR\nVAR_OUTPUT total : INT; END_VAR\n"
+                               "total := total + x;\nEND_FUNCTION_BLOCK\n"
+                               "PROGRAM Main\nVAR a : Acc; n : INT; END_VAR\nn := n + 1;\na(x := n);\nEND_PROGRAM\n";
+    MainWindow window;
+    window.online().setThreaded(false);
+    window.projectModel().reset(interp::frontend::readIecText(QString::fromUtf8(source), QStringLiteral("Test")).project);
+    const model::Pou *acc = window.projectModel().project().findPou(QStringLiteral("Acc"));
+    window.debugger().setBreakpointSettings({acc->id, model::BodyRef::Part::Pou, {}}, {1, -1, {}}, {});
+    QVERIFY(window.online().login());
+    window.online().singleCycle();
+    QVERIFY(window.online().latestSnapshot()->halt);
+    MessageListModel &messages = window.messagesPane().model();
+    QStringList texts;
+    for (int row = 0; row < messages.rowCount(); ++row)
+        if (messages.message(row).text.startsWith(QStringLiteral("Halted in")) || messages.message(row).text.startsWith(QStringLiteral("Called from")))
+            texts << QStringLiteral("%1 @%2:%3").arg(messages.message(row).text, messages.message(row).pouName).arg(messages.message(row).line);
+    QCOMPARE(texts, (QStringList{QStringLiteral("Halted in Acc (instance Main.a) at line 1 (cycle 1). @Acc:1"),
+                                 QStringLiteral("Called from Main at line 2. @Main:2")}));
+    // The Acc editor came to the front with the line marked.
+    auto *widget = window.documents().currentWidget()->findChild<editors::TextEditorWidget *>();
+    QVERIFY(widget);
+    QCOMPARE(widget->editor()->haltedLine(), 1);
+    window.online().singleCycle();
+    QVERIFY(!window.online().latestSnapshot()->halt);
+    bool anyInfo = false;
+    for (int row = 0; row < messages.rowCount(); ++row)
+        anyInfo = anyInfo || messages.message(row).text.startsWith(QStringLiteral("Halted in"));
+    QVERIFY(!anyInfo);
+}
+
+void TestDebugging::runToCursor()
+{
+    MainWindow window;
+    window.online().setThreaded(false);
+    window.projectModel().reset(interp::frontend::readIecText(QString::fromUtf8(kProgram), QStringLiteral("Test")).project);
+    const model::Pou *main = window.projectModel().project().findPou(QStringLiteral("Main"));
+    QWidget *document = window.documents().openBody({main->id, model::BodyRef::Part::Pou, {}});
+    editors::CodeEditor *editor = document->findChild<editors::TextEditorWidget *>()->editor();
+    editor->goToLine(5);
+    QCOMPARE(window.debugger().runToCursorAction()->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_F10));
+    window.debugger().runToCursorAction()->trigger();
+    QTRY_VERIFY(window.online().latestSnapshot() && window.online().latestSnapshot()->halt);
+    QCOMPARE(window.online().latestSnapshot()->halt->at.line, 5);
+    QCOMPARE(window.online().latestSnapshot()->halt->cycle, 1);
+    QCOMPARE(editor->haltedLine(), 5);
+    QVERIFY(window.debugger().breakpoints().empty()); // no breakpoint stays behind
+    QVERIFY(editor->breakpointLines().isEmpty());
+    window.online().singleCycle(); // finishes cycle 1
+    window.online().singleCycle(); // cycle 2 runs through
+    QVERIFY(!window.online().latestSnapshot()->halt);
+    QCOMPARE(window.online().latestSnapshot()->cycle, 2);
 }
 
 QTEST_MAIN(TestDebugging)

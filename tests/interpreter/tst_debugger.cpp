@@ -66,6 +66,7 @@ private Q_SLOTS:
     void conditions_data();
     void conditions();
     void ladderNetworkHaltsOnceAndStepsByNetwork();
+    void packedRungsRunTheSameWhenHalting();
     void sfcStepHaltsWhenItBecomesActive();
     void sfcTransitionHaltsWhenItFires();
 };
@@ -389,6 +390,58 @@ void TestDebugger::ladderNetworkHaltsOnceAndStepsByNetwork()
     runtime.setBreakpoints({second});
     QVERIFY(!runtime.runCycle());
     QCOMPARE(runtime.halt()->at.localId, 6);
+}
+
+// Ten rungs --[a]--[/b]--+--(o)  with  --[c]--[o of the rung before]-- in parallel: the compiler
+// packs them into one RungBlock, which the debugger's code unpacks; every cycle the memory must
+// be that of a run without breakpoints.
+void TestDebugger::packedRungsRunTheSameWhenHalting()
+{
+    constexpr int kRungs = 10;
+    iec::testing::Diagram d;
+    QStringList names;
+    for (int k = 0; k < kRungs; ++k) {
+        const quint64 base = 10 * quint64(k) + 10;
+        const double y = 60.0 * k;
+        const QString n = QString::number(k);
+        d.rail(base, y);
+        d.contact(base + 1, QStringLiteral("a") + n, {{base, {}}}, 100, y);
+        d.contact(base + 2, QStringLiteral("b") + n, {{base + 1, {}}}, 200, y, true);
+        d.contact(base + 3, QStringLiteral("c") + n, {{base, {}}}, 100, y + 30);
+        d.contact(base + 4, k == 0 ? QStringLiteral("c0") : QStringLiteral("o") + QString::number(k - 1), {{base + 3, {}}}, 200, y + 30);
+        d.coil(base + 5, QStringLiteral("o") + n, {{base + 2, {}}, {base + 4, {}}}, 400, y);
+        names << QStringLiteral("a") + n << QStringLiteral("b") + n << QStringLiteral("c") + n << QStringLiteral("o") + n;
+    }
+    auto module = buildProject(iec::testing::diagramProject(QStringLiteral("VAR %1 : BOOL; END_VAR").arg(names.join(QStringLiteral(", "))),
+                                                            model::BodyLanguage::LD, d));
+    QVERIFY(module);
+    QVERIFY(std::ranges::any_of(module->code, [](const Instr &i) { return i.op == op::RungBlock; }));
+    Runtime plain(module);
+    Runtime halting(module);
+    Breakpoint third;
+    third.at = {QStringLiteral("Main"), 0, 35, {31, 32, 33, 34, 35}};
+    halting.setBreakpoints({third});
+    quint32 pattern = 12345;
+    int halts = 0;
+    for (int cycle = 1; cycle <= 20; ++cycle) {
+        for (int k = 0; k < kRungs; ++k) {
+            for (const char *input : {"a", "b", "c"}) {
+                pattern = pattern * 1103515245u + 12345u;
+                const QString name = QStringLiteral("Main.%1%2").arg(QLatin1String(input)).arg(k);
+                const QString value = (pattern >> 16) & 1 ? QStringLiteral("TRUE") : QStringLiteral("FALSE");
+                QVERIFY(!plain.write(name, value));
+                QVERIFY(!halting.write(name, value));
+            }
+        }
+        QVERIFY(plain.runCycle());
+        bool done = halting.runCycle();
+        while (!done) {
+            ++halts;
+            done = halting.resume(halts % 2 ? ResumeKind::StepOver : ResumeKind::Continue);
+        }
+        QVERIFY2(halting.vm().memory() == plain.vm().memory(), qPrintable(QStringLiteral("cycle %1").arg(cycle)));
+    }
+    QVERIFY(halts >= 20);
 }
 
 void TestDebugger::sfcStepHaltsWhenItBecomesActive()
