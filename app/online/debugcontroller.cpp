@@ -327,6 +327,8 @@ void DebugController::showHalt(const interp::RuntimeSnapshot &snapshot)
     updateActions();
     if (!changed)
         return;
+    if (!m_halt && !m_haltMessage.isEmpty() && m_statusBar.currentMessage() == m_haltMessage)
+        m_statusBar.clearMessage(); // it went on: "Halted in …" is no longer true
     if (m_halt && m_cursorTarget) {
         m_cursorTarget.reset(); // reached, or another breakpoint came first: Run to Cursor is over
         sendBreakpoints();
@@ -348,6 +350,7 @@ void DebugController::showHalt(const interp::RuntimeSnapshot &snapshot)
         if (!m_halt->conditionProblem.isEmpty())
             message += QLatin1Char(' ') + tr("The breakpoint's condition could not be checked: %1").arg(m_halt->conditionProblem);
         m_statusBar.showMessage(message);
+        m_haltMessage = message;
     }
     refreshMarks();
 }

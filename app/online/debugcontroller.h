@@ -93,6 +93,7 @@ private:
     QStatusBar &m_statusBar;
     std::vector<StoredBreakpoint> m_breakpoints;
     std::optional<interp::HaltInfo> m_halt;
+    QString m_haltMessage; // the status bar's "Halted in …", cleared when the program goes on
     QAction *m_toggle = nullptr;
     QAction *m_removeAll = nullptr;
     QAction *m_properties = nullptr;

@@ -75,6 +75,8 @@ bool Runtime::runCycle()
         return false;
     if (m_halt)
         return resume(ResumeKind::Continue);
+    // A cycle of its own is no step: a step that ended the last cycle does not halt this one.
+    m_vm.stepMaxDepth = -1;
     beginCycle();
     return runTasksFrom(0);
 }

@@ -129,6 +129,7 @@ void TestDebugging::breakpointHaltsStepsAndFinishesTheCycle()
     QVERIFY(!online.latestSnapshot()->halt);
     QCOMPARE(online.latestSnapshot()->cycle, 2);
     QCOMPARE(editor->haltedLine(), 0);
+    QCOMPARE(window.statusBar()->currentMessage(), QString()); // "Halted in …" went with the halt
     QVERIFY(!window.debugger().stepOutAction()->isEnabled());
     online.logout();
     // The breakpoint stays with the body after logout.

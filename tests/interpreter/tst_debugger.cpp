@@ -60,6 +60,7 @@ private Q_SLOTS:
     void hitCountsAndConditions();
     void conditionThatCannotBeEvaluatedHalts();
     void steppingOverIntoAndOut();
+    void stepPastTheLastLineEndsTheCycle();
     void haltingChangesNoResult();
     void endlessLoopStillHalts();
     void noBreakpointsMeansNoStops();
@@ -190,6 +191,28 @@ void TestDebugger::steppingOverIntoAndOut()
     QVERIFY(!runtime.resume(ResumeKind::StepOver));
     QCOMPARE(where(runtime), QStringLiteral("Main:11"));
     QCOMPARE(runtime.read(QStringLiteral("Main.a.total")), QStringLiteral("3"));
+}
+
+// A step from the last line ends the cycle; Run (runCycle) then runs through, a step halts at
+// the first line of the next cycle.
+void TestDebugger::stepPastTheLastLineEndsTheCycle()
+{
+    auto module = build(QString::fromLatin1(kCalls));
+    QVERIFY(module);
+    Runtime runtime(module);
+    runtime.setBreakpoints({at(QStringLiteral("Main"), 11)});
+    QVERIFY(!runtime.runCycle());
+    runtime.setBreakpoints({});
+    QVERIFY(runtime.resume(ResumeKind::StepOver));
+    QCOMPARE(runtime.cycle(), 1);
+    QVERIFY(!runtime.isHalted());
+    QVERIFY(runtime.runCycle()); // no breakpoint, no step: the cycle runs through
+    QCOMPARE(runtime.cycle(), 2);
+    QVERIFY(!runtime.resume(ResumeKind::StepOver)); // not halted: a step starts a cycle
+    QCOMPARE(where(runtime), QStringLiteral("Main:9"));
+    QCOMPARE(runtime.halt()->cycle, 3);
+    QVERIFY(runtime.resume(ResumeKind::Continue));
+    QVERIFY(!runtime.vm().hasStops());
 }
 
 // Halting at every line of every cycle and going on gives, cycle by cycle, the memory image of
