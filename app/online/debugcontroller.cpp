@@ -284,7 +284,11 @@ void DebugController::refreshMarks()
         std::vector<editors::OnlineView::Place> places;
         for (const StoredBreakpoint &stored : m_breakpoints)
             if (stored.body == document.body)
-                places.push_back(stored.place);
+            {
+                editors::OnlineView::Place place = stored.place;
+                place.enabled = stored.settings.enabled;
+                places.push_back(std::move(place));
+            }
         std::optional<editors::OnlineView::Place> halted;
         if (haltedBody && *haltedBody == document.body)
             halted = editors::OnlineView::Place{m_halt->at.line, m_halt->at.localId};

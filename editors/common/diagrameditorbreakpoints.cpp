@@ -47,11 +47,12 @@ void DiagramEditor::refreshBreakpointMarks()
     if (!m_view)
         return;
     QList<QRectF> marks;
+    QList<QRectF> disabled;
     for (const Place &place : m_breakpointPlaces)
         if (const QRectF anchor = breakpointAnchor(place.localId); !anchor.isEmpty())
-            marks.append(anchor);
+            (place.enabled ? marks : disabled).append(anchor);
     const QRectF halted = m_haltedPlace ? breakpointAnchor(m_haltedPlace->localId) : QRectF();
-    m_view->setBreakpointMarks(marks, halted);
+    m_view->setBreakpointMarks(marks, halted, disabled);
 }
 
 } // namespace iec::editors

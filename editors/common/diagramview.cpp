@@ -73,12 +73,13 @@ void DiagramView::drawBackground(QPainter *painter, const QRectF &rect)
     painter->restore();
 }
 
-void DiagramView::setBreakpointMarks(QList<QRectF> breakpoints, QRectF halted)
+void DiagramView::setBreakpointMarks(QList<QRectF> breakpoints, QRectF halted, QList<QRectF> disabled)
 {
-    if (breakpoints == m_breakpointMarks && halted == m_haltedMark)
+    if (breakpoints == m_breakpointMarks && halted == m_haltedMark && disabled == m_disabledMarks)
         return;
     const bool newHalt = !halted.isEmpty() && halted != m_haltedMark;
     m_breakpointMarks = std::move(breakpoints);
+    m_disabledMarks = std::move(disabled);
     m_haltedMark = halted;
     if (newHalt)
         ensureVisible(halted, 40, 40);
@@ -88,7 +89,7 @@ void DiagramView::setBreakpointMarks(QList<QRectF> breakpoints, QRectF halted)
 void DiagramView::drawForeground(QPainter *painter, const QRectF &rect)
 {
     QGraphicsView::drawForeground(painter, rect);
-    if (m_breakpointMarks.isEmpty() && m_haltedMark.isEmpty())
+    if (m_breakpointMarks.isEmpty() && m_disabledMarks.isEmpty() && m_haltedMark.isEmpty())
         return;
     painter->save();
     painter->setRenderHint(QPainter::Antialiasing);
@@ -102,6 +103,10 @@ void DiagramView::drawForeground(QPainter *painter, const QRectF &rect)
     painter->setBrush(QColor(0xd3, 0x2f, 0x2f));
     for (const QRectF &mark : std::as_const(m_breakpointMarks))
         painter->drawEllipse(QPointF(mark.left() + 3, mark.top() + 3), 6, 6);
+    painter->setPen(QPen(QColor(0xd3, 0x2f, 0x2f), 2));
+    painter->setBrush(Qt::NoBrush);
+    for (const QRectF &mark : std::as_const(m_disabledMarks))
+        painter->drawEllipse(QPointF(mark.left() + 3, mark.top() + 3), 5.5, 5.5);
     painter->restore();
 }
 

@@ -28,8 +28,9 @@ public:
     // Debugging marks over the drawing (scene rectangles): a red dot at the top left of each
     // breakpoint's place, the place the program is halted at tinted yellow (an empty rectangle:
     // none). Not part of the scene, so exports and prints leave them out.
-    void setBreakpointMarks(QList<QRectF> breakpoints, QRectF halted);
+    void setBreakpointMarks(QList<QRectF> breakpoints, QRectF halted, QList<QRectF> disabled = {});
     [[nodiscard]] const QList<QRectF> &breakpointMarks() const { return m_breakpointMarks; }
+    [[nodiscard]] const QList<QRectF> &disabledBreakpointMarks() const { return m_disabledMarks; } // drawn hollow
     [[nodiscard]] QRectF haltedMark() const { return m_haltedMark; }
 
 Q_SIGNALS:
@@ -49,6 +50,7 @@ private:
     QPoint m_lastPanPosition;
     int m_gridSize = 0;
     QList<QRectF> m_breakpointMarks;
+    QList<QRectF> m_disabledMarks;
     QRectF m_haltedMark;
 };
 

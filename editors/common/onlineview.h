@@ -38,6 +38,7 @@ public:
         int line = 0;
         qint64 localId = -1;          // graphical: the element that names the place
         std::vector<qint64> elements; // graphical: every element it stands for (an LD/FBD network's)
+        bool enabled = true;          // a breakpoint switched off is drawn hollow
         // Two places are one when they name the same line or element, whatever else they hold.
         bool operator==(const Place &other) const { return line == other.line && localId == other.localId; }
     };

@@ -89,8 +89,9 @@ public:
 
     // Debugging: red dots in the margin on breakpoint lines, the line the program is halted at
     // in yellow (1-based lines; 0: none). A click in the margin's left column asks for a toggle.
-    void setBreakpointLines(const QList<int> &lines);
+    void setBreakpointLines(const QList<int> &lines, const QList<int> &disabledLines = {});
     [[nodiscard]] const QList<int> &breakpointLines() const { return m_breakpointLines; }
+    [[nodiscard]] const QList<int> &disabledBreakpointLines() const { return m_disabledBreakpointLines; }
     void setHaltedLine(int line);
     [[nodiscard]] int haltedLine() const { return m_haltedLine; }
 
@@ -174,6 +175,7 @@ private:
     bool m_online = false;
     std::vector<QList<OnlineChip>> m_onlineChips;
     QList<int> m_breakpointLines;
+    QList<int> m_disabledBreakpointLines; // drawn hollow
     int m_haltedLine = 0;
 };
 

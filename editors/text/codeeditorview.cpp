@@ -121,8 +121,9 @@ void CodeEditor::paintLineNumberArea(QPaintEvent *event)
                 0, top, numberRight, lineHeight, Qt::AlignRight | Qt::AlignVCenter, QString::number(number + 1));
 
             if (m_breakpointLines.contains(number + 1)) {
-                painter.setPen(QPen(Qt::white, 1));
-                painter.setBrush(kBreakpoint);
+                const bool off = m_disabledBreakpointLines.contains(number + 1);
+                painter.setPen(off ? QPen(kBreakpoint, 1.5) : QPen(Qt::white, 1));
+                painter.setBrush(off ? QBrush(Qt::NoBrush) : QBrush(kBreakpoint));
                 const double r = std::min(kMarkColumnWidth / 2.0, lineHeight / 2.0 - 1);
                 painter.drawEllipse(QPointF(kMarkColumnWidth / 2.0 + 1, top + lineHeight / 2.0), r, r);
             }
@@ -563,11 +564,12 @@ void CodeEditor::paintOnlineChips(const QPaintEvent *event)
 }
 
 
-void CodeEditor::setBreakpointLines(const QList<int> &lines)
+void CodeEditor::setBreakpointLines(const QList<int> &lines, const QList<int> &disabledLines)
 {
-    if (lines == m_breakpointLines)
+    if (lines == m_breakpointLines && disabledLines == m_disabledBreakpointLines)
         return;
     m_breakpointLines = lines;
+    m_disabledBreakpointLines = disabledLines;
     m_lineNumberArea->update();
 }
 

@@ -141,10 +141,15 @@ std::optional<OnlineView::Place> TextEditorWidget::breakpointPlace() const
 void TextEditorWidget::setBreakpointMarks(const std::vector<Place> &breakpoints, std::optional<Place> halted)
 {
     QList<int> lines;
-    for (const Place &place : breakpoints)
-        if (place.line > 0)
-            lines.append(place.line);
-    m_editor->setBreakpointLines(lines);
+    QList<int> disabled;
+    for (const Place &place : breakpoints) {
+        if (place.line <= 0)
+            continue;
+        lines.append(place.line);
+        if (!place.enabled)
+            disabled.append(place.line);
+    }
+    m_editor->setBreakpointLines(lines, disabled);
     m_editor->setHaltedLine(halted ? halted->line : 0);
 }
 

@@ -149,6 +149,15 @@ void TestDebugging::breakpointHaltsStepsAndFinishesTheCycle()
     window.projectModel().reset(read.project);
     QCOMPARE(window.debugger().breakpoints().size(), size_t(1));
     QCOMPARE(window.debugger().breakpoints().front().place.line, 3);
+    // A breakpoint switched off is kept and drawn hollow.
+    QWidget *reopened = window.documents().openBody({window.projectModel().project().findPou(QStringLiteral("Main"))->id, model::BodyRef::Part::Pou, {}});
+    editors::CodeEditor *again = reopened->findChild<editors::TextEditorWidget *>()->editor();
+    const DebugController::StoredBreakpoint stored = window.debugger().breakpoints().front();
+    interp::Breakpoint off = stored.settings;
+    off.enabled = false;
+    window.debugger().setBreakpointSettings(stored.body, stored.place, off);
+    QCOMPARE(again->breakpointLines(), QList<int>{3});
+    QCOMPARE(again->disabledBreakpointLines(), QList<int>{3});
 }
 
 // F9 on a network of the star-delta example: its band gets the dot, the program halts there
@@ -170,6 +179,16 @@ void TestDebugging::ladderNetworkBreakpoint()
     QCOMPARE(window.debugger().breakpoints().size(), size_t(1));
     QCOMPARE(ld->view()->breakpointMarks().size(), 1);
     const QRectF secondBand = ld->view()->breakpointMarks().front();
+    // Switched off in its properties it is drawn hollow, and back.
+    const DebugController::StoredBreakpoint stored = window.debugger().breakpoints().front();
+    interp::Breakpoint off = stored.settings;
+    off.enabled = false;
+    window.debugger().setBreakpointSettings(stored.body, stored.place, off);
+    QVERIFY(ld->view()->breakpointMarks().isEmpty());
+    QCOMPARE(ld->view()->disabledBreakpointMarks(), QList<QRectF>{secondBand});
+    window.debugger().setBreakpointSettings(stored.body, stored.place, stored.settings);
+    QCOMPARE(ld->view()->breakpointMarks(), QList<QRectF>{secondBand});
+    QVERIFY(ld->view()->disabledBreakpointMarks().isEmpty());
 
     OnlineController &online = window.online();
     QVERIFY(online.login());
