@@ -2079,6 +2079,10 @@ Automatisch gespeichert: %2</translation>
             <source>Prepared %1 := %2. Write it with Ctrl+F7 or force it with F7.</source>
             <translation>%1 := %2 vorbereitet. Mit Strg+F7 schreiben oder mit F7 forcen.</translation>
         </message>
+        <message>
+            <source>network %1</source>
+            <translation>Netzwerk %1</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::DiagramExport</name>
@@ -3288,10 +3292,6 @@ Automatisch gespeichert: %2</translation>
             <source>&amp;Delete</source>
             <translation>&amp;Löschen</translation>
         </message>
-        <message>
-            <source>network %1</source>
-            <translation>Netzwerk %1</translation>
-        </message>
     </context>
     <context>
         <name>iec::editors::fbd::FbdEdits</name>
@@ -3597,10 +3597,6 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>S/R</source>
             <translation>S/R</translation>
-        </message>
-        <message>
-            <source>network %1</source>
-            <translation>Netzwerk %1</translation>
         </message>
     </context>
     <context>

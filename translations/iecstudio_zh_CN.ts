@@ -2076,6 +2076,10 @@ Autosaved: %2</source>
             <source>Prepared %1 := %2. Write it with Ctrl+F7 or force it with F7.</source>
             <translation>已准备 %1 := %2。按 Ctrl+F7 写入,或按 F7 强制。</translation>
         </message>
+        <message>
+            <source>network %1</source>
+            <translation>网络 %1</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::DiagramExport</name>
@@ -3283,10 +3287,6 @@ Autosaved: %2</source>
             <source>&amp;Delete</source>
             <translation>删除(&amp;D)</translation>
         </message>
-        <message>
-            <source>network %1</source>
-            <translation>网络 %1</translation>
-        </message>
     </context>
     <context>
         <name>iec::editors::fbd::FbdEdits</name>
@@ -3592,10 +3592,6 @@ Autosaved: %2</source>
         <message>
             <source>S/R</source>
             <translation>S/R</translation>
-        </message>
-        <message>
-            <source>network %1</source>
-            <translation>网络 %1</translation>
         </message>
     </context>
     <context>

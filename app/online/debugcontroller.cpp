@@ -140,10 +140,7 @@ void DebugController::setBreakpointSettings(const model::BodyRef &body, const ed
     if (stored == m_breakpoints.end())
         stored = m_breakpoints.insert(m_breakpoints.end(), {body, place, {}});
     stored->settings = settings;
-    sendBreakpoints();
-    refreshMarks();
-    updateActions();
-    Q_EMIT breakpointsChanged();
+    breakpointsEdited();
 }
 
 void DebugController::runToCursor()
@@ -178,6 +175,12 @@ void DebugController::toggleBreakpoint(const model::BodyRef &body, const editors
     const auto same = [&](const StoredBreakpoint &b) { return b.body == body && b.place == place; };
     if (std::erase_if(m_breakpoints, same) == 0)
         m_breakpoints.push_back({body, place, {}});
+    breakpointsEdited();
+}
+
+// After any change of the breakpoints: the runtime, the marks and the actions follow.
+void DebugController::breakpointsEdited()
+{
     sendBreakpoints();
     refreshMarks();
     updateActions();
@@ -187,29 +190,25 @@ void DebugController::toggleBreakpoint(const model::BodyRef &body, const editors
 void DebugController::removeAllBreakpoints()
 {
     m_breakpoints.clear();
-    sendBreakpoints();
-    refreshMarks();
-    updateActions();
-    Q_EMIT breakpointsChanged();
+    breakpointsEdited();
 }
 
-// The name the compiled module gives a body: the POU's, or "Pou.Action".
+// The name the compiled module gives a body, which is its tab's title: Main, or Main.Reset.
 QString DebugController::ownerName(const model::BodyRef &body) const
 {
-    const model::Pou *pou = m_projectModel.project().findPou(body.pou);
-    if (!pou)
-        return {};
-    return body.part == model::BodyRef::Part::Action ? pou->name + QLatin1Char('.') + body.name : pou->name;
+    return DocumentArea::title(m_projectModel.project(), body);
 }
 
 std::optional<model::BodyRef> DebugController::bodyOfOwner(const QString &owner) const
 {
-    for (const model::Pou &pou : m_projectModel.project().types.pous) {
-        if (pou.name.compare(owner, Qt::CaseInsensitive) == 0)
-            return model::BodyRef{pou.id, model::BodyRef::Part::Pou, {}};
+    const model::Project &project = m_projectModel.project();
+    for (const model::Pou &pou : project.types.pous) {
+        std::vector<model::BodyRef> bodies{{pou.id, model::BodyRef::Part::Pou, {}}};
         for (const model::PouAction &action : pou.actions)
-            if (QString(pou.name + QLatin1Char('.') + action.name).compare(owner, Qt::CaseInsensitive) == 0)
-                return model::BodyRef{pou.id, model::BodyRef::Part::Action, action.name};
+            bodies.push_back({pou.id, model::BodyRef::Part::Action, action.name});
+        for (const model::BodyRef &body : bodies)
+            if (DocumentArea::title(project, body).compare(owner, Qt::CaseInsensitive) == 0)
+                return body;
     }
     return std::nullopt;
 }
@@ -230,9 +229,7 @@ void DebugController::loadFromProject()
         m_breakpoints.push_back(std::move(stored));
     }
     m_halt.reset();
-    refreshMarks();
-    updateActions();
-    Q_EMIT breakpointsChanged();
+    breakpointsEdited();
 }
 
 model::Project DebugController::projectToSave() const

@@ -78,6 +78,7 @@ Q_SIGNALS:
 private:
     void loadFromProject();
     void sendBreakpoints();
+    void breakpointsEdited();
     void refreshMarks();
     void showHalt(const interp::RuntimeSnapshot &snapshot);
     void listCallStack();

@@ -70,7 +70,7 @@ public Q_SLOTS:
     // F5: logs in when needed, then runs.
     void loginAndRun();
     void stop();
-    // F8: logs in when needed, then runs exactly one cycle.
+    // Ctrl+F5: logs in when needed, then runs exactly one cycle (or finishes a halted one).
     void singleCycle();
     void runCycles(int count);
     void runCyclesInteractive();

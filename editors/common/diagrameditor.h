@@ -160,6 +160,7 @@ public:
 
     // ---- OnlineView
     std::optional<Place> breakpointPlace() const override;
+    QString placeName(qint64 localId) const override;
     void setBreakpointMarks(const std::vector<Place> &breakpoints, std::optional<Place> halted) override;
     QString onlineInstance() const override { return m_onlineInstance; }
     QStringList onlineNames() const override;
@@ -230,9 +231,21 @@ protected:
     // Breakpoints: the elements a breakpoint at the cursor stands for, the first naming it (by
     // default the first selected element; LD and FBD: the elements of the cursor's network).
     [[nodiscard]] virtual std::vector<quint64> breakpointElementsAtCursor() const;
-    // Where the mark of the place named by `localId` goes, in scene coordinates (by default the
-    // item of that element; LD and FBD: the band of its network). Empty: not shown.
-    [[nodiscard]] virtual QRectF breakpointAnchor(qint64 localId) const;
+    // Where the mark of the place named by `localId` goes, in scene coordinates: the band of its
+    // network, else the item of that element. Empty: not shown.
+    [[nodiscard]] QRectF breakpointAnchor(qint64 localId) const;
+    // LD and FBD: the network (0-based) an element belongs to and the band drawn for it; a place
+    // there is the whole network, "network N". -1 / empty: the language has no networks.
+    [[nodiscard]] virtual int networkOfElement(qint64 localId) const
+    {
+        (void)localId;
+        return -1;
+    }
+    [[nodiscard]] virtual QRectF networkBand(int network) const
+    {
+        (void)network;
+        return {};
+    }
     // Draws the marks again (after the scene changed).
     void refreshBreakpointMarks();
     // After the scene was rebuilt or updated: online styles and diagnostics are applied again by

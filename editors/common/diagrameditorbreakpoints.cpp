@@ -19,8 +19,16 @@ QRectF DiagramEditor::breakpointAnchor(qint64 localId) const
 {
     if (localId < 0)
         return {};
+    if (const int network = networkOfElement(localId); network >= 0)
+        return networkBand(network);
     const DiagramItem *item = m_scene->itemFor(quint64(localId));
     return item ? item->sceneBoundingRect() : QRectF();
+}
+
+QString DiagramEditor::placeName(qint64 localId) const
+{
+    const int network = localId < 0 ? -1 : networkOfElement(localId);
+    return network < 0 ? QString() : tr("network %1").arg(network + 1);
 }
 
 std::optional<OnlineView::Place> DiagramEditor::breakpointPlace() const

@@ -2,6 +2,10 @@
 
 #include "editors/common/blockitems.h"
 
+#include <algorithm>
+#include <initializer_list>
+#include <vector>
+
 // Items the network languages share (LD, FBD): outputs that end a network (jumps, returns) and the
 // band of a network (its number, label and comment).
 namespace iec::editors {
@@ -43,5 +47,27 @@ private:
     bool m_freehand;
     bool m_current = false;
 };
+
+// Breakpoints in LD and FBD are on whole networks (docs/debugging.md). The elements one stands
+// for: the network's members but `aside` (its rails, label, comment).
+template<typename Network>
+std::vector<quint64> networkMembersExcept(const Network &network, std::initializer_list<quint64> aside)
+{
+    std::vector<quint64> members;
+    for (const quint64 id : network.members)
+        if (std::ranges::find(aside, id) == aside.end())
+            members.push_back(id);
+    return members;
+}
+
+// The band of network `index` among a policy's network items, in scene coordinates; empty when
+// there is none.
+template<typename NetworkItems>
+QRectF networkBandRect(const std::vector<NetworkItems> &items, int index)
+{
+    if (index < 0 || index >= int(items.size()) || !items[std::size_t(index)].band)
+        return {};
+    return items[std::size_t(index)].band->sceneBoundingRect();
+}
 
 } // namespace iec::editors

@@ -508,28 +508,17 @@ std::vector<quint64> FbdEditor::breakpointElementsAtCursor() const
     if (m_cursor.network < 0 || m_cursor.network >= int(networks.size()))
         return {};
     const auto &n = networks[std::size_t(m_cursor.network)];
-    const quint64 aside[] = {n.label, n.comment};
-    std::vector<quint64> elements;
-    for (const quint64 id : n.members)
-        if (std::ranges::find(aside, id) == std::end(aside))
-            elements.push_back(id);
-    return elements;
+    return networkMembersExcept(n, {n.label, n.comment});
 }
 
-// The mark of a place goes on the band of the network that holds its element.
-QRectF FbdEditor::breakpointAnchor(qint64 localId) const
+int FbdEditor::networkOfElement(qint64 localId) const
 {
-    const int network = localId < 0 ? -1 : document().networkOf(quint64(localId));
-    const auto &items = fbdPolicy().networkItems();
-    if (network < 0 || network >= int(items.size()) || !items[std::size_t(network)].band)
-        return {};
-    return items[std::size_t(network)].band->sceneBoundingRect();
+    return localId < 0 ? -1 : document().networkOf(quint64(localId));
 }
 
-QString FbdEditor::placeName(qint64 localId) const
+QRectF FbdEditor::networkBand(int network) const
 {
-    const int network = localId < 0 ? -1 : document().networkOf(quint64(localId));
-    return network < 0 ? QString() : tr("network %1").arg(network + 1);
+    return networkBandRect(fbdPolicy().networkItems(), network);
 }
 
 } // namespace iec::editors::fbd

@@ -534,28 +534,17 @@ std::vector<quint64> LdEditor::breakpointElementsAtCursor() const
     if (m_cursor.network < 0 || m_cursor.network >= int(networks.size()))
         return {};
     const auto &n = networks[std::size_t(m_cursor.network)];
-    const quint64 aside[] = {n.leftRail, n.rightRail, n.label, n.comment, n.title};
-    std::vector<quint64> elements;
-    for (const quint64 id : n.members)
-        if (std::ranges::find(aside, id) == std::end(aside))
-            elements.push_back(id);
-    return elements;
+    return networkMembersExcept(n, {n.leftRail, n.rightRail, n.label, n.comment, n.title});
 }
 
-// The mark of a place goes on the band of the network that holds its element.
-QRectF LdEditor::breakpointAnchor(qint64 localId) const
+int LdEditor::networkOfElement(qint64 localId) const
 {
-    const int network = localId < 0 ? -1 : document().networkOf(quint64(localId));
-    const auto &items = ldPolicy().networkItems();
-    if (network < 0 || network >= int(items.size()) || !items[std::size_t(network)].band)
-        return {};
-    return items[std::size_t(network)].band->sceneBoundingRect();
+    return localId < 0 ? -1 : document().networkOf(quint64(localId));
 }
 
-QString LdEditor::placeName(qint64 localId) const
+QRectF LdEditor::networkBand(int network) const
 {
-    const int network = localId < 0 ? -1 : document().networkOf(quint64(localId));
-    return network < 0 ? QString() : tr("network %1").arg(network + 1);
+    return networkBandRect(ldPolicy().networkItems(), network);
 }
 
 } // namespace iec::editors::ld

@@ -62,12 +62,8 @@ protected:
     void extendSelection(quint64 localId) override;
     void sceneRefreshed() override;
     [[nodiscard]] std::vector<quint64> breakpointElementsAtCursor() const override;
-    [[nodiscard]] QRectF breakpointAnchor(qint64 localId) const override;
-
-public:
-    QString placeName(qint64 localId) const override;
-
-protected:
+    [[nodiscard]] int networkOfElement(qint64 localId) const override;
+    [[nodiscard]] QRectF networkBand(int network) const override;
     [[nodiscard]] bool acceptsPouDrops() const override { return true; }
     bool dropPou(const QString &typeName, QPointF scenePos) override;
     bool eventFilter(QObject *watched, QEvent *event) override;

@@ -91,7 +91,7 @@ private:
     bool finishTaskRun(FaultKind kind);
     void endCycle();
     FaultKind passUnwantedHalts(FaultKind kind);
-    bool breakpointHolds(int index);
+    bool breakpointHolds(int index, int hits);
     void updateStops(bool stepping);
     HaltInfo describeHalt(int breakpoint) const;
     QString instanceAt(std::uint32_t offset, int pou) const;
@@ -119,7 +119,6 @@ private:
     std::vector<Breakpoint> m_breakpoints;
     std::vector<int> m_hits;                               // per breakpoint
     std::vector<std::vector<int>> m_breakpointsAtPc;       // pc -> breakpoints there (debugging only)
-    std::vector<std::uint8_t> m_lineStops;                 // Vm::LineStop at every line start
     std::optional<HaltInfo> m_halt;
     size_t m_haltedTask = 0;
     QString m_conditionProblem; // of the breakpoint last checked

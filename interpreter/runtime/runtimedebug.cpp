@@ -60,7 +60,6 @@ void Runtime::updateStops(bool stepping)
         }
     }
     if (!any && !stepping) {
-        m_lineStops.clear();
         if (m_vm.hasStops())
             m_vm.setStops({});
         return;
@@ -70,7 +69,6 @@ void Runtime::updateStops(bool stepping)
     for (const LineEntry &entry : m_module->lines)
         if (entry.pc < stops.size() && (entry.line > 0 || entry.localId >= 0))
             stops[entry.pc] |= Vm::LineStop;
-    m_lineStops = stops;
     for (size_t pc = 0; pc < m_breakpointsAtPc.size() && pc < stops.size(); ++pc)
         if (!m_breakpointsAtPc[pc].empty())
             stops[pc] |= Vm::BreakpointStop;
@@ -84,9 +82,7 @@ bool Runtime::resume(ResumeKind kind)
     const bool stepping = kind != ResumeKind::Continue;
     if (stepping && !m_vm.hasStops())
         updateStops(true);
-    std::int64_t depth = 0;
-    if (m_halt)
-        depth = std::int64_t(m_vm.haltedFrames().size()) - 1;
+    const auto depth = std::int64_t(m_vm.haltedDepth());
     switch (kind) {
     case ResumeKind::Continue: m_vm.stepMaxDepth = -1; break;
     case ResumeKind::StepInto: m_vm.stepMaxDepth = std::numeric_limits<std::int64_t>::max(); break;
@@ -98,7 +94,7 @@ bool Runtime::resume(ResumeKind kind)
         return runTasksFrom(0);
     }
     m_halt.reset();
-    if (!stepping)
+    if (!stepping && m_breakpointsAtPc.empty())
         updateStops(false); // without breakpoints the rest runs at full speed
     if (!finishTaskRun(m_vm.resume()))
         return false;
@@ -111,15 +107,17 @@ FaultKind Runtime::passUnwantedHalts(FaultKind kind)
 {
     while (kind == FaultKind::Halted) {
         const std::uint32_t pc = m_vm.faultPc();
-        const auto depth = std::int64_t(m_vm.haltedFrames().size()) - 1;
-        const bool stepHalts = m_vm.stepMaxDepth >= 0 && pc < m_lineStops.size() && (m_lineStops[pc] & Vm::LineStop)
-            && depth <= m_vm.stepMaxDepth;
+        const bool stepHalts = m_vm.stepMaxDepth >= 0 && (m_vm.stopAt(pc) & Vm::LineStop)
+            && std::int64_t(m_vm.haltedDepth()) <= m_vm.stepMaxDepth;
+        // Every breakpoint here counts the hit; the first whose rule and condition hold halts.
         int hit = -1;
         m_conditionProblem.clear();
         if (pc < m_breakpointsAtPc.size())
-            for (const int index : m_breakpointsAtPc[pc])
-                if (hit < 0 ? breakpointHolds(index) : (++m_hits[size_t(index)], false))
+            for (const int index : m_breakpointsAtPc[pc]) {
+                const int hits = ++m_hits[size_t(index)];
+                if (hit < 0 && breakpointHolds(index, hits))
                     hit = index;
+            }
         if (stepHalts || hit >= 0) {
             m_vm.stepMaxDepth = -1;
             m_halt = describeHalt(hit);
@@ -132,12 +130,11 @@ FaultKind Runtime::passUnwantedHalts(FaultKind kind)
     return kind;
 }
 
-// Counts the hit, then checks the hit rule and the condition (an expression that cannot be
+// Whether the hit rule (for `hits` hits) and the condition hold (an expression that cannot be
 // evaluated halts, with the reason in the halt, so a typo does not hide the place).
-bool Runtime::breakpointHolds(int index)
+bool Runtime::breakpointHolds(int index, int hits)
 {
     const Breakpoint &b = m_breakpoints[size_t(index)];
-    const int hits = ++m_hits[size_t(index)];
     const int target = std::max(1, b.hitTarget);
     bool counted = true;
     switch (b.hitRule) {
@@ -148,9 +145,10 @@ bool Runtime::breakpointHolds(int index)
     }
     if (!counted || b.condition.trimmed().isEmpty())
         return counted;
-    const std::vector<Vm::HaltedFrame> frames = m_vm.haltedFrames();
-    const LineEntry line = m_module->lineAt(frames.back().pc);
-    ConditionScope scope{*m_module, m_vm.memory().data(), {m_images[0].data(), m_images[1].data(), m_images[2].data()}, instanceAt(frames.back().instance, line.pou)};
+    const Vm::HaltedFrame halted = m_vm.haltedFrame();
+    const LineEntry line = m_module->lineAt(halted.pc);
+    ConditionScope scope{*m_module, m_vm.memory().data(), {m_images[0].data(), m_images[1].data(), m_images[2].data()},
+                         instanceAt(halted.instance, line.pou)};
     const ConditionResult result = evaluateCondition(b.condition, scope);
     m_conditionProblem = result.error;
     return !result.value || *result.value;

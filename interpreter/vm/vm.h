@@ -57,6 +57,7 @@ public:
     enum StopKind : std::uint8_t { NoStop = 0, BreakpointStop = 1, LineStop = 2 };
     void setStops(std::vector<std::uint8_t> stops); // one per pc (shorter is padded); empty: none
     bool hasStops() const { return !m_debugCode.empty(); }
+    std::uint8_t stopAt(std::uint32_t pc) const { return pc < m_stops.size() ? m_stops[pc] : std::uint8_t(NoStop); }
     std::int64_t stepMaxDepth = -1;                 // -1: not stepping
     // After FaultKind::Halted: goes on from the halt, running the halted instruction first.
     FaultKind resume();
@@ -66,6 +67,9 @@ public:
         std::uint32_t instance = 0; // offset of the instance it runs on
     };
     std::vector<HaltedFrame> haltedFrames() const; // outermost first, the halted one last
+    // Without copying the frames: how many callers the halted body has, and where it halted.
+    std::size_t haltedDepth() const { return m_halt ? m_halt->callers.size() : 0; }
+    HaltedFrame haltedFrame() const { return m_halt ? HaltedFrame{m_halt->pc, m_halt->instance} : HaltedFrame{}; }
 
 private:
     FaultKind execute(std::uint32_t entry, bool resuming);
