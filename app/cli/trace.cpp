@@ -21,21 +21,11 @@ bool Trace::finish(QString &error)
     return true;
 }
 
-QString formatMilliseconds(std::int64_t ns)
-{
-    if (ns % 1'000'000 == 0)
-        return QString::number(ns / 1'000'000);
-    QString text = QString::number(static_cast<double>(ns) / 1e6, 'f', 6);
-    while (text.endsWith(QLatin1Char('0')))
-        text.chop(1);
-    return text;
-}
-
 OpenedTrace openTrace(const QString &path, std::vector<TracedVariable> variables)
 {
     OpenedTrace opened;
     if (path.endsWith(QLatin1String(".vcd"), Qt::CaseInsensitive)) {
-        if (!vcdCanHold(variables, opened.error))
+        if (!interp::vcdCanHold(variables, opened.error))
             return opened;
         opened.trace = std::make_unique<VcdTrace>(path, std::move(variables));
     } else {

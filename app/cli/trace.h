@@ -1,6 +1,7 @@
 #pragma once
 
 #include "interpreter/runtime/runtime.h"
+#include "interpreter/runtime/tracedata.h"
 
 #include <QFile>
 #include <QString>
@@ -11,11 +12,7 @@
 
 namespace iec::cli {
 
-// A watched variable: the name as the user wrote it and where it lives.
-struct TracedVariable {
-    QString name;
-    interp::VariableRef ref;
-};
+using TracedVariable = interp::TraceVariable;
 
 // Records the watched variables after every cycle (formats: docs/cli.md).
 class Trace
@@ -50,8 +47,5 @@ struct OpenedTrace {
 // A CSV trace for OUT.csv, a VCD trace for OUT.vcd. Fails when the file cannot be created or
 // (VCD) a variable is not a BOOL, number, bit string, enum or time.
 OpenedTrace openTrace(const QString &path, std::vector<TracedVariable> variables);
-
-// Virtual milliseconds, without a fraction when whole: 10, 2.5.
-QString formatMilliseconds(std::int64_t ns);
 
 } // namespace iec::cli

@@ -1,34 +1,24 @@
 #include "app/cli/trace_csv.h"
 
+#include "interpreter/runtime/traceformats.h"
+
 namespace iec::cli {
 
-namespace {
-
-// RFC 4180: a field with a comma, a quote or a line break is quoted, its quotes doubled.
-QString csvField(const QString &text)
-{
-    if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"')) && !text.contains(QLatin1Char('\n')))
-        return text;
-    QString quoted = text;
-    quoted.replace(QLatin1Char('"'), QStringLiteral("\"\""));
-    return QLatin1Char('"') + quoted + QLatin1Char('"');
-}
-
-} // namespace
-
+// Any variable, arrays and strings too: the CSV trace writes what --watch prints. (The IDE's
+// Trace pane writes the same format through interp::makeCsvWriter, for the values it records.)
 void CsvTrace::begin(interp::Runtime &)
 {
     out() << "cycle,time_ms";
     for (const TracedVariable &variable : variables())
-        out() << ',' << csvField(variable.name);
+        out() << ',' << interp::csvField(variable.name);
     out() << '\n';
 }
 
 void CsvTrace::sample(int cycle, interp::Runtime &runtime)
 {
-    out() << cycle << ',' << formatMilliseconds(runtime.timeNs());
+    out() << cycle << ',' << interp::formatMilliseconds(runtime.timeNs());
     for (const TracedVariable &variable : variables())
-        out() << ',' << csvField(runtime.read(variable.ref));
+        out() << ',' << interp::csvField(runtime.read(variable.ref));
     out() << '\n';
 }
 

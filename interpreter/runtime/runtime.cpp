@@ -48,6 +48,39 @@ std::vector<std::uint8_t> &Runtime::image(char area)
     return m_images[area == 'I' ? 0 : area == 'Q' ? 1 : 2];
 }
 
+const std::vector<std::uint8_t> &Runtime::image(char area) const
+{
+    return m_images[area == 'I' ? 0 : area == 'Q' ? 1 : 2];
+}
+
+RuntimeState Runtime::state() const
+{
+    RuntimeState state;
+    state.memory = m_vm.memory();
+    for (int area = 0; area < 3; ++area)
+        state.images[area] = m_images[area];
+    state.timeNs = m_timeNs;
+    state.cycle = m_cycle;
+    state.nextDue = m_nextDue;
+    state.singleBefore = m_singleBefore;
+    return state;
+}
+
+void Runtime::restore(const RuntimeState &state)
+{
+    m_vm.dropHalt();
+    m_halt.reset();
+    m_fault.reset();
+    m_vm.stepMaxDepth = -1;
+    m_vm.memory() = state.memory;
+    for (int area = 0; area < 3; ++area)
+        m_images[area] = state.images[area];
+    m_timeNs = state.timeNs;
+    m_cycle = state.cycle;
+    m_nextDue = state.nextDue;
+    m_singleBefore = state.singleBefore;
+}
+
 // The process image is part of the memory image (Module::imageBase): the input area is copied
 // in before the tasks run, the output and marker areas out after them.
 void Runtime::copyInputs()

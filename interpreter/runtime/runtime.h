@@ -22,6 +22,17 @@ struct RuntimeFault {
     QString toString() const; // "Main:12: Integer division by zero. (cycle 3)"
 };
 
+// Everything a cycle leaves behind for the next: the memory image (variables, timers, SFC steps),
+// the process image, the clock and the tasks' schedule. Restoring it goes back to that scan.
+struct RuntimeState {
+    std::vector<std::uint8_t> memory;
+    std::vector<std::uint8_t> images[3];
+    std::int64_t timeNs = 0;
+    int cycle = 0;
+    std::vector<std::int64_t> nextDue;
+    std::vector<bool> singleBefore;
+};
+
 // Runs a compiled module scan by scan on a virtual clock:
 //   inputs image -> variables, tasks that are due (in priority order), variables -> outputs image.
 // Cycle n runs at time (n - 1) * cycle time. A fault stops the program; the host goes on.
@@ -57,6 +68,12 @@ public:
     void unforce(const QString &name);
 
     std::vector<std::uint8_t> &image(char area); // 'I', 'Q', 'M'
+    const std::vector<std::uint8_t> &image(char area) const;
+
+    // The state between two cycles, and going back to one (ScanHistory keeps them). Restoring
+    // drops a halt and a fault: the program goes on from that scan. Forces stay.
+    RuntimeState state() const;
+    void restore(const RuntimeState &state);
 
     // Messages the program logged (Beremiz LOGGER) since they were last taken.
     struct LogEntry {
@@ -82,6 +99,7 @@ public:
     const std::vector<int> &hitCounts() const { return m_hits; }
 
     Vm &vm() { return m_vm; }
+    const Vm &vm() const { return m_vm; }
     const Module &module() const { return *m_module; }
 
 private:

@@ -62,6 +62,7 @@ public:
     // After FaultKind::Halted: goes on from the halt, running the halted instruction first.
     FaultKind resume();
     bool isHalted() const { return m_halt.has_value(); }
+    void dropHalt() { m_halt.reset(); } // the halted run is abandoned (the runtime went back in time)
     struct HaltedFrame {
         std::uint32_t pc = 0;       // the caller: where it goes on; the innermost: the halt
         std::uint32_t instance = 0; // offset of the instance it runs on
