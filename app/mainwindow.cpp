@@ -14,6 +14,7 @@
 #include "app/messagespane.h"
 #include "app/newprojectdialog.h"
 #include "app/online/debugcontroller.h"
+#include "app/online/historybar.h"
 #include "app/online/onlinecontroller.h"
 #include "app/online/watchpane.h"
 #include "app/projectcommands.h"
@@ -209,6 +210,8 @@ void MainWindow::createMenus()
     m_viewMenu->addAction(m_projectDock->toggleViewAction());
     m_viewMenu->addAction(m_messagesDock->toggleViewAction());
     m_viewMenu->addAction(m_watchDock->toggleViewAction());
+    m_viewMenu->addAction(m_traceDock->toggleViewAction());
+    m_viewMenu->addAction(m_historyBar->toggleViewAction());
 
     // CODESYS inserts objects through the Insert menu; here they are the tree's add commands.
     m_insertMenu = addMenu("insertMenu");
@@ -262,6 +265,8 @@ void MainWindow::createToolBar()
     m_toolBar->addAction(m_debug->stepOverAction());
     m_toolBar->addAction(m_debug->stepIntoAction());
     m_toolBar->addAction(m_debug->stepOutAction());
+    addToolBarBreak();
+    addToolBar(m_historyBar);
 }
 
 void MainWindow::createDocks()
@@ -309,6 +314,7 @@ void MainWindow::createDocks()
         {m_loginAction, m_stopAction, m_singleCycleAction}, this);
     m_debug = new DebugController(*m_projectModel, *m_documents, *m_online, *m_messages, *statusBar(), this);
     createProjectTools();
+    createTraceTools();
 }
 
 void MainWindow::retranslateUi()
@@ -350,6 +356,7 @@ void MainWindow::retranslateUi()
     m_online->retranslate();
     m_debug->retranslate();
     retranslateProjectTools();
+    retranslateTraceTools();
 }
 
 void MainWindow::changeEvent(QEvent *event)
@@ -498,7 +505,7 @@ bool MainWindow::recover(const QString &recoveryFile, QString *error)
 bool MainWindow::saveProject(const QString &path, QString *error)
 {
     m_documents->flushEdits();
-    if (!model::plcopen::saveProjectFile(m_debug->projectToSave(), path, error))
+    if (!model::plcopen::saveProjectFile(projectToSave(), path, error))
         return false;
     m_recovery->discardCurrent();
     m_undoStacks->setClean();

@@ -17,6 +17,7 @@ class QUndoGroup;
 
 namespace iec::model {
 class ProjectModel;
+struct Project;
 }
 
 namespace iec::app {
@@ -33,6 +34,8 @@ class GlobalListCommands;
 class ImportExportActions;
 class MessagesPane;
 class DebugController;
+class HistoryBar;
+class TracePane;
 class OnlineController;
 class ProjectCommands;
 class ProjectTreeActions;
@@ -77,6 +80,10 @@ public:
     [[nodiscard]] SearchResultsPane &searchResults() { return *m_searchResults; }
     [[nodiscard]] LiveDiagnostics &liveDiagnostics() { return *m_liveDiagnostics; }
     [[nodiscard]] LibraryPane &libraryPane() { return *m_library; }
+    [[nodiscard]] TracePane &tracePane() { return *m_trace; }
+    [[nodiscard]] HistoryBar &historyBar() { return *m_historyBar; }
+    // The project as Save writes it: the model with the breakpoints and the trace configuration.
+    [[nodiscard]] model::Project projectToSave() const;
     [[nodiscard]] QString currentFile() const { return m_currentFile; }
     // The undo stacks are not at their clean state, typing is unsaved, or the project was
     // recovered and not saved since.
@@ -135,6 +142,9 @@ private:
     void createProjectTools();
     void extendMenus();
     void retranslateProjectTools();
+    // The Trace pane and the history bar (mainwindowtrace.cpp).
+    void createTraceTools();
+    void retranslateTraceTools();
     // The Insert menu carries the current text editor's insert commands (IL: Operator, Operand,
     // Function, Function Block) below a separator of their own.
     void showTextInsertActions();
@@ -211,6 +221,9 @@ private:
     LiveDiagnostics *m_liveDiagnostics = nullptr;
     LibraryPane *m_library = nullptr;
     QDockWidget *m_libraryDock = nullptr;
+    TracePane *m_trace = nullptr;
+    QDockWidget *m_traceDock = nullptr;
+    HistoryBar *m_historyBar = nullptr;
     MenuSection m_textInsert; // the current text editor's Insert commands
     QAction *m_printDocumentationAction = nullptr;
     QAction *m_exportDocumentationAction = nullptr;

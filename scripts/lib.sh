@@ -5,7 +5,7 @@ IEC_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
 # What building IEC Studio needs on Debian 12.
 IEC_BUILD_PACKAGES=(cmake ninja-build g++ ccache pkg-config
-  qt6-base-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-svg-dev qt6-translations-l10n
+  qt6-base-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-svg-dev qt6-charts-dev libqt6opengl6-dev qt6-translations-l10n
   libpugixml-dev)
 # Fonts for Latin and Chinese text, so the UI and rendered diagrams read in every UI language.
 IEC_FONT_PACKAGES=(fonts-dejavu-core fonts-wqy-microhei)

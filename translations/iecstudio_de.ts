@@ -459,6 +459,49 @@
         </message>
     </context>
     <context>
+        <name>iec::app::HistoryBar</name>
+        <message>
+            <source>Scan History</source>
+            <translation>Zyklushistorie</translation>
+        </message>
+        <message>
+            <source>History: </source>
+            <translation>Historie: </translation>
+        </message>
+        <message>
+            <source>Present</source>
+            <translation>Gegenwart</translation>
+        </message>
+        <message>
+            <source>Show the program as it is now</source>
+            <translation>Das Programm so zeigen, wie es jetzt ist</translation>
+        </message>
+        <message>
+            <source>Resume from Here</source>
+            <translation>Von hier fortsetzen</translation>
+        </message>
+        <message>
+            <source>Go on from the scan shown: the scans after it are dropped, the next cycle starts from its values (write new inputs first, if you like)</source>
+            <translation>Ab dem gezeigten Zyklus weitermachen: die Zyklen danach werden verworfen, der nächste Zyklus beginnt mit seinen Werten (vorher können neue Eingänge geschrieben werden)</translation>
+        </message>
+        <message>
+            <source>Drag (or use the arrow keys) to see the program after an earlier scan</source>
+            <translation>Ziehen (oder Pfeiltasten), um das Programm nach einem früheren Zyklus zu sehen</translation>
+        </message>
+        <message>
+            <source>%1 / %2</source>
+            <translation>%1 / %2</translation>
+        </message>
+        <message>
+            <source>%1 of at most %2 scans kept, %3</source>
+            <translation>%1 von höchstens %2 Zyklen gespeichert, %3</translation>
+        </message>
+        <message>
+            <source>History: after scan %1 (the program is at %2)</source>
+            <translation>Historie: nach Zyklus %1 (das Programm ist bei %2)</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::app::ImportExportActions</name>
         <message>
             <source>&amp;Import...</source>
@@ -804,6 +847,14 @@ Automatisch gespeichert: %2</translation>
             <source>The documentation was written to %1.</source>
             <translation>Die Dokumentation wurde in %1 geschrieben.</translation>
         </message>
+        <message>
+            <source>Trace: %1</source>
+            <translation>Trace: %1</translation>
+        </message>
+        <message>
+            <source>Trace</source>
+            <translation>Trace</translation>
+        </message>
     </context>
     <context>
         <name>iec::app::MessagesPane</name>
@@ -988,6 +1039,10 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>HALT</source>
             <translation>HALT</translation>
+        </message>
+        <message>
+            <source>ONLINE HISTORY | scan %1 of %2 | t = %3 s</source>
+            <translation>ONLINE HISTORIE | Zyklus %1 von %2 | t = %3 s</translation>
         </message>
     </context>
     <context>
@@ -1443,6 +1498,294 @@ Automatisch gespeichert: %2</translation>
         </message>
     </context>
     <context>
+        <name>iec::app::TraceExport</name>
+        <message>
+            <source>%1 cannot be written: %2</source>
+            <translation>%1 kann nicht geschrieben werden: %2</translation>
+        </message>
+        <message>
+            <source>%1 cannot be written.</source>
+            <translation>%1 kann nicht geschrieben werden.</translation>
+        </message>
+        <message>
+            <source>Nothing was recorded yet: choose variables, log in and run the program.</source>
+            <translation>Noch nichts aufgezeichnet: Variablen wählen, einloggen und das Programm starten.</translation>
+        </message>
+        <message>
+            <source>%1: a trace is exported as .csv, .vcd, .png or .pdf.</source>
+            <translation>%1: ein Trace wird als .csv, .vcd, .png oder .pdf exportiert.</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::TracePane</name>
+        <message>
+            <source>Trace</source>
+            <translation>Trace</translation>
+        </message>
+        <message>
+            <source>Configure...</source>
+            <translation>Konfigurieren...</translation>
+        </message>
+        <message>
+            <source>Choose the variables, the trigger and how often to sample</source>
+            <translation>Variablen, Trigger und Abtastrate wählen</translation>
+        </message>
+        <message>
+            <source>Add Variable...</source>
+            <translation>Variable hinzufügen...</translation>
+        </message>
+        <message>
+            <source>Pause</source>
+            <translation>Pause</translation>
+        </message>
+        <message>
+            <source>Restart</source>
+            <translation>Neu starten</translation>
+        </message>
+        <message>
+            <source>Drop the samples and record again (the trigger is armed again)</source>
+            <translation>Aufzeichnung verwerfen und neu aufzeichnen (der Trigger wird wieder scharf)</translation>
+        </message>
+        <message>
+            <source>Zoom In</source>
+            <translation>Vergrößern</translation>
+        </message>
+        <message>
+            <source>Zoom Out</source>
+            <translation>Verkleinern</translation>
+        </message>
+        <message>
+            <source>Fit</source>
+            <translation>Einpassen</translation>
+        </message>
+        <message>
+            <source>Show every sample and follow the newest</source>
+            <translation>Alle Werte zeigen und den neuesten folgen</translation>
+        </message>
+        <message>
+            <source>Export</source>
+            <translation>Exportieren</translation>
+        </message>
+        <message>
+            <source>CSV (spreadsheet)...</source>
+            <translation>CSV (Tabellenkalkulation)...</translation>
+        </message>
+        <message>
+            <source>VCD (GTKWave)...</source>
+            <translation>VCD (GTKWave)...</translation>
+        </message>
+        <message>
+            <source>PNG picture...</source>
+            <translation>PNG-Bild...</translation>
+        </message>
+        <message>
+            <source>PDF for a lab report...</source>
+            <translation>PDF für ein Laborprotokoll...</translation>
+        </message>
+        <message>
+            <source>Remove from Trace</source>
+            <translation>Aus dem Trace entfernen</translation>
+        </message>
+        <message>
+            <source>Cursor 1</source>
+            <translation>Cursor 1</translation>
+        </message>
+        <message>
+            <source>Cursor 2</source>
+            <translation>Cursor 2</translation>
+        </message>
+        <message>
+            <source>Difference</source>
+            <translation>Differenz</translation>
+        </message>
+        <message>
+            <source>Tick to show a lane, drag to reorder. In the chart: click for cursor 1, Shift+click for cursor 2, wheel to zoom.</source>
+            <translation>Ankreuzen zeigt eine Spur, Ziehen ordnet um. Im Diagramm: Klick setzt Cursor 1, Umschalt+Klick Cursor 2, das Mausrad zoomt.</translation>
+        </message>
+        <message>
+            <source>Time (ms)</source>
+            <translation>Zeit (ms)</translation>
+        </message>
+        <message>
+            <source>Cycle</source>
+            <translation>Zyklus</translation>
+        </message>
+        <message>
+            <source>Nothing to record: choose variables with Configure... or Add Variable...</source>
+            <translation>Nichts aufzuzeichnen: Variablen mit Konfigurieren... oder Variable hinzufügen... wählen</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n sample(s)</source>
+            <translation>
+                <numerusform>%n Wert</numerusform>
+                <numerusform>%n Werte</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Offline: the trace records while you are logged in.</source>
+            <translation>Offline: der Trace zeichnet auf, solange Sie eingeloggt sind.</translation>
+        </message>
+        <message>
+            <source>Offline: %1 from the last session.</source>
+            <translation>Offline: %1 aus der letzten Sitzung.</translation>
+        </message>
+        <message>
+            <source>The record condition cannot be evaluated: %1</source>
+            <translation>Die Aufzeichnungsbedingung kann nicht ausgewertet werden: %1</translation>
+        </message>
+        <message>
+            <source>Recording: %1.</source>
+            <translation>Aufzeichnung: %1.</translation>
+        </message>
+        <message>
+            <source>Waiting for the trigger on %1: %2 kept before it.</source>
+            <translation>Warte auf den Trigger an %1: %2 davor gespeichert.</translation>
+        </message>
+        <message>
+            <source>Triggered in cycle %1: recording what follows (%2).</source>
+            <translation>Ausgelöst in Zyklus %1: zeichnet auf, was folgt (%2).</translation>
+        </message>
+        <message>
+            <source>Triggered in cycle %1: done, %2. Restart arms the trigger again.</source>
+            <translation>Ausgelöst in Zyklus %1: fertig, %2. Neu starten macht den Trigger wieder scharf.</translation>
+        </message>
+        <message>
+            <source>Paused: %1.</source>
+            <translation>Angehalten: %1.</translation>
+        </message>
+        <message>
+            <source>None of the chosen variables can be recorded (see Messages).</source>
+            <translation>Keine der gewählten Variablen kann aufgezeichnet werden (siehe Meldungen).</translation>
+        </message>
+        <message>
+            <source>Add Variable</source>
+            <translation>Variable hinzufügen</translation>
+        </message>
+        <message>
+            <source>Variable to trace (e.g. Main.Level or a global):</source>
+            <translation>Aufzuzeichnende Variable (z. B. Main.Level oder eine globale):</translation>
+        </message>
+        <message>
+            <source>Trace of %1, %2</source>
+            <translation>Trace von %1, %2</translation>
+        </message>
+        <message>
+            <source>the project</source>
+            <translation>dem Projekt</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV-Dateien (*.csv)</translation>
+        </message>
+        <message>
+            <source>Value change dumps (*.vcd)</source>
+            <translation>Value Change Dumps (*.vcd)</translation>
+        </message>
+        <message>
+            <source>PNG pictures (*.png)</source>
+            <translation>PNG-Bilder (*.png)</translation>
+        </message>
+        <message>
+            <source>PDF documents (*.pdf)</source>
+            <translation>PDF-Dokumente (*.pdf)</translation>
+        </message>
+        <message>
+            <source>Export Trace</source>
+            <translation>Trace exportieren</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::TraceSettingsDialog</name>
+        <message>
+            <source>Trace Configuration</source>
+            <translation>Trace-Konfiguration</translation>
+        </message>
+        <message>
+            <source>One variable per line, e.g. Main.Level</source>
+            <translation>Eine Variable pro Zeile, z. B. Main.Level</translation>
+        </message>
+        <message>
+            <source> cycle(s)</source>
+            <translation> Zyklus/Zyklen</translation>
+        </message>
+        <message>
+            <source>None (record all the time)</source>
+            <translation>Keiner (immer aufzeichnen)</translation>
+        </message>
+        <message>
+            <source>Rising edge</source>
+            <translation>Steigende Flanke</translation>
+        </message>
+        <message>
+            <source>Falling edge</source>
+            <translation>Fallende Flanke</translation>
+        </message>
+        <message>
+            <source>Level reached</source>
+            <translation>Pegel erreicht</translation>
+        </message>
+        <message>
+            <source>e.g. Main.Start</source>
+            <translation>z. B. Main.Start</translation>
+        </message>
+        <message>
+            <source>A BOOL is 1 when TRUE: the level 0.5 triggers on its edges.</source>
+            <translation>Ein BOOL ist 1, wenn TRUE: der Pegel 0,5 löst an seinen Flanken aus.</translation>
+        </message>
+        <message>
+            <source>Record only while TRUE, e.g. Main.Running</source>
+            <translation>Nur aufzeichnen, solange TRUE, z. B. Main.Running</translation>
+        </message>
+        <message>
+            <source> scans</source>
+            <translation> Zyklen</translation>
+        </message>
+        <message>
+            <source>&amp;Variables:</source>
+            <translation>&amp;Variablen:</translation>
+        </message>
+        <message>
+            <source>Sample &amp;every:</source>
+            <translation>Abtasten &amp;alle:</translation>
+        </message>
+        <message>
+            <source>Samples &amp;kept:</source>
+            <translation>&amp;Gespeicherte Werte:</translation>
+        </message>
+        <message>
+            <source>&amp;Trigger:</source>
+            <translation>&amp;Trigger:</translation>
+        </message>
+        <message>
+            <source>Trigger v&amp;ariable:</source>
+            <translation>Trigger-V&amp;ariable:</translation>
+        </message>
+        <message>
+            <source>Trigger &amp;level:</source>
+            <translation>Trigger-&amp;Pegel:</translation>
+        </message>
+        <message>
+            <source>Samples &amp;after the trigger:</source>
+            <translation>Werte &amp;nach dem Trigger:</translation>
+        </message>
+        <message>
+            <source>Record &amp;condition:</source>
+            <translation>Aufzeichnungs&amp;bedingung:</translation>
+        </message>
+        <message>
+            <source>&amp;Scan history keeps:</source>
+            <translation>&amp;Zyklushistorie behält:</translation>
+        </message>
+        <message>
+            <source>The record condition is not an expression: %1</source>
+            <translation>Die Aufzeichnungsbedingung ist kein Ausdruck: %1</translation>
+        </message>
+        <message>
+            <source>Name the variable that triggers the recording.</source>
+            <translation>Geben Sie die Variable an, die die Aufzeichnung auslöst.</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::app::UndoActions</name>
         <message>
             <source>&amp;Undo Typing</source>
@@ -1498,6 +1841,10 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>Prepared value</source>
             <translation>Vorbereiteter Wert</translation>
+        </message>
+        <message>
+            <source>Value after scan %1 (history)</source>
+            <translation>Wert nach Zyklus %1 (Historie)</translation>
         </message>
     </context>
     <context>
@@ -6128,6 +6475,28 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>The program halted.</source>
             <translation>Das Programm ist angehalten.</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::interp::Trace</name>
+        <message>
+            <source>%1 is a %2: only BOOL, numbers, bit strings, enumerations, times and dates can be traced. Trace its elements or members instead.</source>
+            <translation>%1 ist ein %2: nur BOOL, Zahlen, Bitfolgen, Aufzählungen, Zeiten und Datumswerte können aufgezeichnet werden. Zeichnen Sie stattdessen seine Elemente oder Komponenten auf.</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::interp::TraceRecorder</name>
+        <message>
+            <source>There is no variable called %1.</source>
+            <translation>Es gibt keine Variable namens %1.</translation>
+        </message>
+        <message>
+            <source>The trigger variable %1 is not a BOOL or number of the program; the trace records without a trigger.</source>
+            <translation>Die Trigger-Variable %1 ist kein BOOL und keine Zahl des Programms; der Trace zeichnet ohne Trigger auf.</translation>
+        </message>
+        <message>
+            <source>The record condition is not an expression: %1</source>
+            <translation>Die Aufzeichnungsbedingung ist kein Ausdruck: %1</translation>
         </message>
     </context>
     <context>

@@ -458,6 +458,49 @@
         </message>
     </context>
     <context>
+        <name>iec::app::HistoryBar</name>
+        <message>
+            <source>Scan History</source>
+            <translation>扫描历史</translation>
+        </message>
+        <message>
+            <source>History: </source>
+            <translation>历史：</translation>
+        </message>
+        <message>
+            <source>Present</source>
+            <translation>当前</translation>
+        </message>
+        <message>
+            <source>Show the program as it is now</source>
+            <translation>显示程序的当前状态</translation>
+        </message>
+        <message>
+            <source>Resume from Here</source>
+            <translation>从此处继续</translation>
+        </message>
+        <message>
+            <source>Go on from the scan shown: the scans after it are dropped, the next cycle starts from its values (write new inputs first, if you like)</source>
+            <translation>从所显示的扫描继续：其后的扫描被丢弃，下一个周期从它的值开始（可以先写入新的输入）</translation>
+        </message>
+        <message>
+            <source>Drag (or use the arrow keys) to see the program after an earlier scan</source>
+            <translation>拖动（或用方向键）查看程序在较早扫描之后的状态</translation>
+        </message>
+        <message>
+            <source>%1 / %2</source>
+            <translation>%1 / %2</translation>
+        </message>
+        <message>
+            <source>%1 of at most %2 scans kept, %3</source>
+            <translation>已保存 %1 个扫描（最多 %2 个），%3</translation>
+        </message>
+        <message>
+            <source>History: after scan %1 (the program is at %2)</source>
+            <translation>历史：第 %1 次扫描之后（程序在第 %2 次）</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::app::ImportExportActions</name>
         <message>
             <source>&amp;Import...</source>
@@ -803,6 +846,14 @@ Autosaved: %2</source>
             <source>The documentation was written to %1.</source>
             <translation>文档已写入 %1。</translation>
         </message>
+        <message>
+            <source>Trace: %1</source>
+            <translation>跟踪：%1</translation>
+        </message>
+        <message>
+            <source>Trace</source>
+            <translation>跟踪</translation>
+        </message>
     </context>
     <context>
         <name>iec::app::MessagesPane</name>
@@ -987,6 +1038,10 @@ Autosaved: %2</source>
         <message>
             <source>HALT</source>
             <translation>暂停</translation>
+        </message>
+        <message>
+            <source>ONLINE HISTORY | scan %1 of %2 | t = %3 s</source>
+            <translation>在线 历史 | 扫描 %1 / %2 | t = %3 s</translation>
         </message>
     </context>
     <context>
@@ -1442,6 +1497,293 @@ Autosaved: %2</source>
         </message>
     </context>
     <context>
+        <name>iec::app::TraceExport</name>
+        <message>
+            <source>%1 cannot be written: %2</source>
+            <translation>无法写入 %1：%2</translation>
+        </message>
+        <message>
+            <source>%1 cannot be written.</source>
+            <translation>无法写入 %1。</translation>
+        </message>
+        <message>
+            <source>Nothing was recorded yet: choose variables, log in and run the program.</source>
+            <translation>尚未记录任何内容：请选择变量，登录并运行程序。</translation>
+        </message>
+        <message>
+            <source>%1: a trace is exported as .csv, .vcd, .png or .pdf.</source>
+            <translation>%1：跟踪可导出为 .csv、.vcd、.png 或 .pdf。</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::TracePane</name>
+        <message>
+            <source>Trace</source>
+            <translation>跟踪</translation>
+        </message>
+        <message>
+            <source>Configure...</source>
+            <translation>配置...</translation>
+        </message>
+        <message>
+            <source>Choose the variables, the trigger and how often to sample</source>
+            <translation>选择变量、触发条件和采样频率</translation>
+        </message>
+        <message>
+            <source>Add Variable...</source>
+            <translation>添加变量...</translation>
+        </message>
+        <message>
+            <source>Pause</source>
+            <translation>暂停</translation>
+        </message>
+        <message>
+            <source>Restart</source>
+            <translation>重新开始</translation>
+        </message>
+        <message>
+            <source>Drop the samples and record again (the trigger is armed again)</source>
+            <translation>丢弃采样并重新记录（重新启用触发）</translation>
+        </message>
+        <message>
+            <source>Zoom In</source>
+            <translation>放大</translation>
+        </message>
+        <message>
+            <source>Zoom Out</source>
+            <translation>缩小</translation>
+        </message>
+        <message>
+            <source>Fit</source>
+            <translation>适合窗口</translation>
+        </message>
+        <message>
+            <source>Show every sample and follow the newest</source>
+            <translation>显示全部采样并跟随最新值</translation>
+        </message>
+        <message>
+            <source>Export</source>
+            <translation>导出</translation>
+        </message>
+        <message>
+            <source>CSV (spreadsheet)...</source>
+            <translation>CSV（电子表格）...</translation>
+        </message>
+        <message>
+            <source>VCD (GTKWave)...</source>
+            <translation>VCD（GTKWave）...</translation>
+        </message>
+        <message>
+            <source>PNG picture...</source>
+            <translation>PNG 图片...</translation>
+        </message>
+        <message>
+            <source>PDF for a lab report...</source>
+            <translation>PDF（实验报告用）...</translation>
+        </message>
+        <message>
+            <source>Remove from Trace</source>
+            <translation>从跟踪中移除</translation>
+        </message>
+        <message>
+            <source>Cursor 1</source>
+            <translation>光标 1</translation>
+        </message>
+        <message>
+            <source>Cursor 2</source>
+            <translation>光标 2</translation>
+        </message>
+        <message>
+            <source>Difference</source>
+            <translation>差值</translation>
+        </message>
+        <message>
+            <source>Tick to show a lane, drag to reorder. In the chart: click for cursor 1, Shift+click for cursor 2, wheel to zoom.</source>
+            <translation>勾选以显示通道，拖动以调整顺序。在图中：单击设置光标 1，Shift+单击设置光标 2，滚轮缩放。</translation>
+        </message>
+        <message>
+            <source>Time (ms)</source>
+            <translation>时间 (ms)</translation>
+        </message>
+        <message>
+            <source>Cycle</source>
+            <translation>周期</translation>
+        </message>
+        <message>
+            <source>Nothing to record: choose variables with Configure... or Add Variable...</source>
+            <translation>没有可记录的内容：请用“配置...”或“添加变量...”选择变量</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n sample(s)</source>
+            <translation>
+                <numerusform>%n 个采样</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Offline: the trace records while you are logged in.</source>
+            <translation>离线：登录后才会记录跟踪。</translation>
+        </message>
+        <message>
+            <source>Offline: %1 from the last session.</source>
+            <translation>离线：上次会话的 %1。</translation>
+        </message>
+        <message>
+            <source>The record condition cannot be evaluated: %1</source>
+            <translation>无法计算记录条件：%1</translation>
+        </message>
+        <message>
+            <source>Recording: %1.</source>
+            <translation>正在记录：%1。</translation>
+        </message>
+        <message>
+            <source>Waiting for the trigger on %1: %2 kept before it.</source>
+            <translation>等待 %1 的触发：触发前已保存 %2。</translation>
+        </message>
+        <message>
+            <source>Triggered in cycle %1: recording what follows (%2).</source>
+            <translation>已在第 %1 周期触发：正在记录之后的数据（%2）。</translation>
+        </message>
+        <message>
+            <source>Triggered in cycle %1: done, %2. Restart arms the trigger again.</source>
+            <translation>已在第 %1 周期触发：完成，%2。“重新开始”会重新启用触发。</translation>
+        </message>
+        <message>
+            <source>Paused: %1.</source>
+            <translation>已暂停：%1。</translation>
+        </message>
+        <message>
+            <source>None of the chosen variables can be recorded (see Messages).</source>
+            <translation>所选变量都无法记录（见消息窗口）。</translation>
+        </message>
+        <message>
+            <source>Add Variable</source>
+            <translation>添加变量</translation>
+        </message>
+        <message>
+            <source>Variable to trace (e.g. Main.Level or a global):</source>
+            <translation>要跟踪的变量（例如 Main.Level 或全局变量）：</translation>
+        </message>
+        <message>
+            <source>Trace of %1, %2</source>
+            <translation>%1 的跟踪，%2</translation>
+        </message>
+        <message>
+            <source>the project</source>
+            <translation>项目</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV 文件 (*.csv)</translation>
+        </message>
+        <message>
+            <source>Value change dumps (*.vcd)</source>
+            <translation>值变化转储 (*.vcd)</translation>
+        </message>
+        <message>
+            <source>PNG pictures (*.png)</source>
+            <translation>PNG 图片 (*.png)</translation>
+        </message>
+        <message>
+            <source>PDF documents (*.pdf)</source>
+            <translation>PDF 文档 (*.pdf)</translation>
+        </message>
+        <message>
+            <source>Export Trace</source>
+            <translation>导出跟踪</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::app::TraceSettingsDialog</name>
+        <message>
+            <source>Trace Configuration</source>
+            <translation>跟踪配置</translation>
+        </message>
+        <message>
+            <source>One variable per line, e.g. Main.Level</source>
+            <translation>每行一个变量，例如 Main.Level</translation>
+        </message>
+        <message>
+            <source> cycle(s)</source>
+            <translation> 个周期</translation>
+        </message>
+        <message>
+            <source>None (record all the time)</source>
+            <translation>无（一直记录）</translation>
+        </message>
+        <message>
+            <source>Rising edge</source>
+            <translation>上升沿</translation>
+        </message>
+        <message>
+            <source>Falling edge</source>
+            <translation>下降沿</translation>
+        </message>
+        <message>
+            <source>Level reached</source>
+            <translation>达到电平</translation>
+        </message>
+        <message>
+            <source>e.g. Main.Start</source>
+            <translation>例如 Main.Start</translation>
+        </message>
+        <message>
+            <source>A BOOL is 1 when TRUE: the level 0.5 triggers on its edges.</source>
+            <translation>BOOL 为 TRUE 时等于 1：电平 0.5 在其边沿触发。</translation>
+        </message>
+        <message>
+            <source>Record only while TRUE, e.g. Main.Running</source>
+            <translation>仅在为 TRUE 时记录，例如 Main.Running</translation>
+        </message>
+        <message>
+            <source> scans</source>
+            <translation> 次扫描</translation>
+        </message>
+        <message>
+            <source>&amp;Variables:</source>
+            <translation>变量(&amp;V)：</translation>
+        </message>
+        <message>
+            <source>Sample &amp;every:</source>
+            <translation>采样间隔(&amp;E)：</translation>
+        </message>
+        <message>
+            <source>Samples &amp;kept:</source>
+            <translation>保存采样数(&amp;K)：</translation>
+        </message>
+        <message>
+            <source>&amp;Trigger:</source>
+            <translation>触发(&amp;T)：</translation>
+        </message>
+        <message>
+            <source>Trigger v&amp;ariable:</source>
+            <translation>触发变量(&amp;A)：</translation>
+        </message>
+        <message>
+            <source>Trigger &amp;level:</source>
+            <translation>触发电平(&amp;L)：</translation>
+        </message>
+        <message>
+            <source>Samples &amp;after the trigger:</source>
+            <translation>触发后采样数(&amp;A)：</translation>
+        </message>
+        <message>
+            <source>Record &amp;condition:</source>
+            <translation>记录条件(&amp;C)：</translation>
+        </message>
+        <message>
+            <source>&amp;Scan history keeps:</source>
+            <translation>扫描历史保存(&amp;S)：</translation>
+        </message>
+        <message>
+            <source>The record condition is not an expression: %1</source>
+            <translation>记录条件不是表达式：%1</translation>
+        </message>
+        <message>
+            <source>Name the variable that triggers the recording.</source>
+            <translation>请指定触发记录的变量。</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::app::UndoActions</name>
         <message>
             <source>&amp;Undo Typing</source>
@@ -1497,6 +1839,10 @@ Autosaved: %2</source>
         <message>
             <source>Prepared value</source>
             <translation>预备值</translation>
+        </message>
+        <message>
+            <source>Value after scan %1 (history)</source>
+            <translation>第 %1 次扫描后的值（历史）</translation>
         </message>
     </context>
     <context>
@@ -6123,6 +6469,28 @@ Autosaved: %2</source>
         <message>
             <source>The program halted.</source>
             <translation>程序已暂停。</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::interp::Trace</name>
+        <message>
+            <source>%1 is a %2: only BOOL, numbers, bit strings, enumerations, times and dates can be traced. Trace its elements or members instead.</source>
+            <translation>%1 是 %2：只能跟踪 BOOL、数值、位串、枚举、时间和日期。请改为跟踪它的元素或成员。</translation>
+        </message>
+    </context>
+    <context>
+        <name>iec::interp::TraceRecorder</name>
+        <message>
+            <source>There is no variable called %1.</source>
+            <translation>没有名为 %1 的变量。</translation>
+        </message>
+        <message>
+            <source>The trigger variable %1 is not a BOOL or number of the program; the trace records without a trigger.</source>
+            <translation>触发变量 %1 不是程序中的 BOOL 或数值；跟踪将不带触发地记录。</translation>
+        </message>
+        <message>
+            <source>The record condition is not an expression: %1</source>
+            <translation>记录条件不是表达式：%1</translation>
         </message>
     </context>
     <context>

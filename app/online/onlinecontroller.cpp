@@ -217,6 +217,10 @@ bool OnlineController::login()
         if (session == m_session)
             m_statusBar.showMessage(message, 10000);
     });
+    connect(m_worker, &RuntimeWorker::traceProblems, this, [this, session](const QStringList &problems) {
+        if (session == m_session)
+            Q_EMIT traceProblems(problems);
+    });
     connect(m_worker, &RuntimeWorker::stopped, this, [this, session] {
         if (session != m_session)
             return;
@@ -311,6 +315,41 @@ void OnlineController::resume(interp::ResumeKind kind)
     if (!login())
         return;
     send([kind](RuntimeWorker &worker) { worker.resume(kind); });
+}
+
+void OnlineController::showScan(int cycle)
+{
+    send([cycle](RuntimeWorker &worker) { worker.showScan(cycle); });
+}
+
+void OnlineController::showPresent()
+{
+    send([](RuntimeWorker &worker) { worker.showPresent(); });
+}
+
+void OnlineController::resumeFrom(int cycle)
+{
+    send([cycle](RuntimeWorker &worker) { worker.resumeFrom(cycle); });
+}
+
+void OnlineController::setHistoryLimit(int scans)
+{
+    send([scans](RuntimeWorker &worker) { worker.setHistoryLimit(scans); });
+}
+
+void OnlineController::setTrace(const interp::TraceSettings &settings)
+{
+    send([settings](RuntimeWorker &worker) { worker.setTrace(settings); });
+}
+
+void OnlineController::setTracePaused(bool paused)
+{
+    send([paused](RuntimeWorker &worker) { worker.setTracePaused(paused); });
+}
+
+void OnlineController::restartTrace()
+{
+    send([](RuntimeWorker &worker) { worker.restartTrace(); });
 }
 
 void OnlineController::runCycles(int count)
@@ -504,6 +543,14 @@ void OnlineController::updateStatus()
         : m_speed == RunSpeed::Times10                  ? tr("10x")
                                                         : tr("full speed");
     const std::int64_t cycleNs = m_latest ? m_latest->cycleNs : m_cycleNs;
+    if (m_latest && m_latest->historyCycle) {
+        m_statusLabel->setText(tr("ONLINE HISTORY | scan %1 of %2 | t = %3 s")
+                                   .arg(*m_latest->historyCycle)
+                                   .arg(m_latest->presentCycle)
+                                   .arg(formatSeconds(m_latest->timeNs)));
+        m_statusLabel->setStyleSheet(QStringLiteral("color: #7a4a00; background: #ffecb3; font-weight: bold;"));
+        return;
+    }
     QString state = m_latest && m_latest->fault ? tr("FAULT")
         : m_latest && m_latest->halt             ? tr("HALT")
         : m_running                              ? tr("RUN")

@@ -87,12 +87,22 @@ public Q_SLOTS:
     // from a halt; a step logs in when needed and halts at the next line run.
     void setBreakpoints(const std::vector<interp::Breakpoint> &breakpoints);
     void resume(interp::ResumeKind kind);
+    // Going back in time and the trace (RuntimeWorker): only while online; the trace settings
+    // and the history's length are sent again by their panes at every login.
+    void showScan(int cycle);
+    void showPresent();
+    void resumeFrom(int cycle);
+    void setHistoryLimit(int scans);
+    void setTrace(const interp::TraceSettings &settings);
+    void setTracePaused(bool paused);
+    void restartTrace();
 
 Q_SIGNALS:
     void onlineChanged(bool online);
     // Every snapshot once it reached the views (tests wait on it).
     void snapshotShown(std::shared_ptr<const iec::interp::RuntimeSnapshot> snapshot);
     void faultShown(const iec::interp::RuntimeFault &fault);
+    void traceProblems(const QStringList &problems);
 
 private:
     void send(std::function<void(RuntimeWorker &)> command);

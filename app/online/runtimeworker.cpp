@@ -29,6 +29,7 @@ RuntimeWorker::RuntimeWorker(std::shared_ptr<const interp::Module> module, quint
     connect(m_tick, &QTimer::timeout, this, &RuntimeWorker::runSlice);
     m_runtime = std::make_unique<interp::Runtime>(m_module, m_cycleNs);
     m_budget = m_runtime->vm().budgetPerRun;
+    startHistory();
 }
 
 RuntimeWorker::~RuntimeWorker() = default;
@@ -54,10 +55,12 @@ void RuntimeWorker::rebuildRuntime(bool keepRetain)
     m_runtime->setBreakpoints(m_breakpoints);
     m_pendingWrites.clear();
     resolveWatch(); // a rebuilt runtime is a new symbol owner
+    startHistory();
 }
 
 void RuntimeWorker::run(int cycles)
 {
+    m_shownCycle.reset();
     if (m_runtime->fault())
         return;
     m_cyclesLeft = std::max(0, cycles);
@@ -88,6 +91,7 @@ void RuntimeWorker::finishRun()
 
 void RuntimeWorker::singleCycle()
 {
+    m_shownCycle.reset();
     if (m_running)
         finishRun();
     stepOnce();
@@ -253,8 +257,10 @@ void RuntimeWorker::applyPendingWrites()
 // After a cycle ran (or went on from a halt): a halt or a fault ends Run.
 bool RuntimeWorker::checkCycleEnd(bool finished)
 {
-    if (finished)
+    if (finished) {
+        cycleFinished();
         return true;
+    }
     if (m_running) {
         m_running = false;
         m_cyclesLeft = 0;
@@ -274,6 +280,7 @@ void RuntimeWorker::setBreakpoints(const std::vector<interp::Breakpoint> &breakp
 
 void RuntimeWorker::resume(interp::ResumeKind kind)
 {
+    m_shownCycle.reset();
     if (m_running)
         finishRun();
     if (m_runtime->fault())
@@ -325,24 +332,33 @@ void RuntimeWorker::publish()
     auto snapshot = std::make_shared<interp::RuntimeSnapshot>();
     snapshot->modelRevision = m_modelRevision;
     snapshot->cycle = m_runtime->cycle();
+    snapshot->presentCycle = m_runtime->cycle();
     snapshot->timeNs = m_runtime->timeNs();
     snapshot->cycleNs = m_runtime->cycleNs();
     snapshot->running = m_running;
     snapshot->fault = m_runtime->fault();
     snapshot->halt = m_runtime->halt();
-    snapshot->values.reserve(qsizetype(m_watched.size()));
-    for (const Watched &watched : m_watched) {
-        if (watched.ref)
-            snapshot->values.insert(watched.name, m_runtime->read(*watched.ref));
-    }
     for (const Forced &forced : m_forced)
         snapshot->forced.insert(forced.name.toUpper());
-    for (const ChartRequest &chart : m_request.charts) {
-        if (std::optional<interp::sfc::ChartState> state = interp::sfc::chartState(*m_runtime, chart.pou, chart.instance))
-            snapshot->charts.push_back(std::move(*state));
-    }
+    fillHistory(*snapshot);
+    if (!snapshot->historyCycle)
+        fillValues(*snapshot, *m_runtime);
+    snapshot->trace = traceUpdate();
     m_lastPublish.start();
     Q_EMIT snapshotReady(std::move(snapshot));
+}
+
+void RuntimeWorker::fillValues(interp::RuntimeSnapshot &snapshot, const interp::Runtime &runtime) const
+{
+    snapshot.values.reserve(qsizetype(m_watched.size()));
+    for (const Watched &watched : m_watched) {
+        if (watched.ref)
+            snapshot.values.insert(watched.name, runtime.read(*watched.ref));
+    }
+    for (const ChartRequest &chart : m_request.charts) {
+        if (std::optional<interp::sfc::ChartState> state = interp::sfc::chartState(runtime, chart.pou, chart.instance))
+            snapshot.charts.push_back(std::move(*state));
+    }
 }
 
 } // namespace iec::app

@@ -1,7 +1,9 @@
 #pragma once
 
 #include "interpreter/runtime/runtime.h"
+#include "interpreter/runtime/scanhistory.h"
 #include "interpreter/runtime/snapshot.h"
+#include "interpreter/runtime/tracerecorder.h"
 #include "model/pou.h"
 
 #include <QElapsedTimer>
@@ -77,7 +79,22 @@ public:
     void setBreakpoints(const std::vector<interp::Breakpoint> &breakpoints);
     void resume(interp::ResumeKind kind);
 
+    // Going back in time (runtimeworkerhistory.cpp): after every cycle the state is kept in a
+    // ScanHistory. showScan publishes an earlier scan's values (the program stays where it is;
+    // a Run stops); showPresent goes back to the present; resumeFrom makes that scan the
+    // present, dropping the scans after it, so the program goes on from there.
+    void showScan(int cycle);
+    void showPresent();
+    void resumeFrom(int cycle);
+    void setHistoryLimit(int scans);
+    // The trace recorder: what it records (starts it again), pausing, and starting again.
+    void setTrace(const interp::TraceSettings &settings);
+    void setTracePaused(bool paused);
+    void restartTrace();
+
     [[nodiscard]] bool isRunning() const { return m_running; }
+    [[nodiscard]] const interp::ScanHistory &history() const { return m_history; }
+    [[nodiscard]] const interp::TraceRecorder &traceRecorder() const { return m_trace; }
     [[nodiscard]] const interp::Runtime &runtime() const { return *m_runtime; }
 
 Q_SIGNALS:
@@ -88,6 +105,8 @@ Q_SIGNALS:
     void commandFailed(const QString &message);
     // Run ended: Stop, the N cycles are done, or a fault.
     void stopped();
+    // What the trace settings name that cannot be recorded, one sentence each.
+    void traceProblems(const QStringList &problems);
 
 private:
     void runSlice();
@@ -103,6 +122,11 @@ private:
     [[nodiscard]] std::optional<QString> checkLiteral(const QString &name, const QString &literal) const;
     [[nodiscard]] QString writableName(const QString &name) const;
     void finishRun();
+    void cycleFinished(); // keeps the scan in the history and samples the trace
+    void startHistory();  // after login and resets: the history and the trace start afresh
+    void fillValues(interp::RuntimeSnapshot &snapshot, const interp::Runtime &runtime) const;
+    void fillHistory(interp::RuntimeSnapshot &snapshot);
+    std::shared_ptr<const interp::TraceUpdate> traceUpdate();
 
     std::shared_ptr<const interp::Module> m_module;
     quint64 m_modelRevision = 0;
@@ -131,6 +155,14 @@ private:
     QElapsedTimer m_paceClock;
     int m_paceStartCycle = 0;
     QElapsedTimer m_lastPublish;
+
+    interp::ScanHistory m_history;
+    std::optional<int> m_shownCycle;              // showing an earlier scan
+    std::unique_ptr<interp::Runtime> m_pastViewer; // reads earlier scans, built on first use
+    interp::TraceRecorder m_trace;
+    quint64 m_traceSentGeneration = ~quint64(0);
+    quint64 m_traceSentRows = 0;
+    interp::TraceRecorder::Status m_traceSentStatus = interp::TraceRecorder::Status::NoVariables;
 };
 
 } // namespace iec::app

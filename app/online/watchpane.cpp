@@ -121,6 +121,13 @@ void WatchModel::setType(int row, const QString &type)
 void WatchModel::setSnapshot(const interp::RuntimeSnapshot *snapshot)
 {
     m_online = snapshot != nullptr;
+    const std::optional<int> historyCycle = snapshot ? snapshot->historyCycle : std::nullopt;
+    if (historyCycle != m_historyCycle) {
+        m_historyCycle = historyCycle;
+        Q_EMIT headerDataChanged(Qt::Horizontal, ValueColumn, ValueColumn);
+        if (!m_rows.isEmpty())
+            Q_EMIT dataChanged(index(0, ValueColumn), index(int(m_rows.size()) - 1, ValueColumn));
+    }
     int first = -1;
     int last = -1;
     for (int row = 0; row < m_rows.size(); ++row) {
@@ -176,6 +183,9 @@ QVariant WatchModel::data(const QModelIndex &index, int role) const
             return row.prepared;
         }
     }
+    // Values of an earlier scan (going back in time) sit on amber, as the history bar does.
+    if (role == Qt::BackgroundRole && index.column() == ValueColumn && m_historyCycle)
+        return QBrush(QColor(0xff, 0xec, 0xb3));
     if (role == Qt::ForegroundRole && index.column() == ValueColumn) {
         if (row.forced)
             return QBrush(QColor(0xc0, 0x10, 0x10));
@@ -214,7 +224,7 @@ QVariant WatchModel::headerData(int section, Qt::Orientation orientation, int ro
     case TypeColumn:
         return tr("Type");
     case ValueColumn:
-        return tr("Value");
+        return m_historyCycle ? tr("Value after scan %1 (history)").arg(*m_historyCycle) : tr("Value");
     case PreparedColumn:
         return tr("Prepared value");
     }

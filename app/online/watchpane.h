@@ -6,6 +6,7 @@
 #include <QWidget>
 
 #include <memory>
+#include <optional>
 
 class QAction;
 class QCompleter;
@@ -69,6 +70,7 @@ private:
     };
     QList<Row> m_rows;
     bool m_online = false;
+    std::optional<int> m_historyCycle; // the values are those after this earlier scan
 };
 
 // The Watch dock: a line to add a variable by name (with completion from the compiled program's
