@@ -3484,6 +3484,18 @@ Automatisch gespeichert: %2</translation>
             <source>EN/ENO</source>
             <translation>EN/ENO</translation>
         </message>
+        <message>
+            <source>box %1 (%2)</source>
+            <translation>Baustein %1 (%2)</translation>
+        </message>
+        <message>
+            <source>element %1</source>
+            <translation>Element %1</translation>
+        </message>
+        <message>
+            <source>output %1 (%2)</source>
+            <translation>Ausgang %1 (%2)</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::fbd::FbdEditor</name>

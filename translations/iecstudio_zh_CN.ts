@@ -3478,6 +3478,18 @@ Autosaved: %2</source>
             <source>EN/ENO</source>
             <translation>EN/ENO</translation>
         </message>
+        <message>
+            <source>box %1 (%2)</source>
+            <translation>功能块 %1（%2）</translation>
+        </message>
+        <message>
+            <source>element %1</source>
+            <translation>元素 %1</translation>
+        </message>
+        <message>
+            <source>output %1 (%2)</source>
+            <translation>输出 %1（%2）</translation>
+        </message>
     </context>
     <context>
         <name>iec::editors::fbd::FbdEditor</name>

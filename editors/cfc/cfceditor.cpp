@@ -549,4 +549,22 @@ void CfcEditor::prepareValue(quint64 localId)
         announcePrepared(name, *literal);
 }
 
+QString CfcEditor::placeName(qint64 localId) const
+{
+    const model::Element *shown = localId < 0 ? nullptr : element(quint64(localId));
+    if (!shown)
+        return {};
+    int number = model::header(*shown).executionOrderId.value_or(0);
+    if (number <= 0) {
+        const std::vector<quint64> order = executionOrder(elements());
+        const auto at = std::ranges::find(order, quint64(localId));
+        number = at == order.end() ? 0 : int(at - order.begin()) + 1;
+    }
+    if (const auto *box = std::get_if<model::Block>(shown))
+        return tr("box %1 (%2)").arg(number).arg(box->typeName);
+    if (const auto *out = std::get_if<model::OutVariable>(shown))
+        return tr("output %1 (%2)").arg(number).arg(out->expression);
+    return tr("element %1").arg(number);
+}
+
 } // namespace iec::editors::cfc

@@ -56,6 +56,9 @@ public:
     // Types the selected element's text in place: a variable, a label, a mark, a box's instance (or
     // its type when it has none; `boxType` asks for the type).
     void startTyping(bool boxType = false);
+    // A CFC breakpoint is on one element (the selected one): "box 3 (ADD)" by its execution-order
+    // number, where LD and FBD name a network.
+    [[nodiscard]] QString placeName(qint64 localId) const override;
 
 protected:
     void navigate(Qt::Key key) override;

@@ -685,6 +685,8 @@ void Evaluator::evaluateBlock(std::size_t n, const model::Block &block)
         result.expr = nameExpr(name, at(n));
         result.size = 1;
     }
+    if (m_elementPlaces)
+        result = materialize(n, resultKey, std::move(result));
     if (resultPin && resultPin->negated)
         result.expr = notExpr(std::move(result.expr));
     if (resultPin)

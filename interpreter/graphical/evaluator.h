@@ -30,6 +30,9 @@ public:
 
     // Where the statements go from now on; nullptr: none may be needed (pure conditions).
     void setSink(std::vector<ast::Stmt> *sink) { m_sink = sink; }
+    // CFC: a function box's result is stored in a variable of its own, so the box is a statement
+    // (named by its localId, a place for the debugger) rather than part of the one that reads it.
+    void setElementPlaces(bool on) { m_elementPlaces = on; }
     // Label name (upper case) -> segment number, and the variable a jump sets.
     void setJumpTargets(std::map<QString, int> labels, QString jumpVariable);
 
@@ -84,6 +87,7 @@ private:
     LoweringContext &m_context;
     bool m_ladder;
     std::vector<ast::Stmt> *m_sink = nullptr;
+    bool m_elementPlaces = false;
     std::vector<State> m_state;
     std::map<std::pair<std::size_t, QString>, Signal> m_outputs;
     std::map<QString, int> m_labels;

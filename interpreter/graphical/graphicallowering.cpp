@@ -126,6 +126,8 @@ std::vector<ast::Stmt> lowerBody(const model::Body &body, LoweringContext &conte
         return {};
     const std::vector<std::size_t> roots = network.rootOrder(body.layoutGenerated);
     Evaluator evaluator(network, context, body.language() == model::BodyLanguage::LD);
+    const bool cfc = isCfc(body);
+    evaluator.setElementPlaces(cfc);
     const std::map<QString, int> labels = labelSegments(network, roots, context);
     const bool jumps = std::ranges::any_of(network.nodes(), [](const Node &n) { return n.kind == NodeKind::Jump; });
     const QString pc = jumps ? evaluator.hiddenVariable(QStringLiteral("jump"), namedType(QStringLiteral("INT"))) : QString();
@@ -140,7 +142,8 @@ std::vector<ast::Stmt> lowerBody(const model::Body &body, LoweringContext &conte
         std::vector<ast::Stmt> rootStatements;
         evaluator.setSink(&rootStatements);
         evaluator.run(roots[r]);
-        setPlace(rootStatements, places[r]);
+        if (!cfc) // CFC: each statement keeps its element's localId as its place
+            setPlace(rootStatements, places[r]);
         std::ranges::move(rootStatements, std::back_inserter(segments.back()));
     }
     evaluator.declareHidden();
@@ -220,9 +223,17 @@ std::optional<model::Body> cfcDiagram(const model::Body &body)
             if (auto &order = model::header(element).executionOrderId)
                 *order += 1;
         }
+        diagram.addData.push_back({QString::fromLatin1(kCfcMarkAddDataName), QStringLiteral("discard"), QString()});
         return diagram;
     }
     return std::nullopt;
+}
+
+bool isCfc(const model::Body &body)
+{
+    return std::ranges::any_of(body.addData, [](const model::AddDataEntry &entry) {
+        return entry.name == QLatin1String(kCfcMarkAddDataName);
+    });
 }
 
 } // namespace iec::interp::graphical

@@ -65,4 +65,12 @@ private:
 // their execution order), or nullopt when `body` holds none.
 std::optional<model::Body> cfcDiagram(const model::Body &body);
 
+// The addData entry that marks an FBD body as IEC Studio's CFC (the editors' name,
+// editors::kIecStudioCfcAddDataName); cfcDiagram's result carries it too.
+inline constexpr const char *kCfcMarkAddDataName = "http://www.iecstudio.org/cfc";
+// Whether `body` is a CFC diagram: its elements run one by one in execution order, so each is a
+// place of its own for the debugger (a breakpoint halts before that element runs), where an
+// LD or FBD network is one place.
+bool isCfc(const model::Body &body);
+
 } // namespace iec::interp::graphical

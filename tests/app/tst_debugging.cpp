@@ -8,6 +8,8 @@
 #include "app/online/debugcontroller.h"
 #include "app/online/onlinecontroller.h"
 #include "editors/common/diagramview.h"
+#include "editors/cfc/cfceditor.h"
+#include "editors/common/editorlanguage.h"
 #include "editors/ld/ldeditor.h"
 #include "editors/sfc/sfceditor.h"
 #include "editors/text/codeeditor.h"
@@ -29,6 +31,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTextBlock>
+
+#include "../interpreter/graphical/diagram.h"
 
 using namespace iec;
 using namespace iec::app;
@@ -62,6 +66,7 @@ private Q_SLOTS:
     void breakpointHaltsStepsAndFinishesTheCycle();
     void ladderNetworkBreakpoint();
     void sfcStepBreakpoint();
+    void cfcElementBreakpoint();
     void propertiesDialog();
     void hitCountFromTheWindow();
     void callStackInTheMessages();
@@ -249,6 +254,52 @@ void TestDebugging::sfcStepBreakpoint()
     QVERIFY(!online.latestSnapshot()->halt);
     online.singleCycle(); // FillA stays active: no halt
     QVERIFY(!online.latestSnapshot()->halt);
+}
+
+// A CFC: a + 1 -> b, (a + 1) * 2 -> c, numbered 1 to 4. F9 on the selected MUL box puts the
+// breakpoint on it alone; the program halts before it runs, named by its number.
+void TestDebugging::cfcElementBreakpoint()
+{
+    iec::testing::Diagram d;
+    d.in(1, QStringLiteral("a")).in(3, QStringLiteral("1"), 0, 40);
+    d.block(2, QStringLiteral("ADD"), QString(), {{QStringLiteral("IN1"), {{1}}}, {QStringLiteral("IN2"), {{3}}}},
+            {QStringLiteral("OUT")});
+    d.out(4, QStringLiteral("b"), {{2, QStringLiteral("OUT")}});
+    d.in(6, QStringLiteral("2"), 0, 100);
+    d.block(5, QStringLiteral("MUL"), QString(), {{QStringLiteral("IN1"), {{2, QStringLiteral("OUT")}}}, {QStringLiteral("IN2"), {{6}}}},
+            {QStringLiteral("OUT")}, 300, 100);
+    d.out(7, QStringLiteral("c"), {{5, QStringLiteral("OUT")}}, 500, 100);
+    d.order(2, 1).order(4, 2).order(5, 3).order(7, 4);
+    model::Project project = iec::testing::diagramProject(QStringLiteral("VAR a : INT := 5; b : INT; c : INT; END_VAR"),
+                                                          model::BodyLanguage::FBD, d);
+    model::Pou &pou = project.types.pous.back();
+    pou.bodies.front().addData.push_back(
+        {QString::fromLatin1(editors::kIecStudioCfcAddDataName), QStringLiteral("discard"), QString()});
+    MainWindow window;
+    window.online().setThreaded(false);
+    window.projectModel().reset(project);
+    const model::Pou *main = window.projectModel().project().findPou(QStringLiteral("Main"));
+    QWidget *document = window.documents().openBody({main->id, model::BodyRef::Part::Pou, {}});
+    auto *cfc = document->findChild<editors::cfc::CfcEditor *>();
+    QVERIFY(cfc);
+    cfc->select({5});
+    window.debugger().toggleBreakpointAction()->trigger();
+    QCOMPARE(window.debugger().breakpoints().size(), size_t(1));
+    QCOMPARE(window.debugger().breakpoints().front().place.elements, std::vector<qint64>{5});
+    QCOMPARE(cfc->view()->breakpointMarks().size(), 1);
+
+    OnlineController &online = window.online();
+    QVERIFY(online.login());
+    online.singleCycle();
+    QVERIFY(online.latestSnapshot()->halt);
+    QCOMPARE(online.latestSnapshot()->halt->at.localId, 5);
+    QCOMPARE(cfc->view()->haltedMark(), cfc->view()->breakpointMarks().front());
+    QVERIFY2(window.statusBar()->currentMessage().startsWith(QStringLiteral("Halted in Main at box 3 (MUL) (cycle 1).")),
+             qPrintable(window.statusBar()->currentMessage()));
+    window.debugger().stepOverAction()->trigger();
+    QCOMPARE(online.latestSnapshot()->halt->at.localId, 7);
+    QVERIFY2(window.statusBar()->currentMessage().startsWith(QStringLiteral("Halted in Main at output 4 (c) (cycle 1).")),
+             qPrintable(window.statusBar()->currentMessage()));
 }
 
 void TestDebugging::propertiesDialog()

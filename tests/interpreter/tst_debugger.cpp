@@ -3,6 +3,7 @@
 #include "interpreter/compiler/compiler.h"
 #include "interpreter/frontend/iecreader.h"
 #include "interpreter/frontend/projectsource.h"
+#include "interpreter/graphical/graphicallowering.h"
 #include "interpreter/runtime/conditionexpression.h"
 #include "interpreter/runtime/runtime.h"
 
@@ -70,6 +71,7 @@ private Q_SLOTS:
     void packedRungsRunTheSameWhenHalting();
     void sfcStepHaltsWhenItBecomesActive();
     void sfcTransitionHaltsWhenItFires();
+    void cfcElementsAreOnePlaceEach();
 };
 
 void TestDebugger::breakpointInALoopHaltsInEachIteration()
@@ -522,6 +524,59 @@ void TestDebugger::sfcTransitionHaltsWhenItFires()
     QVERIFY(runtime.resume(ResumeKind::Continue));
     QVERIFY(runtime.runCycle());
     QCOMPARE(runtime.hitCounts(), std::vector<int>{1});
+}
+
+// A CFC: a + 1 -> b (order 1, 2), (a + 1) * 2 -> c (order 3, 4), written in the opposite order
+// in the file. Each element is a place: a breakpoint on the MUL box halts before it runs, after
+// b was written; Step Over goes from element to element in execution order. The same diagram as
+// FBD is one network.
+void TestDebugger::cfcElementsAreOnePlaceEach()
+{
+    iec::testing::Diagram d;
+    d.in(6, QStringLiteral("2"), 0, 100).out(7, QStringLiteral("c"), {{5, QStringLiteral("OUT")}}, 500, 100);
+    d.block(5, QStringLiteral("MUL"), QString(), {{QStringLiteral("IN1"), {{2, QStringLiteral("OUT")}}}, {QStringLiteral("IN2"), {{6}}}},
+            {QStringLiteral("OUT")}, 300, 100);
+    d.in(1, QStringLiteral("a")).in(3, QStringLiteral("1"), 0, 40);
+    d.block(2, QStringLiteral("ADD"), QString(), {{QStringLiteral("IN1"), {{1}}}, {QStringLiteral("IN2"), {{3}}}},
+            {QStringLiteral("OUT")});
+    d.out(4, QStringLiteral("b"), {{2, QStringLiteral("OUT")}});
+    d.order(2, 1).order(4, 2).order(5, 3).order(7, 4);
+    model::Project project = iec::testing::diagramProject(QStringLiteral("VAR a : INT := 5; b : INT; c : INT; END_VAR"),
+                                                          model::BodyLanguage::FBD, d);
+    model::Project fbd = project;
+    model::Pou &main = project.types.pous.back();
+    QCOMPARE(main.name, QStringLiteral("Main"));
+    main.bodies.front().addData.push_back(
+        {QString::fromLatin1(graphical::kCfcMarkAddDataName), QStringLiteral("discard"), QString()});
+    auto module = buildProject(project);
+    QVERIFY(module);
+    Runtime runtime(module);
+    Breakpoint mul;
+    mul.at = {QStringLiteral("Main"), 0, 5, {5}};
+    runtime.setBreakpoints({mul});
+    QVERIFY(!runtime.runCycle());
+    QCOMPARE(runtime.halt()->at.localId, 5);
+    QCOMPARE(*runtime.read(QStringLiteral("Main.b")), QStringLiteral("6"));
+    QCOMPARE(*runtime.read(QStringLiteral("Main.c")), QStringLiteral("0"));
+    QVERIFY(!runtime.resume(ResumeKind::StepOver));
+    QCOMPARE(runtime.halt()->at.localId, 7);
+    QVERIFY(runtime.resume(ResumeKind::StepOver));
+    QCOMPARE(*runtime.read(QStringLiteral("Main.c")), QStringLiteral("12"));
+    // Stepping through a whole cycle visits the elements in execution order.
+    runtime.setBreakpoints({});
+    QStringList visited;
+    bool done = runtime.resume(ResumeKind::StepOver); // not halted: a cycle that halts at once
+    while (!done) {
+        visited << QString::number(runtime.halt()->at.localId);
+        done = runtime.resume(ResumeKind::StepOver);
+    }
+    QCOMPARE(visited.join(QLatin1Char(' ')), QStringLiteral("2 4 5 7"));
+    // As FBD, the wired elements are one network: the MUL box has no place of its own.
+    auto asFbd = buildProject(fbd);
+    QVERIFY(asFbd);
+    Runtime network(asFbd);
+    QVERIFY(network.codeAt(mul.at).empty());
+    QVERIFY(!runtime.codeAt(mul.at).empty());
 }
 
 QTEST_GUILESS_MAIN(TestDebugger)
