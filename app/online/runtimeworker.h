@@ -157,6 +157,7 @@ private:
     QElapsedTimer m_lastPublish;
 
     interp::ScanHistory m_history;
+    interp::RuntimeState m_scanState; // the buffers each scan is copied through into the history
     std::optional<int> m_shownCycle;              // showing an earlier scan
     std::unique_ptr<interp::Runtime> m_pastViewer; // reads earlier scans, built on first use
     interp::TraceRecorder m_trace;

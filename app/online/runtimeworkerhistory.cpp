@@ -17,7 +17,8 @@ void RuntimeWorker::startHistory()
 
 void RuntimeWorker::cycleFinished()
 {
-    m_history.record(m_runtime->state());
+    m_runtime->copyStateTo(m_scanState);
+    m_history.record(m_scanState);
     m_trace.sample(*m_runtime);
 }
 

@@ -56,14 +56,19 @@ const std::vector<std::uint8_t> &Runtime::image(char area) const
 RuntimeState Runtime::state() const
 {
     RuntimeState state;
-    state.memory = m_vm.memory();
-    for (int area = 0; area < 3; ++area)
-        state.images[area] = m_images[area];
-    state.timeNs = m_timeNs;
-    state.cycle = m_cycle;
-    state.nextDue = m_nextDue;
-    state.singleBefore = m_singleBefore;
+    copyStateTo(state);
     return state;
+}
+
+void Runtime::copyStateTo(RuntimeState &into) const
+{
+    into.memory.assign(m_vm.memory().begin(), m_vm.memory().end());
+    for (int area = 0; area < 3; ++area)
+        into.images[area].assign(m_images[area].begin(), m_images[area].end());
+    into.timeNs = m_timeNs;
+    into.cycle = m_cycle;
+    into.nextDue = m_nextDue;
+    into.singleBefore = m_singleBefore;
 }
 
 void Runtime::restore(const RuntimeState &state)

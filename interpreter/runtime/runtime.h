@@ -73,6 +73,7 @@ public:
     // The state between two cycles, and going back to one (ScanHistory keeps them). Restoring
     // drops a halt and a fault: the program goes on from that scan. Forces stay.
     RuntimeState state() const;
+    void copyStateTo(RuntimeState &into) const; // reuses `into`'s buffers (once per scan, online)
     void restore(const RuntimeState &state);
 
     // Messages the program logged (Beremiz LOGGER) since they were last taken.

@@ -29,32 +29,41 @@ std::uint32_t getWord(const std::uint8_t *p)
     return word;
 }
 
-// Runs of changed bytes; two runs closer than a run header are merged, which is smaller.
-std::vector<std::uint8_t> changedRuns(const std::vector<std::uint8_t> &before, const std::vector<std::uint8_t> &after)
+// Appends the runs of bytes where `after` differs from `before` (`size` bytes each; offsets
+// counted from `base`). Equal stretches are skipped a word at a time; two runs closer than a run
+// header are merged, which is smaller.
+void appendChangedRuns(std::vector<std::uint8_t> &runs, const std::uint8_t *before, const std::uint8_t *after,
+                       std::size_t size, std::size_t base)
 {
-    std::vector<std::uint8_t> runs;
     constexpr std::size_t kHeader = 2 * sizeof(std::uint32_t);
-    const std::size_t n = after.size();
     std::size_t i = 0;
-    while (i < n) {
-        if (before[i] == after[i]) {
-            ++i;
-            continue;
+    while (i < size) {
+        while (i + sizeof(std::uint64_t) <= size) {
+            std::uint64_t a = 0;
+            std::uint64_t b = 0;
+            std::memcpy(&a, before + i, sizeof a);
+            std::memcpy(&b, after + i, sizeof b);
+            if (a != b)
+                break;
+            i += sizeof a;
         }
+        while (i < size && before[i] == after[i])
+            ++i;
+        if (i >= size)
+            break;
         const std::size_t start = i;
         std::size_t end = i + 1; // one past the last changed byte
-        for (std::size_t j = end; j < n && j < end + kHeader; ++j) {
+        for (std::size_t j = end; j < size && j < end + kHeader; ++j) {
             if (before[j] != after[j])
                 end = j + 1;
         }
-        while (end < n && before[end] != after[end])
+        while (end < size && before[end] != after[end])
             ++end;
-        putWord(runs, std::uint32_t(start));
+        putWord(runs, std::uint32_t(base + start));
         putWord(runs, std::uint32_t(end - start));
-        runs.insert(runs.end(), after.begin() + std::ptrdiff_t(start), after.begin() + std::ptrdiff_t(end));
+        runs.insert(runs.end(), after + start, after + end);
         i = end;
     }
-    return runs;
 }
 
 void applyRuns(std::vector<std::uint8_t> &flat, const std::vector<std::uint8_t> &runs)
@@ -94,29 +103,34 @@ void ScanHistory::record(const RuntimeState &state)
 {
     if (!m_entries.empty() && state.cycle <= lastCycle())
         truncateAfter(state.cycle - 1);
-    std::vector<std::uint8_t> flat = flatten(state);
-    const bool sameShape = !m_entries.empty() && flat.size() == m_lastFlat.size();
+    const std::size_t sizes[4] = {state.memory.size(), state.images[0].size(), state.images[1].size(),
+                                  state.images[2].size()};
+    const bool sameShape = !m_entries.empty() && std::equal(std::begin(sizes), std::end(sizes), std::begin(m_sizes));
     Entry entry;
     entry.cycle = state.cycle;
     entry.timeNs = state.timeNs;
     entry.nextDue = state.nextDue;
     entry.singleBefore = state.singleBefore;
-    const bool keyDue = !sameShape || m_entries.back().cycle % kKeyInterval == kKeyInterval - 1;
-    if (keyDue || m_entries.empty()) {
-        entry.key = true;
-        entry.data = flat;
-        m_sizes[0] = state.memory.size();
-        for (int area = 0; area < 3; ++area)
-            m_sizes[area + 1] = state.images[area].size();
+    if (!sameShape || m_entries.back().cycle % kKeyInterval == kKeyInterval - 1) {
         if (!sameShape)
             clear(); // another program: its scans cannot be replayed on this one's
+        std::copy(std::begin(sizes), std::end(sizes), std::begin(m_sizes));
+        m_lastFlat = flatten(state);
+        entry.key = true;
+        entry.data = m_lastFlat;
     } else {
-        entry.data = changedRuns(m_lastFlat, flat);
+        const std::vector<std::uint8_t> *segments[4] = {&state.memory, &state.images[0], &state.images[1],
+                                                        &state.images[2]};
+        std::size_t base = 0;
+        for (const std::vector<std::uint8_t> *segment : segments) {
+            appendChangedRuns(entry.data, m_lastFlat.data() + base, segment->data(), segment->size(), base);
+            base += segment->size();
+        }
+        applyRuns(m_lastFlat, entry.data);
         entry.data.shrink_to_fit();
     }
     m_bytes += entry.bytes();
     m_entries.push_back(std::move(entry));
-    m_lastFlat = std::move(flat);
     while (m_entries.size() > 1 && (int(m_entries.size()) > m_scanLimit || m_bytes > m_byteLimit))
         dropOldest();
 }
