@@ -83,8 +83,6 @@ public:
         m_time->setLabelsFont(small);
         m_value->setLabelsFont(small);
         m_time->setLabelsVisible(showTimeLabels);
-        m_time->setLabelFormat(QStringLiteral("%.0f ms"));
-        m_time->setTickCount(9);
         m_showTimeLabels = showTimeLabels;
         const interp::VariableRef &ref = owner.m_data->variables[size_t(variable)].ref;
         m_boolean = interp::isBoolean(ref);
@@ -105,6 +103,7 @@ public:
     void redraw(double from, double to)
     {
         m_time->setRange(from, to);
+        placeTimeTicks(from, to);
         const TraceData &data = *m_owner.m_data;
         QList<QPointF> points;
         double low = 0;
@@ -128,6 +127,7 @@ protected:
     {
         QChartView::resizeEvent(event);
         placePlotArea();
+        placeTimeTicks(m_time->min(), m_time->max());
     }
 
     void drawForeground(QPainter *painter, const QRectF &rect) override
@@ -194,6 +194,25 @@ private:
         const QPointF value = chart()->mapToValue(event->position(), m_series);
         m_owner.laneClicked(value.x(), event->modifiers() & Qt::ShiftModifier);
         event->accept();
+    }
+
+    // Ticks on round times (1, 2 or 5 times a power of ten) about every 110 pixels, so the labels
+    // read 0 ms, 500 ms, 1000 ms ... and never crowd.
+    void placeTimeTicks(double from, double to)
+    {
+        const double columns = std::max(2.0, double(width() - kPlotLeft - kPlotRight) / 110.0);
+        const double raw = std::max((to - from) / columns, 1e-6);
+        const double power = std::pow(10.0, std::floor(std::log10(raw)));
+        double step = power;
+        for (const double factor : {1.0, 2.0, 5.0, 10.0}) {
+            step = factor * power;
+            if (step >= raw)
+                break;
+        }
+        m_time->setTickType(QValueAxis::TicksDynamic);
+        m_time->setTickAnchor(0);
+        m_time->setTickInterval(step);
+        m_time->setLabelFormat(step >= 1 ? QStringLiteral("%.0f ms") : QStringLiteral("%.3g ms"));
     }
 
     // The same plot area in every lane, so that the time axes line up across the lanes.

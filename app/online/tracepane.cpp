@@ -186,6 +186,7 @@ void TracePane::setSettings(const model::SavedTrace &settings)
     fillLaneList();
     sendSettings();
     updateLanes();
+    updateStatus();
 }
 
 void TracePane::addVariable(const QString &name)
