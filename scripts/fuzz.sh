@@ -7,8 +7,9 @@
 #   (tests/fuzz/regressions/TARGET). What fails is saved in build/fuzz/crashes/TARGET/: fix it and
 #   copy the input to tests/fuzz/regressions/TARGET/, and every ctest run replays it from then on.
 # scripts/fuzz.sh --list   prints the targets.
-# scripts/fuzz.sh --all [SECONDS]   runs every target for SECONDS each (default 8: a short check,
-#   under a minute in all) and fails when one of them fails.
+# scripts/fuzz.sh --all [SECONDS] [libFuzzer options...]   runs every target for SECONDS each
+#   (default 8: a short check, under a minute in all) and fails when one of them fails; .ci/run
+#   does this with -seed=1 after the tests.
 # IEC_FUZZ_JOBS=N runs N fuzzers at once (default 1); IEC_BUILD_WRAP is put before the build
 # command (e.g. "flock /tmp/build.lock" on a machine where builds take turns).
 set -euo pipefail
@@ -20,8 +21,10 @@ if [ "${1:-}" = "--list" ]; then
   exit 0
 fi
 if [ "${1:-}" = "--all" ]; then
+  seconds=${2:-8}
+  shift $(($# >= 2 ? 2 : 1))
   for target in $targets; do
-    "$0" "$target" "${2:-8}"
+    "$0" "$target" "$seconds" "$@"
   done
   exit 0
 fi

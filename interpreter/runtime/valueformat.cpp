@@ -156,7 +156,9 @@ QString clockText(std::int64_t ns)
     return text;
 }
 
-QString quoted(const QString &value, QChar quote)
+// Control characters as $hh in a STRING, $hhhh in a WSTRING (IEC 61131-3: two hex digits per
+// byte, four per WCHAR), so the text reads back to the same value.
+QString quoted(const QString &value, QChar quote, int hexDigits)
 {
     QString text(quote);
     for (const QChar c : value) {
@@ -172,7 +174,7 @@ QString quoted(const QString &value, QChar quote)
         } else if (c == QLatin1Char('\f')) {
             text += QStringLiteral("$P");
         } else if (c.unicode() < 0x20) {
-            text += QStringLiteral("$%1").arg(c.unicode(), 2, 16, QLatin1Char('0')).toUpper();
+            text += QStringLiteral("$%1").arg(c.unicode(), hexDigits, 16, QLatin1Char('0')).toUpper();
         } else {
             text += c;
         }
@@ -201,12 +203,12 @@ QString formatDateAndTime(std::int64_t nanoseconds)
 
 QString formatString(const QString &value)
 {
-    return quoted(value, QLatin1Char('\''));
+    return quoted(value, QLatin1Char('\''), 2);
 }
 
 QString formatWString(const QString &value)
 {
-    return quoted(value, QLatin1Char('"'));
+    return quoted(value, QLatin1Char('"'), 4);
 }
 
 } // namespace iec::interp

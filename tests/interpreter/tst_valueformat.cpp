@@ -75,7 +75,7 @@ void TestValueFormat::strings_data()
                             << QStringLiteral("\"it's $\"x$\"\"");
     QTest::newRow("dollar and newline") << QStringLiteral("5$\n") << QStringLiteral("'5$$$N'")
                                         << QStringLiteral("\"5$$$N\"");
-    QTest::newRow("control") << QStringLiteral("\x1b") << QStringLiteral("'$1B'") << QStringLiteral("\"$1B\"");
+    QTest::newRow("control") << QStringLiteral("\x1b") << QStringLiteral("'$1B'") << QStringLiteral("\"$001B\""); // WSTRING: four digits
     QTest::newRow("empty") << QString() << QStringLiteral("''") << QStringLiteral("\"\"");
 }
 
