@@ -76,6 +76,10 @@ void TraceRecorder::truncateAfter(int cycle)
     if (m_triggerCycle && *m_triggerCycle > cycle) {
         m_triggerCycle.reset();
         m_afterTrigger = 0;
+    } else if (m_triggerCycle) {
+        // The samples after the trigger that are left; the rest are recorded again.
+        m_afterTrigger = int(std::count_if(m_rows.begin(), m_rows.end(),
+                                           [this](const TraceRow &row) { return row.cycle > *m_triggerCycle; }));
     }
     m_lastTriggerValue.reset(); // an edge across the cut is not seen
     ++m_generation;

@@ -294,6 +294,30 @@ void TestTimeTravel::recorderTruncatesWithTheHistory()
     recorder.truncateAfter(12);
     QCOMPARE(recorder.rows().back().cycle, 12);
     QCOMPARE(recorder.generation(), generation + 1);
+
+    // Cut back after the trigger fired and the recording stopped: it records the rest again.
+    TraceSettings triggered = settings;
+    triggered.trigger = TraceSettings::Trigger::Rising;
+    triggered.triggerVariable = QStringLiteral("Main.edge");
+    triggered.samplesAfterTrigger = 6;
+    recorder.configure(triggered, runtime); // at cycle 30; edge rises in cycles 35, 45, ...
+    for (int i = 0; i < 20; ++i) {
+        QVERIFY(runtime.runCycle());
+        recorder.sample(runtime);
+    }
+    QCOMPARE(recorder.triggerCycle(), std::optional<int>(35));
+    QCOMPARE(recorder.status(), TraceRecorder::Status::Done);
+    QCOMPARE(recorder.rows().back().cycle, 41);
+    recorder.truncateAfter(38);
+    QCOMPARE(recorder.status(), TraceRecorder::Status::Triggered);
+    for (int i = 0; i < 5; ++i) {
+        QVERIFY(runtime.runCycle());
+        recorder.sample(runtime);
+    }
+    QCOMPARE(recorder.status(), TraceRecorder::Status::Done);
+    // Cycles 31-35 up to the trigger, 36-38 kept after it, and three more (51-53).
+    QCOMPARE(int(recorder.rows().size()), 5 + 3 + 3);
+    QCOMPARE(recorder.rows().back().cycle, 53);
 }
 
 // The writers give, for recorded rows, the files `iecstudio-cli run --trace` writes (tst_cli
