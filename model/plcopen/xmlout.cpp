@@ -33,7 +33,9 @@ void XmlOut::finish(const Extras &extras)
         pugi::xml_document fragment;
         const QByteArray bytes = unknown.xml.toUtf8();
         if (!fragment.load_buffer(
-                bytes.constData(), bytes.size(), pugi::parse_default | pugi::parse_fragment, pugi::encoding_utf8))
+                bytes.constData(), bytes.size(),
+                // As the reader parses (reader.cpp): an element holding only whitespace keeps it.
+                pugi::parse_default | pugi::parse_ws_pcdata_single | pugi::parse_fragment, pugi::encoding_utf8))
             continue;
         pugi::xml_node after = lastInserted[unknown.anchor];
         if (!after && !unknown.anchor.isEmpty()) {
