@@ -149,9 +149,10 @@ protected:
         };
         const TraceData &data = *m_owner.m_data;
         if (data.triggerCycle) {
-            for (std::size_t i = 0; i < data.rows.size(); ++i)
-                if (data.rows[i].cycle == *data.triggerCycle)
-                    line(data.timeMs(i), kTriggerColor, Qt::DotLine);
+            const auto at = std::lower_bound(data.rows.begin(), data.rows.end(), *data.triggerCycle,
+                                             [](const interp::TraceRow &row, int cycle) { return row.cycle < cycle; });
+            if (at != data.rows.end() && at->cycle == *data.triggerCycle)
+                line(double(at->timeNs) / 1e6, kTriggerColor, Qt::DotLine);
         }
         line(m_owner.m_historyMarker, kHistoryColor, Qt::DashLine);
         line(m_owner.m_cursors[0], kCursorColors[0], Qt::SolidLine);

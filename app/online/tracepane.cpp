@@ -272,30 +272,30 @@ void TracePane::lanesEdited()
     updateLanes();
 }
 
-void TracePane::updateLanes()
+// The recorded variables that are shown, in lane order (indices into m_data.variables).
+std::vector<int> TracePane::shownVariables() const
 {
-    std::vector<int> lanes;
+    std::vector<int> shown;
     for (const QString &name : std::as_const(m_settings.variables)) {
         if (m_settings.hidden.contains(name))
             continue;
         for (std::size_t i = 0; i < m_data.variables.size(); ++i) {
             if (m_data.variables[i].name.compare(name, Qt::CaseInsensitive) == 0)
-                lanes.push_back(int(i));
+                shown.push_back(int(i));
         }
     }
-    m_chart->setLanes(lanes);
+    return shown;
+}
+
+void TracePane::updateLanes()
+{
+    m_chart->setLanes(shownVariables());
     updateReadout();
 }
 
 void TracePane::updateReadout()
 {
-    std::vector<int> shown;
-    for (const QString &name : std::as_const(m_settings.variables)) {
-        for (std::size_t i = 0; i < m_data.variables.size(); ++i) {
-            if (!m_settings.hidden.contains(name) && m_data.variables[i].name.compare(name, Qt::CaseInsensitive) == 0)
-                shown.push_back(int(i));
-        }
-    }
+    const std::vector<int> shown = shownVariables();
     m_readout->setRowCount(kReadoutFixedRows + int(shown.size()));
     QStringList labels{tr("Time (ms)"), tr("Cycle")};
     for (const int variable : shown)

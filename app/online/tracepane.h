@@ -63,6 +63,7 @@ private:
     void applyUpdate(const interp::TraceUpdate &update);
     void fillLaneList();
     void lanesEdited();
+    [[nodiscard]] std::vector<int> shownVariables() const;
     void updateLanes();
     void updateReadout();
     void updateStatus();

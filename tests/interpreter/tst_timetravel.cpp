@@ -179,9 +179,11 @@ void TestTimeTravel::resumingFromAnEarlierScanMakesANewBranch()
     }
     QCOMPARE(history.lastCycle(), 143);
     QCOMPARE(history.size(), 143);
-    QCOMPARE(*history.stateAt(143)->memory.data(), *fresh.state().memory.data());
     QVERIFY(sameState(*history.stateAt(143), fresh.state()));
-    QVERIFY(sameState(*history.stateAt(100), *history.stateAt(100)));
+    // The scans before the branch are those of the first run.
+    Runtime upTo100(module);
+    runTo(upTo100, 100);
+    QVERIFY(sameState(*history.stateAt(100), upTo100.state()));
     QCOMPARE(*runtime.read(QStringLiteral("Main.done")), QStringLiteral("TRUE")); // 200 ms of filling
 }
 
