@@ -8,8 +8,11 @@
 #   copy the input to tests/fuzz/regressions/TARGET/, and every ctest run replays it from then on.
 # scripts/fuzz.sh --list   prints the targets.
 # scripts/fuzz.sh --all [SECONDS] [libFuzzer options...]   runs every target for SECONDS each
-#   (default 8: a short check, under a minute in all) and fails when one of them fails; .ci/run
-#   does this with -seed=1 after the tests.
+#   (default 8: a short check, under a minute in all) and fails when one of them fails.
+# scripts/fuzz.sh --check   what .ci/run does: every target for a fixed number of executions
+#   (kCheckRuns below, a few seconds each) with -seed=1 on a fresh corpus, so a clean clone
+#   explores the same inputs on every machine, however fast, and a failure replays.
+# IEC_FUZZ_CORPUS=DIR keeps the corpus in DIR instead of build/fuzz/corpus/TARGET.
 # IEC_FUZZ_JOBS=N runs N fuzzers at once (default 1); IEC_BUILD_WRAP is put before the build
 # command (e.g. "flock /tmp/build.lock" on a machine where builds take turns).
 set -euo pipefail
@@ -18,6 +21,18 @@ source "$(dirname "$0")/lib.sh"
 targets=$(sed -n 's/^iec_add_fuzz_target(\([a-z_]*\).*/\1/p' "$IEC_ROOT/tests/fuzz/CMakeLists.txt")
 if [ "${1:-}" = "--list" ]; then
   echo "$targets"
+  exit 0
+fi
+if [ "${1:-}" = "--check" ]; then
+  # Executions per target: about five seconds each on a 2-core CI machine. A time cap alone
+  # made a faster machine explore further than the run that was checked before landing.
+  declare -A kCheckRuns=([plcopen]=4000 [iectext]=300 [compile]=500 [il]=700 [declarations]=1500 \
+    [typetext]=2000 [values]=300000)
+  for target in $targets; do
+    fresh=$(mktemp -d)
+    IEC_FUZZ_CORPUS=$fresh "$0" "$target" 120 -seed=1 -runs="${kCheckRuns[$target]:-10000}"
+    rm -rf "$fresh"
+  done
   exit 0
 fi
 if [ "${1:-}" = "--all" ]; then
@@ -49,7 +64,7 @@ iec_say "Building fuzz_$target"
 # shellcheck disable=SC2086 # IEC_BUILD_WRAP is a command with its arguments
 ${IEC_BUILD_WRAP:-} cmake --build "$dir" --target "fuzz_$target" --parallel "$(nproc)"
 
-corpus="$dir/corpus/$target"
+corpus="${IEC_FUZZ_CORPUS:-$dir/corpus/$target}"
 crashes="$dir/crashes/$target"
 mkdir -p "$corpus" "$crashes"
 read -r -a seeds <"$dir/tests/fuzz/fuzz_$target.seeds"

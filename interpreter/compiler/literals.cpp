@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string_view>
 
 namespace iec::interp {
@@ -75,6 +76,37 @@ std::optional<double> decodeDecimal(QStringView text)
     bool ok = false;
     const double value = plain.toDouble(&ok);
     return ok ? std::optional<double>(value) : std::nullopt;
+}
+
+__extension__ typedef __int128 Wide128;
+
+// A decimal number ("12", "1.5", "1_000.25") times a whole number of nanoseconds, exactly:
+// doubles lose the last nanoseconds of long times, so T#64300d…ms printed and read back would
+// differ (found by fuzz_values). Fractions below a nanosecond round to nearest.
+std::optional<Wide128> scaledDecimal(QStringView text, std::int64_t unit)
+{
+    if (!decodeDecimal(text))
+        return std::nullopt;
+    // Past 2^64 the result overflows a time anyway; the bound keeps every product below 2^113.
+    constexpr Wide128 kLimit = static_cast<Wide128>(1) << 64;
+    Wide128 whole = 0;
+    qsizetype i = 0;
+    for (; i < text.size() && text[i] != QLatin1Char('.'); ++i) {
+        if (text[i] == QLatin1Char('_'))
+            continue;
+        whole = whole * 10 + (text[i].unicode() - u'0');
+        if (whole > kLimit)
+            return std::nullopt;
+    }
+    Wide128 numerator = 0, denominator = 1;
+    for (++i; i < text.size(); ++i) {
+        if (text[i] == QLatin1Char('_') || denominator > kLimit / 10)
+            continue; // digits beyond 19 decimals cannot change a nanosecond
+        numerator = numerator * 10 + (text[i].unicode() - u'0');
+        denominator *= 10;
+    }
+    const Wide128 fraction = (numerator * unit * 2 + denominator) / (denominator * 2);
+    return whole * unit + fraction;
 }
 
 struct Date {
@@ -209,19 +241,19 @@ std::optional<std::int64_t> decodeDuration(QStringView body)
         return std::nullopt;
     struct Unit {
         std::string_view name;
-        double nanoseconds;
+        std::int64_t nanoseconds;
     };
     // Longest names first so "ms" is not read as "m" followed by "s".
     static constexpr std::array<Unit, 7> units{{
-        {"MS", 1e6},
-        {"US", 1e3},
-        {"NS", 1.0},
-        {"D", 86400e9},
-        {"H", 3600e9},
-        {"M", 60e9},
-        {"S", 1e9},
+        {"MS", 1'000'000},
+        {"US", 1'000},
+        {"NS", 1},
+        {"D", 86'400'000'000'000},
+        {"H", 3'600'000'000'000},
+        {"M", 60'000'000'000},
+        {"S", 1'000'000'000},
     }};
-    double total = 0;
+    Wide128 total = 0;
     qsizetype i = 0;
     int lastRank = -1;
     while (i < body.size()) {
@@ -232,12 +264,15 @@ std::optional<std::int64_t> decodeDuration(QStringView body)
         qsizetype start = i;
         while (i < body.size() && (isDigit(body[i]) || body[i] == QLatin1Char('.') || body[i] == QLatin1Char('_')))
             ++i;
-        const auto number = decodeDecimal(body.mid(start, i - start));
-        if (!number)
+        const QStringView number = body.mid(start, i - start);
+        if (!decodeDecimal(number))
             return std::nullopt;
         if (i == body.size()) {
             if (start == 0) { // a bare number: milliseconds
-                total = *number * 1e6;
+                const auto ns = scaledDecimal(number, 1'000'000);
+                if (!ns)
+                    return std::nullopt;
+                total = *ns;
                 break;
             }
             return std::nullopt;
@@ -255,7 +290,10 @@ std::optional<std::int64_t> decodeDuration(QStringView body)
                 if (rank[u] <= lastRank)
                     return std::nullopt;
                 lastRank = rank[u];
-                total += *number * unit.nanoseconds;
+                const auto ns = scaledDecimal(number, unit.nanoseconds);
+                if (!ns)
+                    return std::nullopt;
+                total += *ns;
                 i += n;
                 matched = true;
                 break;
@@ -264,10 +302,11 @@ std::optional<std::int64_t> decodeDuration(QStringView body)
         if (!matched)
             return std::nullopt;
     }
-    if (total > 9.2e18)
+    // The most negative time has no positive counterpart: -(max + 1) is still a time.
+    const Wide128 limit = static_cast<Wide128>(std::numeric_limits<std::int64_t>::max()) + (negative ? 1 : 0);
+    if (total > limit)
         return std::nullopt;
-    const auto ns = static_cast<std::int64_t>(std::llround(total));
-    return negative ? -ns : ns;
+    return static_cast<std::int64_t>(negative ? -total : total);
 }
 
 std::optional<std::int64_t> decodeDate(QStringView body)

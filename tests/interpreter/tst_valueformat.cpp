@@ -1,3 +1,4 @@
+#include "interpreter/compiler/literals.h"
 #include "interpreter/runtime/valueformat.h"
 
 #include <QTest>
@@ -32,6 +33,9 @@ void TestValueFormat::durations_data()
     QTest::newRow("one day") << 86'400'000 * ms << QStringLiteral("T#1d");
     QTest::newRow("us and ns") << qint64{2'005} << QStringLiteral("T#2us5ns");
     QTest::newRow("negative") << -250 * ms << QStringLiteral("T#-250ms");
+    // Found by fuzz_values: read through a double, the last nanoseconds of a long time changed.
+    QTest::newRow("long time to the nanosecond") << qint64{5'555'555'551'109'999'616}
+                                                 << QStringLiteral("T#64300d9h52m31s109ms999us616ns");
     QTest::newRow("most negative") << std::numeric_limits<qint64>::min()
                                    << QStringLiteral("T#-106751d23h47m16s854ms775us808ns");
 }
@@ -41,6 +45,7 @@ void TestValueFormat::durations()
     QFETCH(qint64, nanoseconds);
     QFETCH(QString, text);
     QCOMPARE(formatDuration(nanoseconds), text);
+    QCOMPARE(decodeDuration(QStringView(text).mid(2)), std::optional<std::int64_t>(nanoseconds)); // reads back
 }
 
 void TestValueFormat::reals_data()
