@@ -61,6 +61,7 @@ DeclarationEditorBase::DeclarationEditorBase(QUndoStack &undoStack, const QStrin
 
 QWidget *DeclarationEditorBase::createTablePage(const QStringList &classes)
 {
+    m_classes = classes;
     auto *page = new QWidget;
     auto *tools = new QToolBar(page);
     tools->setToolButtonStyle(Qt::ToolButtonTextOnly);
@@ -151,8 +152,13 @@ void DeclarationEditorBase::fitColumns()
     const int roomy = metrics.horizontalAdvance(QStringLiteral("VAR_OUTPUT RETAIN")) + 12;
     for (int column = 0; column < kDeclarationColumnCount - 1; ++column)
         m_table->setColumnWidth(column, std::max(m_table->columnWidth(column), roomy * 3 / 4));
+    // The class column holds its longest choice whole ("VAR_GLOBAL RETAIN PERSISTENT"), with
+    // room for the drop-down arrow its editor shows.
+    int classWidth = roomy;
+    for (const QString &choice : m_classes)
+        classWidth = std::max(classWidth, metrics.horizontalAdvance(choice) + 12 + metrics.height());
     m_table->setColumnWidth(
-        int(DeclarationColumn::Class), std::max(m_table->columnWidth(int(DeclarationColumn::Class)), roomy));
+        int(DeclarationColumn::Class), std::max(m_table->columnWidth(int(DeclarationColumn::Class)), classWidth));
 }
 
 std::vector<DeclarationEditorBase::Placed> DeclarationEditorBase::ownProblems(const model::Interface &declarations) const

@@ -102,6 +102,7 @@ private:
     QAction *m_moveUpAction = nullptr;
     QAction *m_moveDownAction = nullptr;
     bool m_columnsFitted = false;
+    QStringList m_classes; // the class column's choices
 };
 
 } // namespace iec::editors

@@ -1,4 +1,4 @@
-# SFC lowering (sfclowering.h), the chart graph it works on (sfcgraph.h), the names of the
+# SFC lowering (sfclowering.h; its working state in sfcloweringclass.h), the chart graph it works on (sfcgraph.h), the names of the
 # implicit variables (sfcnames.h), the chart state the online mode shows (sfcstatus.h) and the
 # textual SFC form <-> model (sfctext.h).
 target_sources(iec_interpreter PRIVATE
@@ -7,6 +7,8 @@ target_sources(iec_interpreter PRIVATE
   sfc/sfcnames.h
   sfc/sfclowering.h
   sfc/sfclowering.cpp
+  sfc/sfcloweringclass.h
+  sfc/sfcloweringphases.cpp
   sfc/sfcstatus.h
   sfc/sfcstatus.cpp
   sfc/sfctext.h

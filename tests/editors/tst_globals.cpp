@@ -9,6 +9,7 @@
 #include "model/projectmodel.h"
 
 #include <QSignalSpy>
+#include <QTableView>
 #include <QTest>
 #include <QUndoStack>
 
@@ -265,6 +266,10 @@ void TestGlobals::showsAListsSectionsInTableAndText()
                                                                    "VAR_GLOBAL CONSTANT\n"
                                                                    "    Limit : INT;\n"
                                                                    "END_VAR\n"));
+    // The class column shows its longest choice whole.
+    const QTableView *table = m_editor->table();
+    QVERIFY(table->columnWidth(int(DeclarationColumn::Class))
+        > table->fontMetrics().horizontalAdvance(QStringLiteral("VAR_GLOBAL RETAIN PERSISTENT")));
 }
 
 void TestGlobals::cellEditIsOneCommandOnTheProjectStack()
