@@ -460,7 +460,32 @@ private:
             pushChecked(kind == TokenKind::IntegerLiteral, TokenKind::IntegerLiteral, start);
     }
 
-    void number(qsizetype start) { push(scanNumber(start), start); }
+    // After a member access's dot, digits are a bit number (x.0), never a fraction: "x.0.25" is
+    // bit 25 of x.0, so that it prints back as it reads (found by fuzz_typetext).
+    bool afterMemberDot() const
+    {
+        for (auto it = m_tokens.rbegin(); it != m_tokens.rend(); ++it) {
+            if (it->kind != TokenKind::Comment && it->kind != TokenKind::Pragma)
+                return it->kind == TokenKind::Operator && it->length == 1 && m_text[it->offset] == QLatin1Char('.');
+        }
+        return false;
+    }
+
+    void number(qsizetype start)
+    {
+        if (!afterMemberDot()) {
+            push(scanNumber(start), start);
+            return;
+        }
+        m_pos = start;
+        skipWhile(isDigit);
+        if (isWordChar(at(m_pos))) { // x.0abc
+            skipWhile(isWordChar);
+            push(TokenKind::Error, start);
+            return;
+        }
+        push(TokenKind::IntegerLiteral, start);
+    }
 
     // Scans 42, 16#FF, 1.5E3 from `start`; returns its kind (Error when malformed).
     TokenKind scanNumber(qsizetype start)

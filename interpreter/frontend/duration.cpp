@@ -4,7 +4,6 @@
 
 #include <QRegularExpression>
 
-#include <cmath>
 
 namespace iec::interp::frontend {
 
@@ -19,12 +18,15 @@ std::optional<std::int64_t> parseIsoDuration(QStringView text)
     const QRegularExpressionMatch match = pattern.match(text.toString());
     if (!match.hasMatch() || text.size() < 3 || text.endsWith(u'T') || text.endsWith(u't'))
         return std::nullopt;
-    constexpr double kUnits[] = {86'400e9, 3'600e9, 60e9, 1e9};
-    double ns = 0;
-    for (int part = 0; part < 4; ++part)
-        ns += match.capturedView(part + 2).toDouble() * kUnits[part];
-    const auto rounded = static_cast<std::int64_t>(std::llround(ns));
-    return match.capturedView(1).isEmpty() ? rounded : -rounded;
+    // Said again as an IEC duration (1d2h3m4.5s), which is read exactly and refused when it does
+    // not fit in 64 bits (a double overflowed here; found by fuzz_values).
+    constexpr const char *kUnits[] = {"d", "h", "m", "s"};
+    QString iec = match.capturedView(1).toString();
+    for (int part = 0; part < 4; ++part) {
+        if (!match.capturedView(part + 2).isEmpty())
+            iec += match.capturedView(part + 2) + QLatin1String(kUnits[part]);
+    }
+    return decodeDuration(iec);
 }
 
 } // namespace

@@ -88,6 +88,10 @@ void TestLexer::tokens_data()
     row("bool bad", "BOOL#maybe", "Err:BOOL#maybe");
     row("typed int with fraction", "INT#1.5", "Err:INT#1.5");
     row("real", "1.5", "Real:1.5");
+    // After a member's dot, a bit number (found by fuzz_typetext: "L1.0 .25" printed as L1.0.25).
+    row("bit of a bit", "x.0.25", "Id:x Op:. Int:0 Op:. Int:25");
+    row("bit after space", "x. 3", "Id:x Op:. Int:3");
+    row("bit glued to letters", "x.0ab", "Id:x Op:. Err:0ab");
     row("real exponent", "1.0E-3", "Real:1.0E-3");
     row("real exponent plus", "2.5e+10", "Real:2.5e+10");
     row("integer exponent", "1e6", "Real:1e6");
