@@ -24,6 +24,7 @@ struct DeclarationRow;
 
 namespace iec::app {
 
+class MemberEditor;
 class UndoStacks;
 
 // The tabs in the middle of the window: one per open POU body, action or transition. Text bodies
@@ -68,6 +69,11 @@ public:
     // given (the first when empty); its edits go on the project's undo stack.
     QWidget *openConfiguration(const QString &configuration, const QString &resource = {}, const QString &task = {});
     [[nodiscard]] editors::ConfigurationEditor *configurationEditorFor(const QString &configuration) const;
+    // Opens method or property `name` of `pou` (CODESYS keeps them in the POU's addData) as
+    // text in a tab, or shows its tab; nullptr when there is no such member. Its text goes into
+    // the model as a body's does; online it is only looked at. (documentareamembers.cpp)
+    QWidget *openMember(model::PouId pou, const QString &name);
+    [[nodiscard]] MemberEditor *memberEditorFor(model::PouId pou, const QString &name) const;
     // Go to definition of `path` (a dotted name) used in the body `from`: a variable of the POU
     // shows its declaration row, a member of a function block instance the row in that FB, a
     // POU opens, a data type opens its editor, an action or transition of the POU opens. False

@@ -2,6 +2,7 @@
 
 #include "editors/globals/globallists.h"
 #include "interpreter/compiler/lexer.h"
+#include "interpreter/frontend/codesysmembers.h"
 #include "model/project.h"
 
 #include <QRegularExpression>
@@ -92,6 +93,18 @@ std::optional<QString> NameRules::partNameError(
         return error;
     if (isPartName(project, pou, name, renamed))
         return tr("This POU has an action or transition named \"%1\" already.").arg(name);
+    return std::nullopt;
+}
+
+std::optional<QString> NameRules::memberNameError(const model::Project &project, model::PouId pou, const QString &name)
+{
+    if (auto error = identifierError(name))
+        return error;
+    const model::Pou *found = project.findPou(pou);
+    if (found && std::ranges::any_of(interp::frontend::codesysMembers(*found), [&](const interp::frontend::CodesysMemberSummary &m) {
+            return m.name.compare(name, Qt::CaseInsensitive) == 0;
+        }))
+        return tr("This function block has a method or property named \"%1\" already.").arg(name);
     return std::nullopt;
 }
 

@@ -33,6 +33,9 @@ public:
     [[nodiscard]] static std::optional<QString> partNameError(
         const model::Project &project, model::PouId pou, const QString &name, const QString &renamed = {});
 
+    // The same for a method or property of `pou` (they share a namespace).
+    [[nodiscard]] static std::optional<QString> memberNameError(
+        const model::Project &project, model::PouId pou, const QString &name);
     // The same for a global variable list: code writes `List.Variable`, so a list's name is unique
     // among the lists and no POU or data type has it. `renamedKey` is GlobalListRef::key() of
     // the list being renamed.

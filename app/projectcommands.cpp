@@ -5,6 +5,8 @@
 #include "editors/common/editorregistry.h"
 #include "editors/standardeditors.h"
 #include "interpreter/compiler/lexer.h"
+#include "interpreter/frontend/codesysmembers.h"
+#include "model/plcopen/codesysoop.h"
 #include "model/projectmodel.h"
 #include "model/undo/partcommands.h"
 #include "model/undo/poucommands.h"
@@ -111,6 +113,38 @@ bool ProjectCommands::rename(const BodyRef &item, const QString &newName, QStrin
     if (const auto problem = NameRules::partNameError(m_model.project(), item.pou, newName, oldName))
         return fail(error, *problem);
     m_stack.push(createRenamePouPartCommand(m_model, item.pou, item.part, oldName, newName));
+    return true;
+}
+
+bool ProjectCommands::addMember(model::PouId pou, const QString &name, bool property, QString *error)
+{
+    const model::Pou *found = m_model.project().findPou(pou);
+    if (!found || found->kind != model::PouKind::FunctionBlock)
+        return fail(error, tr("Methods and properties belong to function blocks."));
+    if (const auto problem = NameRules::memberNameError(m_model.project(), pou, name))
+        return fail(error, *problem);
+    const QString text = property
+        ? QStringLiteral("PROPERTY %1 : INT\nGET\n%1 := 0;\nEND_GET\nSET\nEND_SET\nEND_PROPERTY\n").arg(name)
+        : QStringLiteral("METHOD %1 : BOOL\nVAR_INPUT\nEND_VAR\n%1 := TRUE;\nEND_METHOD\n").arg(name);
+    const interp::frontend::CodesysMemberText read = interp::frontend::readCodesysMemberText(text, found->name);
+    if (!read.definition)
+        return fail(error, tr("The name \"%1\" cannot start a method.").arg(name));
+    m_stack.push(new model::SetPouAddDataCommand(m_model, pou,
+        model::plcopen::addDataWithMember(found->addData, {}, *read.definition),
+        property ? tr("Add Property %1").arg(name) : tr("Add Method %1").arg(name)));
+    return true;
+}
+
+bool ProjectCommands::removeMember(model::PouId pou, const QString &name)
+{
+    flushPendingEdits();
+    const model::Pou *found = m_model.project().findPou(pou);
+    if (!found)
+        return false;
+    const model::AddData without = model::plcopen::addDataWithoutMember(found->addData, name);
+    if (without == found->addData)
+        return false;
+    m_stack.push(new model::SetPouAddDataCommand(m_model, pou, without, tr("Delete %1").arg(name)));
     return true;
 }
 

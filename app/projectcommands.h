@@ -57,6 +57,11 @@ public:
     // Copies a POU or an action/transition under the first free name "<name>_N"; returns the copy.
     std::optional<model::BodyRef> duplicate(const model::BodyRef &item);
 
+    // Adds an empty method or property `name` to function block `pou` (CODESYS keeps them in its
+    // addData), or removes one; one step on the project's undo stack each.
+    bool addMember(model::PouId pou, const QString &name, bool property, QString *error = nullptr);
+    bool removeMember(model::PouId pou, const QString &name);
+
     // The name an item of the tree shows for `item`; empty when it does not exist.
     [[nodiscard]] QString nameOf(const model::BodyRef &item) const;
 

@@ -28,6 +28,8 @@ ProjectTreeActions::ProjectTreeActions(ProjectCommands &commands, GlobalListComm
     m_addPou = createAction("addPouAction", &ProjectTreeActions::addPouInteractive);
     m_addAction = createAction("addActionAction", &ProjectTreeActions::addActionInteractive);
     m_addTransition = createAction("addTransitionAction", &ProjectTreeActions::addTransitionInteractive);
+    m_addMethod = createAction("addMethodAction", &ProjectTreeActions::addMethodInteractive);
+    m_addProperty = createAction("addPropertyAction", &ProjectTreeActions::addPropertyInteractive);
     m_addGlobalList = new QAction(this);
     m_addGlobalList->setObjectName(QStringLiteral("addGlobalListAction"));
     connect(m_addGlobalList, &QAction::triggered, this, [this] { addGlobalListInteractive(); });
@@ -72,6 +74,8 @@ void ProjectTreeActions::addTo(QMenu *menu) const
     menu->addAction(m_addPou);
     menu->addAction(m_addAction);
     menu->addAction(m_addTransition);
+    menu->addAction(m_addMethod);
+    menu->addAction(m_addProperty);
     menu->addAction(m_addGlobalList);
     menu->addAction(m_taskConfiguration);
     menu->addSeparator();
@@ -85,6 +89,8 @@ void ProjectTreeActions::retranslate()
     m_addPou->setText(tr("Add &POU..."));
     m_addAction->setText(tr("Add &Action..."));
     m_addTransition->setText(tr("Add &Transition..."));
+    m_addMethod->setText(tr("Add &Method..."));
+    m_addProperty->setText(tr("Add Propert&y..."));
     m_addGlobalList->setText(tr("Add &Global Variable List..."));
     m_taskConfiguration->setText(tr("Task &Configuration"));
     m_rename->setText(tr("&Rename..."));
@@ -96,6 +102,18 @@ std::optional<BodyRef> ProjectTreeActions::currentItem() const
 {
     const auto *treeModel = qobject_cast<const ProjectTreeModel *>(m_tree.model());
     return treeModel ? treeModel->bodyRef(m_tree.currentIndex()) : std::nullopt;
+}
+
+const model::Pou *ProjectTreeActions::currentPou() const
+{
+    const auto *treeModel = qobject_cast<const ProjectTreeModel *>(m_tree.model());
+    return treeModel ? m_model.project().findPou(treeModel->pouId(m_tree.currentIndex())) : nullptr;
+}
+
+QString ProjectTreeActions::currentMember() const
+{
+    const auto *treeModel = qobject_cast<const ProjectTreeModel *>(m_tree.model());
+    return treeModel && treeModel->isMember(m_tree.currentIndex()) ? treeModel->name(m_tree.currentIndex()) : QString();
 }
 
 std::optional<editors::GlobalListRef> ProjectTreeActions::currentGlobalList() const
@@ -113,10 +131,16 @@ void ProjectTreeActions::updateEnabled()
     m_addPou->setEnabled(!m_locked);
     m_addAction->setEnabled(mayHaveParts && !m_locked);
     m_addTransition->setEnabled(mayHaveParts && !m_locked);
+    // Methods and properties: function blocks, as CODESYS compiles them.
+    const model::Pou *owner = currentPou();
+    const bool mayHaveMembers = owner && owner->kind == model::PouKind::FunctionBlock;
+    m_addMethod->setEnabled(mayHaveMembers && !m_locked);
+    m_addProperty->setEnabled(mayHaveMembers && !m_locked);
     m_addGlobalList->setEnabled(!m_locked);
     const bool named = item.has_value() || currentGlobalList().has_value();
-    for (QAction *action : {m_rename, m_delete, m_duplicate})
+    for (QAction *action : {m_rename, m_duplicate})
         action->setEnabled(named && !m_locked);
+    m_delete->setEnabled((named || !currentMember().isEmpty()) && !m_locked);
 }
 
 void ProjectTreeActions::setLocked(bool locked)
@@ -177,6 +201,39 @@ void ProjectTreeActions::addPartInteractive(BodyRef::Part part)
     QString error;
     if (const auto added = m_commands.addPouPart(item->pou, dialog.newPart(), &error))
         Q_EMIT created(*added);
+    else
+        QMessageBox::warning(m_dialogParent, dialog.windowTitle(), error);
+}
+
+void ProjectTreeActions::addMethodInteractive()
+{
+    addMemberInteractive(false);
+}
+
+void ProjectTreeActions::addPropertyInteractive()
+{
+    addMemberInteractive(true);
+}
+
+void ProjectTreeActions::addMemberInteractive(bool property)
+{
+    if (refuseWhenLocked())
+        return;
+    const model::Pou *pou = currentPou();
+    if (!pou || pou->kind != model::PouKind::FunctionBlock)
+        return;
+    const model::PouId id = pou->id;
+    const model::Project &project = m_model.project();
+    const QString suggested = NameRules::firstFree(property ? QStringLiteral("Property") : QStringLiteral("Method"),
+        [&](const QString &name) { return NameRules::memberNameError(project, id, name).has_value(); });
+    RenameDialog dialog(suggested, [&](const QString &name) { return NameRules::memberNameError(project, id, name); },
+        m_dialogParent);
+    dialog.setWindowTitle(property ? tr("Add Property") : tr("Add Method"));
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    QString error;
+    if (m_commands.addMember(id, dialog.newName(), property, &error))
+        Q_EMIT memberCreated(id, dialog.newName());
     else
         QMessageBox::warning(m_dialogParent, dialog.windowTitle(), error);
 }
@@ -272,17 +329,20 @@ void ProjectTreeActions::deleteInteractive()
         return;
     const std::optional<BodyRef> item = currentItem();
     const auto list = currentGlobalList();
-    if (!item && !list)
+    const QString member = currentMember();
+    if (!item && !list && member.isEmpty())
         return;
-    const QString name = item ? m_commands.nameOf(*item) : list->displayName();
+    const QString name = item ? m_commands.nameOf(*item) : list ? list->displayName() : member;
     const auto answer = QMessageBox::question(m_dialogParent, tr("Delete"),
         tr("Delete %1? Edit → Undo brings it back.").arg(name), QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
     if (answer != QMessageBox::Yes)
         return;
     if (item)
         m_commands.remove(*item);
-    else
+    else if (list)
         m_lists.remove(*list);
+    else if (const model::Pou *pou = currentPou())
+        m_commands.removeMember(pou->id, member);
 }
 
 void ProjectTreeActions::duplicateCurrent()

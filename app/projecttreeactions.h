@@ -33,6 +33,8 @@ public:
     [[nodiscard]] QAction *addPouAction() const { return m_addPou; }
     [[nodiscard]] QAction *addActionAction() const { return m_addAction; }
     [[nodiscard]] QAction *addTransitionAction() const { return m_addTransition; }
+    [[nodiscard]] QAction *addMethodAction() const { return m_addMethod; }
+    [[nodiscard]] QAction *addPropertyAction() const { return m_addProperty; }
     [[nodiscard]] QAction *addGlobalListAction() const { return m_addGlobalList; }
     [[nodiscard]] QAction *taskConfigurationAction() const { return m_taskConfiguration; }
     [[nodiscard]] QAction *renameAction() const { return m_rename; }
@@ -47,6 +49,8 @@ public Q_SLOTS:
     void addPouInteractive();
     void addActionInteractive();
     void addTransitionInteractive();
+    void addMethodInteractive();
+    void addPropertyInteractive();
     // Asks for the name of a new global variable list in `owner` (by default where
     // GlobalListCommands puts it) and adds it.
     void addGlobalListInteractive(const std::optional<iec::editors::GlobalListRef> &owner = std::nullopt);
@@ -62,6 +66,8 @@ public Q_SLOTS:
 Q_SIGNALS:
     // A POU, action or transition was created (added or duplicated): the window opens it.
     void created(const iec::model::BodyRef &item);
+    // A method or property was added: the window opens it.
+    void memberCreated(iec::model::PouId pou, const QString &name);
     // A global variable list was created (added or duplicated): the window opens it.
     void globalListCreated(const iec::editors::GlobalListRef &list);
     // The task configuration of `configuration` is to be shown.
@@ -72,6 +78,11 @@ Q_SIGNALS:
 private:
     QAction *createAction(const char *objectName, void (ProjectTreeActions::*slot)());
     void addPartInteractive(model::BodyRef::Part part);
+    void addMemberInteractive(bool property);
+    // The POU of the current node: a POU, or one of its actions, transitions or members.
+    [[nodiscard]] const model::Pou *currentPou() const;
+    // The method or property the current node is; empty for other nodes.
+    [[nodiscard]] QString currentMember() const;
     void updateEnabled();
     bool refuseWhenLocked();
     void showContextMenu(const QPoint &position);
@@ -87,6 +98,8 @@ private:
     QAction *m_addPou = nullptr;
     QAction *m_addAction = nullptr;
     QAction *m_addTransition = nullptr;
+    QAction *m_addMethod = nullptr;
+    QAction *m_addProperty = nullptr;
     QAction *m_addGlobalList = nullptr;
     QAction *m_taskConfiguration = nullptr;
     QAction *m_rename = nullptr;

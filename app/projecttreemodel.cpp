@@ -1,6 +1,7 @@
 #include "app/projecttreemodel.h"
 
 #include "app/treeicons.h"
+#include "interpreter/frontend/codesysmembers.h"
 #include "model/projectmodel.h"
 
 namespace iec::app {
@@ -22,6 +23,7 @@ ProjectTreeModel::ProjectTreeModel(model::ProjectModel &projectModel, QObject *p
     connect(&projectModel, &model::ProjectModel::pouPartsChanged, this, refresh);
     connect(&projectModel, &model::ProjectModel::dataTypesChanged, this, refresh);
     connect(&projectModel, &model::ProjectModel::instancesChanged, this, refresh);
+    connect(&projectModel, &model::ProjectModel::pouAddDataChanged, this, refresh);
     rebuild();
 }
 
@@ -33,6 +35,11 @@ QString ProjectTreeModel::folderKey(Folder folder)
 QString ProjectTreeModel::pouKey(model::PouId id)
 {
     return QStringLiteral("pou:%1").arg(id.value);
+}
+
+QString ProjectTreeModel::memberKey(model::PouId pou, const QString &name)
+{
+    return QStringLiteral("member:%1:%2").arg(pou.value).arg(name.toLower());
 }
 
 QString ProjectTreeModel::globalListKey(const editors::GlobalListRef &list)
@@ -76,6 +83,11 @@ void ProjectTreeModel::addPou(int folder, const model::Pou &pou)
                      .language = languageOf(&value.body), .parent = pouNode});
         }
     };
+    // Methods and properties first, as CODESYS lists them under a function block.
+    for (const interp::frontend::CodesysMemberSummary &member : interp::frontend::codesysMembers(pou)) {
+        addNode({.kind = NodeKind::Member, .key = memberKey(pou.id, member.name), .name = member.name, .pou = pou.id,
+                 .property = member.property, .parent = pouNode});
+    }
     addParts(pou.actions, BodyRef::Part::Action, NodeKind::Action);
     addParts(pou.transitions, BodyRef::Part::Transition, NodeKind::Transition);
 }
@@ -203,6 +215,8 @@ QString ProjectTreeModel::displayText(const Node &node) const
     default:
         break;
     }
+    if (node.kind == NodeKind::Member)
+        return node.property ? tr("%1 (PROPERTY)").arg(node.name) : tr("%1 (METHOD)").arg(node.name);
     return node.name;
 }
 
@@ -219,12 +233,15 @@ QVariant ProjectTreeModel::data(const QModelIndex &index, int role) const
     case Qt::ToolTipRole:
         if (item->kind == NodeKind::Pou || item->kind == NodeKind::Action || item->kind == NodeKind::Transition)
             return tr("%1, written in %2").arg(item->name, languageName(item->language));
+        if (item->kind == NodeKind::Member)
+            return tr("Edited as text: METHOD ... END_METHOD or PROPERTY ... END_PROPERTY");
         return {};
     case Qt::DecorationRole:
         switch (item->kind) {
         case NodeKind::Pou:
         case NodeKind::Action:
         case NodeKind::Transition:
+        case NodeKind::Member:
             return languageIcon(item->language);
         default:
             return nodeIcon(item->kind);
@@ -293,6 +310,12 @@ std::optional<BodyRef> ProjectTreeModel::bodyRef(const QModelIndex &index) const
     default:
         return std::nullopt;
     }
+}
+
+bool ProjectTreeModel::isMember(const QModelIndex &index) const
+{
+    const Node *item = node(index);
+    return item && item->kind == NodeKind::Member;
 }
 
 model::PouId ProjectTreeModel::pouId(const QModelIndex &index) const

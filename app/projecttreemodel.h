@@ -26,7 +26,8 @@ class ProjectTreeModel : public QAbstractItemModel
     Q_OBJECT
 
 public:
-    enum class NodeKind { Folder, Pou, Action, Transition, DataType, GlobalVarList, Configuration, Resource, Task };
+    // Member: a method or property of a POU (CODESYS keeps them in its addData).
+    enum class NodeKind { Folder, Pou, Action, Transition, DataType, GlobalVarList, Configuration, Resource, Task, Member };
     enum class Folder { Programs, FunctionBlocks, Functions, DataTypes, GlobalVariables, Configurations };
     enum Role { KeyRole = Qt::UserRole + 1, NodeKindRole };
 
@@ -38,6 +39,8 @@ public:
     // The body a node opens: a POU's own body, an action's or a transition's.
     [[nodiscard]] std::optional<model::BodyRef> bodyRef(const QModelIndex &index) const;
     [[nodiscard]] model::PouId pouId(const QModelIndex &index) const;
+    // Whether the node is a method or property: its name() is the member's, pouId() its POU.
+    [[nodiscard]] bool isMember(const QModelIndex &index) const;
     // The global variable list a node shows; nullopt for other nodes.
     [[nodiscard]] std::optional<editors::GlobalListRef> globalList(const QModelIndex &index) const;
     // The configuration a configuration, resource or task node belongs to; empty for other nodes.
@@ -58,6 +61,7 @@ public:
     static QString pouKey(model::PouId id);
     static QString partKey(const model::BodyRef &ref);
     static QString globalListKey(const editors::GlobalListRef &list);
+    static QString memberKey(model::PouId pou, const QString &name);
 
 Q_SIGNALS:
     void renameRequested(const iec::model::BodyRef &item, const QString &newName);
@@ -74,6 +78,7 @@ private:
         editors::EditorLanguage language = editors::EditorLanguage::ST;
         editors::GlobalListRef list; // global variable lists
         QString configuration;       // configurations, resources and tasks
+        bool property = false;       // a member that is a property, not a method
         int parent = -1; // index into m_nodes; -1: top level
         int row = 0;     // position among its siblings
         std::vector<int> children;

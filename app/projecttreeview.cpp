@@ -21,6 +21,8 @@ ProjectTreeView::ProjectTreeView(QWidget *parent)
             return;
         if (const auto body = m_model->bodyRef(index))
             Q_EMIT openRequested(*body);
+        else if (m_model->isMember(index))
+            Q_EMIT openMemberRequested(m_model->pouId(index), m_model->name(index));
         else if (m_model->nodeKind(index) == ProjectTreeModel::NodeKind::DataType)
             Q_EMIT openDataTypeRequested(m_model->name(index));
         else if (const auto list = m_model->globalList(index))

@@ -27,6 +27,8 @@ Q_SIGNALS:
     void openRequested(const iec::model::BodyRef &body);
     // A data type node was activated (double-click, Enter).
     void openDataTypeRequested(const QString &typeName);
+    // A method or property of a POU was activated.
+    void openMemberRequested(iec::model::PouId pou, const QString &name);
     // A global variable list was activated.
     void openGlobalListRequested(const iec::editors::GlobalListRef &list);
     // A configuration, one of its resources or tasks was activated: its editor opens there.

@@ -336,6 +336,17 @@ bool ProjectModel::setBodyText(const BodyRef &ref, const QString &text)
     return true;
 }
 
+bool ProjectModel::setPouAddData(PouId id, const AddData &addData)
+{
+    Pou *pou = findMutablePou(id);
+    if (!pou || pou->addData == addData)
+        return false;
+    pou->addData = addData;
+    touch();
+    Q_EMIT pouAddDataChanged(id);
+    return true;
+}
+
 bool ProjectModel::setBodyAddData(const BodyRef &ref, const AddData &addData)
 {
     Body *body = findMutableBody(ref);

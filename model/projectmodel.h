@@ -65,6 +65,9 @@ public:
     bool changeVariable(PouId pou, const QString &name, const Variable &variable); // may rename
     // Replaces the whole interface (the declaration editor's "apply").
     bool setInterface(PouId pou, const std::optional<Interface> &declarations);
+    // Replaces the POU's addData (where CODESYS keeps methods and properties). Emits
+    // pouAddDataChanged.
+    bool setPouAddData(PouId pou, const AddData &addData);
     [[nodiscard]] const Variable *findVariable(PouId pou, const QString &name) const;
 
     // ---- bodies
@@ -109,6 +112,7 @@ Q_SIGNALS:
     void dataTypesChanged();
     void instancesChanged();
     void variablesChanged(iec::model::PouId id);
+    void pouAddDataChanged(iec::model::PouId id);
     void bodyTextChanged(const iec::model::BodyRef &ref);
     void bodyAddDataChanged(const iec::model::BodyRef &ref);
     void elementsInserted(const iec::model::BodyRef &ref, const QList<quint64> &localIds);

@@ -111,6 +111,10 @@
             <source>A global variable list named "%1" exists already.</source>
             <translation>Eine globale Variablenliste namens "%1" existiert bereits.</translation>
         </message>
+        <message>
+            <source>This function block has a method or property named "%1" already.</source>
+            <translation>Dieser Funktionsbaustein hat bereits eine Methode oder Eigenschaft namens „%1“.</translation>
+        </message>
     </context>
     <context>
         <name>ProjectCommands</name>
@@ -125,6 +129,26 @@
         <message>
             <source>The item does not exist any more.</source>
             <translation>Das Element existiert nicht mehr.</translation>
+        </message>
+        <message>
+            <source>Methods and properties belong to function blocks.</source>
+            <translation>Methoden und Eigenschaften gehören zu Funktionsbausteinen.</translation>
+        </message>
+        <message>
+            <source>The name "%1" cannot start a method.</source>
+            <translation>Mit dem Namen „%1“ lässt sich keine Methode anlegen.</translation>
+        </message>
+        <message>
+            <source>Add Property %1</source>
+            <translation>Eigenschaft %1 hinzufügen</translation>
+        </message>
+        <message>
+            <source>Add Method %1</source>
+            <translation>Methode %1 hinzufügen</translation>
+        </message>
+        <message>
+            <source>Delete %1</source>
+            <translation>%1 löschen</translation>
         </message>
     </context>
     <context>
@@ -857,6 +881,13 @@ Automatisch gespeichert: %2</translation>
         </message>
     </context>
     <context>
+        <name>iec::app::MemberEditor</name>
+        <message>
+            <source>%1 already has a method or property called %2.</source>
+            <translation>%1 hat bereits eine Methode oder Eigenschaft namens %2.</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::app::MessagesPane</name>
         <message>
             <source>%1, line %2, column %3</source>
@@ -1292,6 +1323,22 @@ Automatisch gespeichert: %2</translation>
             <source>Add Global Variable List</source>
             <translation>Globale Variablenliste hinzufügen</translation>
         </message>
+        <message>
+            <source>Add &amp;Method...</source>
+            <translation>&amp;Methode hinzufügen...</translation>
+        </message>
+        <message>
+            <source>Add Propert&amp;y...</source>
+            <translation>&amp;Eigenschaft hinzufügen...</translation>
+        </message>
+        <message>
+            <source>Add Property</source>
+            <translation>Eigenschaft hinzufügen</translation>
+        </message>
+        <message>
+            <source>Add Method</source>
+            <translation>Methode hinzufügen</translation>
+        </message>
     </context>
     <context>
         <name>iec::app::ProjectTreeModel</name>
@@ -1358,6 +1405,18 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>Continuous Function Chart (CFC)</source>
             <translation>Freigraphischer Funktionsplan (CFC)</translation>
+        </message>
+        <message>
+            <source>%1 (PROPERTY)</source>
+            <translation>%1 (EIGENSCHAFT)</translation>
+        </message>
+        <message>
+            <source>%1 (METHOD)</source>
+            <translation>%1 (METHODE)</translation>
+        </message>
+        <message>
+            <source>Edited as text: METHOD ... END_METHOD or PROPERTY ... END_PROPERTY</source>
+            <translation>Als Text bearbeitet: METHOD ... END_METHOD oder PROPERTY ... END_PROPERTY</translation>
         </message>
     </context>
     <context>
@@ -6373,6 +6432,10 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>wire the loop through a variable of the type you mean</source>
             <translation>führen Sie die Schleife über eine Variable des gemeinten Typs</translation>
+        </message>
+        <message>
+            <source>Write one METHOD ... END_METHOD or one PROPERTY ... END_PROPERTY here, and nothing before or after it.</source>
+            <translation>Schreiben Sie hier genau ein METHOD ... END_METHOD oder ein PROPERTY ... END_PROPERTY und nichts davor oder danach.</translation>
         </message>
     </context>
     <context>

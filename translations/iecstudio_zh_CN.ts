@@ -110,6 +110,10 @@
             <source>A global variable list named "%1" exists already.</source>
             <translation>名为 "%1" 的全局变量列表已存在。</translation>
         </message>
+        <message>
+            <source>This function block has a method or property named "%1" already.</source>
+            <translation>该功能块已有名为“%1”的方法或属性。</translation>
+        </message>
     </context>
     <context>
         <name>ProjectCommands</name>
@@ -124,6 +128,26 @@
         <message>
             <source>The item does not exist any more.</source>
             <translation>该项已不存在。</translation>
+        </message>
+        <message>
+            <source>Methods and properties belong to function blocks.</source>
+            <translation>方法和属性只能属于功能块。</translation>
+        </message>
+        <message>
+            <source>The name "%1" cannot start a method.</source>
+            <translation>无法用名称“%1”创建方法。</translation>
+        </message>
+        <message>
+            <source>Add Property %1</source>
+            <translation>添加属性 %1</translation>
+        </message>
+        <message>
+            <source>Add Method %1</source>
+            <translation>添加方法 %1</translation>
+        </message>
+        <message>
+            <source>Delete %1</source>
+            <translation>删除 %1</translation>
         </message>
     </context>
     <context>
@@ -856,6 +880,13 @@ Autosaved: %2</source>
         </message>
     </context>
     <context>
+        <name>iec::app::MemberEditor</name>
+        <message>
+            <source>%1 already has a method or property called %2.</source>
+            <translation>%1 已有名为 %2 的方法或属性。</translation>
+        </message>
+    </context>
+    <context>
         <name>iec::app::MessagesPane</name>
         <message>
             <source>%1, line %2, column %3</source>
@@ -1291,6 +1322,22 @@ Autosaved: %2</source>
             <source>Add Global Variable List</source>
             <translation>添加全局变量列表</translation>
         </message>
+        <message>
+            <source>Add &amp;Method...</source>
+            <translation>添加方法(&amp;M)...</translation>
+        </message>
+        <message>
+            <source>Add Propert&amp;y...</source>
+            <translation>添加属性(&amp;Y)...</translation>
+        </message>
+        <message>
+            <source>Add Property</source>
+            <translation>添加属性</translation>
+        </message>
+        <message>
+            <source>Add Method</source>
+            <translation>添加方法</translation>
+        </message>
     </context>
     <context>
         <name>iec::app::ProjectTreeModel</name>
@@ -1357,6 +1404,18 @@ Autosaved: %2</source>
         <message>
             <source>Continuous Function Chart (CFC)</source>
             <translation>连续功能图 (CFC)</translation>
+        </message>
+        <message>
+            <source>%1 (PROPERTY)</source>
+            <translation>%1（属性）</translation>
+        </message>
+        <message>
+            <source>%1 (METHOD)</source>
+            <translation>%1（方法）</translation>
+        </message>
+        <message>
+            <source>Edited as text: METHOD ... END_METHOD or PROPERTY ... END_PROPERTY</source>
+            <translation>以文本编辑：METHOD ... END_METHOD 或 PROPERTY ... END_PROPERTY</translation>
         </message>
     </context>
     <context>
@@ -6367,6 +6426,10 @@ Autosaved: %2</source>
         <message>
             <source>wire the loop through a variable of the type you mean</source>
             <translation>让环路经过一个所需类型的变量</translation>
+        </message>
+        <message>
+            <source>Write one METHOD ... END_METHOD or one PROPERTY ... END_PROPERTY here, and nothing before or after it.</source>
+            <translation>此处只写一个 METHOD ... END_METHOD 或一个 PROPERTY ... END_PROPERTY，前后不要有其他内容。</translation>
         </message>
     </context>
     <context>

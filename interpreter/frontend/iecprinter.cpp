@@ -1,5 +1,6 @@
 #include "interpreter/frontend/iecprinter.h"
 
+#include "interpreter/frontend/codesysmembers.h"
 #include "interpreter/frontend/duration.h"
 #include "interpreter/runtime/valueformat.h"
 #include "interpreter/sfc/sfctext.h"
@@ -291,9 +292,33 @@ QString printPouSkeleton(const model::Pou &pou)
     return pouHeader(pou) + printInterface(pou) + QStringLiteral("END_") + pouKeyword(pou.kind) + QLatin1Char('\n');
 }
 
+namespace {
+
+// EXTENDS and IMPLEMENTS, and the methods and properties, CODESYS keeps in addData.
+QString printObjectOrientation(const model::Pou &pou, QString &header)
+{
+    const model::plcopen::CodesysClass definition = model::plcopen::readCodesysClass(pou);
+    if (!definition.extends.isEmpty() || !definition.implements.isEmpty()) {
+        header.chop(1); // the line break
+        if (!definition.extends.isEmpty())
+            header += QStringLiteral(" EXTENDS ") + definition.extends;
+        if (!definition.implements.isEmpty())
+            header += QStringLiteral(" IMPLEMENTS ") + definition.implements.join(QStringLiteral(", "));
+        header += QLatin1Char('\n');
+    }
+    QString members;
+    for (const CodesysMemberSummary &member : codesysMembers(pou))
+        members += printCodesysMember(pou, member.name);
+    return members;
+}
+
+} // namespace
+
 QString printPou(const model::Pou &pou, std::vector<PrintWarning> *warnings)
 {
-    QString text = pouHeader(pou) + printInterface(pou);
+    QString header = pouHeader(pou);
+    const QString members = printObjectOrientation(pou, header);
+    QString text = header + printInterface(pou) + members;
     const model::Body *body = pou.body();
     QString chartProblem;
     QStringList dropped;

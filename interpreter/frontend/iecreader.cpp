@@ -4,7 +4,9 @@
 #include "interpreter/compiler/compilerstack.h"
 #include "interpreter/compiler/lexer.h"
 #include "interpreter/compiler/parser.h"
+#include "interpreter/frontend/codesysmembers.h"
 #include "interpreter/frontend/iecprinter.h"
+#include "interpreter/frontend/tokencursor.h"
 #include "interpreter/sfc/sfctext.h"
 
 #include <QCoreApplication>
@@ -259,72 +261,19 @@ model::Configuration toModel(const ast::ConfigurationDecl &decl, QStringView tex
 
 // ---- bodies: the text between the declarations and END_xxx, as written ------------------------
 
-// The significant tokens of the source (no comments or pragmas) with the words they spell.
-class TokenCursor
-{
-public:
-    explicit TokenCursor(QStringView text)
-        : m_text(text)
-    {
-        for (const Token &t : tokenize(text)) {
-            if (t.kind != TokenKind::Comment && t.kind != TokenKind::Pragma)
-                m_tokens.push_back(t);
-        }
-    }
-    bool atEnd() const { return m_pos >= m_tokens.size(); }
-    bool is(const char *word) const
-    {
-        return !atEnd() && text().compare(QLatin1String(word), Qt::CaseInsensitive) == 0;
-    }
-    QStringView text() const { return m_text.mid(m_tokens[m_pos].offset, m_tokens[m_pos].length); }
-    int start() const { return atEnd() ? int(m_text.size()) : m_tokens[m_pos].offset; }
-    int end() const { return m_tokens[m_pos].offset + m_tokens[m_pos].length; }
-    void next() { ++m_pos; }
-    // Moves past the next `word`; returns the offset just after it.
-    int skipPast(const char *word)
-    {
-        while (!atEnd() && !is(word))
-            next();
-        const int after = atEnd() ? int(m_text.size()) : end();
-        next();
-        return after;
-    }
-    // VAR, VAR_INPUT, VAR_GLOBAL ... (every section keyword starts with VAR and then '_' or ends)
-    bool isVarSection() const
-    {
-        if (atEnd() || !text().startsWith(QLatin1String("VAR"), Qt::CaseInsensitive))
-            return false;
-        return m_tokens[m_pos].kind == TokenKind::Keyword && (text().size() == 3 || text()[3] == u'_');
-    }
-    int lineEndAfter(int offset) const
-    {
-        const qsizetype newline = m_text.indexOf(u'\n', offset);
-        return newline < 0 ? int(m_text.size()) : int(newline);
-    }
-
-private:
-    QStringView m_text;
-    std::vector<Token> m_tokens;
-    size_t m_pos = 0;
-};
-
-// A body as written: without the line break that follows the declarations and without trailing
-// blank lines.
-QString bodyText(QStringView source, int from, int to)
-{
-    QStringView body = source.mid(from, to - from);
-    const qsizetype newline = body.indexOf(u'\n');
-    if (newline >= 0 && body.left(newline).trimmed().isEmpty())
-        body = body.mid(newline + 1);
-    while (!body.isEmpty() && body.back().isSpace())
-        body.chop(1);
-    return body.toString();
-}
-
 struct PouTexts {
     QString body;
     std::vector<std::pair<QString, QString>> actions; // name, text
+    std::vector<QString> members; // METHOD ... END_METHOD, PROPERTY ... END_PROPERTY
 };
+
+// At a METHOD or PROPERTY: its whole text, up to and with its END_METHOD or END_PROPERTY.
+QString memberText(TokenCursor &cursor, QStringView source)
+{
+    const char *end = cursor.is("METHOD") ? "END_METHOD" : "END_PROPERTY";
+    const int start = cursor.start();
+    return source.mid(start, cursor.skipPast(end) - start).toString();
+}
 
 // At PROGRAM / FUNCTION_BLOCK / FUNCTION: finds the body and the actions' texts.
 PouTexts pouTexts(TokenCursor &cursor, QStringView source)
@@ -332,9 +281,23 @@ PouTexts pouTexts(TokenCursor &cursor, QStringView source)
     const QByteArray end = "END_" + cursor.text().toString().toUpper().toLatin1();
     cursor.next(); // the keyword
     int bodyStart = cursor.start();
+    while (cursor.is("ABSTRACT") || cursor.is("FINAL") || cursor.is("PUBLIC") || cursor.is("INTERNAL"))
+        cursor.next();
     if (!cursor.atEnd()) { // the name
         bodyStart = cursor.end();
         cursor.next();
+    }
+    // EXTENDS Base IMPLEMENTS I1, Lib.I2 (edition 3): a list of dotted names each.
+    while (cursor.is("EXTENDS") || cursor.is("IMPLEMENTS")) {
+        cursor.next();
+        while (cursor.isName()) {
+            bodyStart = cursor.end();
+            cursor.next();
+            if (cursor.text() == u"." || cursor.text() == u",")
+                cursor.next(); // the next part of the name, or the next name
+            else
+                break;
+        }
     }
     if (cursor.is(":")) { // a function's result type: up to the end of its line
         const int lineEnd = cursor.lineEndAfter(cursor.end());
@@ -346,11 +309,21 @@ PouTexts pouTexts(TokenCursor &cursor, QStringView source)
     while (cursor.isVarSection())
         bodyStart = cursor.skipPast("END_VAR");
     PouTexts texts;
-    while (!cursor.atEnd() && !cursor.is(end.constData()) && !cursor.is("ACTION"))
+    // Methods and properties stand before the body (edition 3) or after it (CODESYS exports).
+    while (cursor.startsMember()) {
+        const int memberStart = cursor.start();
+        texts.members.push_back(memberText(cursor, source));
+        bodyStart = memberStart + int(texts.members.back().size());
+    }
+    while (!cursor.atEnd() && !cursor.is(end.constData()) && !cursor.is("ACTION") && !cursor.startsMember())
         cursor.next();
     texts.body = bodyText(source, bodyStart, cursor.start());
     // Actions follow the body; in a textual SFC chart they may also stand between steps.
     while (!cursor.atEnd() && !cursor.is(end.constData())) {
+        if (cursor.startsMember()) {
+            texts.members.push_back(memberText(cursor, source));
+            continue;
+        }
         if (!cursor.is("ACTION")) {
             cursor.next();
             continue;
@@ -411,6 +384,21 @@ model::Body textBody(ast::Language language, const QString &text)
     return body;
 }
 
+// Methods, properties, EXTENDS and IMPLEMENTS go where CODESYS keeps them: the POU's addData
+// and its interface's (codesysmembers.h). The parse of the whole text reported their errors.
+void addObjectOrientation(model::Pou &result, const ast::Pou &pou, const PouTexts &texts)
+{
+    if (pou.kind == ast::PouKind::Interface)
+        return; // kept as an empty block (see toModel(ast::PouKind))
+    for (const QString &text : texts.members) {
+        if (const CodesysMemberText read = readCodesysMemberText(text, pou.name); read.definition)
+            result.addData = model::plcopen::addDataWithMember(result.addData, {}, *read.definition);
+    }
+    if (result.pouInterface)
+        result.pouInterface->addData
+            = model::plcopen::addDataWithInheritance(result.pouInterface->addData, pou.extends, pou.implements);
+}
+
 model::Pou toModel(const ast::Pou &pou, const PouTexts &texts, Diagnostics &diagnostics)
 {
     model::Pou result;
@@ -421,6 +409,7 @@ model::Pou toModel(const ast::Pou &pou, const PouTexts &texts, Diagnostics &diag
         interface.returnType = toModel(*pou.returnType);
     interface.varLists = toModel(pou.sections, pou.name, diagnostics);
     result.pouInterface = std::move(interface);
+    addObjectOrientation(result, pou, texts);
     if (pou.body.language == ast::Language::SFC && pou.body.sfc) {
         // The chart becomes a graphical SFC body; its ACTIONs become the POU's actions.
         result.bodies.push_back(sfc::chartToModel(*pou.body.sfc, pou.name, diagnostics));
@@ -452,6 +441,17 @@ model::Project emptyProject(const QString &name)
 }
 
 } // namespace
+
+std::vector<model::VarList> varListsFromAst(
+    const std::vector<ast::VarSection> &sections, const QString &owner, Diagnostics &diagnostics)
+{
+    return toModel(sections, owner, diagnostics);
+}
+
+model::DataType dataTypeFromAst(const ast::TypeSpec &spec)
+{
+    return toModel(spec);
+}
 
 TextReadResult readIecText(QStringView text, const QString &projectName)
 {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "interpreter/compiler/ast.h"
 #include "interpreter/compiler/diagnostics.h"
 
 #include "model/project.h"
@@ -19,5 +20,10 @@ struct TextReadResult {
 
 // `projectName` becomes contentHeader/@name. With parse errors the project holds what was read.
 TextReadResult readIecText(QStringView text, const QString &projectName);
+
+// Declarations the parser read, as model values; what the model cannot hold is a warning.
+std::vector<model::VarList> varListsFromAst(
+    const std::vector<ast::VarSection> &sections, const QString &owner, Diagnostics &diagnostics);
+model::DataType dataTypeFromAst(const ast::TypeSpec &spec);
 
 } // namespace iec::interp::frontend

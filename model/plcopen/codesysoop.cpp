@@ -4,6 +4,9 @@
 
 #include <QRegularExpression>
 
+#include <algorithm>
+#include <cstring>
+
 namespace iec::model::plcopen {
 
 namespace {
@@ -12,6 +15,7 @@ constexpr const char *kMethod = "http://www.3s-software.com/plcopenxml/method";
 constexpr const char *kProperty = "http://www.3s-software.com/plcopenxml/property";
 constexpr const char *kInheritance = "http://www.3s-software.com/plcopenxml/pouinheritance";
 constexpr const char *kInterface = "http://www.3s-software.com/plcopenxml/interface";
+constexpr const char *kPlainText = "http://www.3s-software.com/plcopenxml/interfaceasplaintext";
 
 pugi::xml_node child(pugi::xml_node node, const char *name)
 {
@@ -126,7 +130,178 @@ struct Reader {
     }
 };
 
+// ---- writing members ------------------------------------------------------------------------
+
+bool isMemberEntry(const AddDataEntry &e)
+{
+    return e.name == QLatin1String(kMethod) || e.name == QLatin1String(kProperty);
+}
+
+bool isMemberNode(pugi::xml_node n)
+{
+    return n.type() == pugi::node_element && (hasLocalName(n, "Method") || hasLocalName(n, "Property"));
+}
+
+// CODESYS's form of program text: <ST><xhtml xmlns="...">text</xhtml></ST>.
+void appendBody(pugi::xml_node parent, const Body &body)
+{
+    const char *language = body.language() == BodyLanguage::IL ? "IL" : "ST";
+    pugi::xml_node xhtml = parent.append_child("body").append_child(language).append_child("xhtml");
+    xhtml.append_attribute("xmlns").set_value(kXhtmlNamespace);
+    xhtml.append_child(pugi::node_pcdata).set_value(body.text().toUtf8().constData());
+}
+
+void appendInterface(pugi::xml_node parent, const Interface &interface)
+{
+    WriteContext context;
+    XmlOut out(parent, context);
+    out.child("interface", interface);
+}
+
+// The member's own addData: what it had, with its InterfaceAsPlainText set to `declaration`.
+void appendOwnAddData(pugi::xml_node parent, pugi::xml_node old, const QString &declaration)
+{
+    pugi::xml_node addData = old ? parent.append_copy(old) : parent.append_child("addData");
+    pugi::xml_node entry;
+    for (pugi::xml_node d = addData.first_child(); d; d = d.next_sibling()) {
+        if (d.type() == pugi::node_element && QString::fromUtf8(d.attribute("name").value()) == QLatin1String(kPlainText))
+            entry = d;
+    }
+    if (!entry) {
+        entry = addData.append_child("data");
+        entry.append_attribute("name").set_value(kPlainText);
+        entry.append_attribute("handleUnknown").set_value("implementation");
+    }
+    while (entry.first_child())
+        entry.remove_child(entry.first_child());
+    pugi::xml_node xhtml = entry.append_child("InterfaceAsPlainText").append_child("xhtml");
+    xhtml.append_attribute("xmlns").set_value(kXhtmlNamespace);
+    xhtml.append_child(pugi::node_pcdata).set_value(declaration.toUtf8().constData());
+}
+
+void appendAccessor(pugi::xml_node parent, const char *tag, const CodesysMemberDefinition::Accessor &accessor, pugi::xml_node old)
+{
+    pugi::xml_node node = parent.append_child(tag);
+    appendInterface(node, accessor.interface);
+    if (accessor.body)
+        appendBody(node, *accessor.body);
+    if (const pugi::xml_node oldAddData = child(old, "addData"))
+        node.append_copy(oldAddData);
+    else
+        node.append_child("addData");
+}
+
+// The member's element, built before `before` (the element it replaces, or none).
+void insertMember(pugi::xml_node parent, pugi::xml_node before, const CodesysMemberDefinition &member)
+{
+    pugi::xml_node node = before ? parent.insert_child_before(member.property ? "Property" : "Method", before)
+                                 : parent.append_child(member.property ? "Property" : "Method");
+    node.append_attribute("name").set_value(member.name.toUtf8().constData());
+    for (pugi::xml_attribute a = before.first_attribute(); a; a = a.next_attribute()) {
+        if (std::strcmp(a.name(), "name") != 0)
+            node.append_attribute(a.name()).set_value(a.value()); // ObjectId and what else CODESYS wrote
+    }
+    appendInterface(node, member.interface);
+    if (!member.property) {
+        if (member.body)
+            appendBody(node, *member.body);
+    } else {
+        // The accessors in the order they stood (CODESYS writes Set before Get), new ones Get first.
+        std::vector<std::pair<const char *, const CodesysMemberDefinition::Accessor *>> accessors;
+        for (pugi::xml_node c = before.first_child(); c; c = c.next_sibling()) {
+            if (c.type() == pugi::node_element && hasLocalName(c, "SetAccessor") && member.setter)
+                accessors.emplace_back("SetAccessor", &*member.setter);
+            else if (c.type() == pugi::node_element && hasLocalName(c, "GetAccessor") && member.getter)
+                accessors.emplace_back("GetAccessor", &*member.getter);
+        }
+        const auto addNew = [&](const char *tag, const CodesysMemberDefinition::Accessor *accessor) {
+            if (accessor && std::ranges::none_of(accessors, [&](const auto &a) { return !std::strcmp(a.first, tag); }))
+                accessors.emplace_back(tag, accessor);
+        };
+        addNew("GetAccessor", member.getter ? &*member.getter : nullptr);
+        addNew("SetAccessor", member.setter ? &*member.setter : nullptr);
+        for (const auto &[tag, accessor] : accessors)
+            appendAccessor(node, tag, *accessor, child(before, tag));
+    }
+    appendOwnAddData(node, child(before, "addData"), member.declarationText);
+}
+
+QString contentOf(pugi::xml_node root)
+{
+    QString content;
+    for (pugi::xml_node n = root.first_child(); n; n = n.next_sibling())
+        content += rawXml(n);
+    return content;
+}
+
+// Calls `edit(root, member)` for the entry holding member `name`; false when there is none.
+template<class Edit> bool editMemberEntry(AddData &addData, const QString &name, Edit edit)
+{
+    for (AddDataEntry &e : addData) {
+        if (!isMemberEntry(e))
+            continue;
+        pugi::xml_document document;
+        const QByteArray wrapped = "<r>" + e.content.toUtf8() + "</r>";
+        if (!document.load_buffer(wrapped.constData(), std::size_t(wrapped.size()), pugi::parse_default | pugi::parse_ws_pcdata_single))
+            continue;
+        const pugi::xml_node root = document.first_child();
+        for (pugi::xml_node n = root.first_child(); n; n = n.next_sibling()) {
+            if (isMemberNode(n) && QString::fromUtf8(n.attribute("name").value()).compare(name, Qt::CaseInsensitive) == 0) {
+                edit(e, root, n);
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
 } // namespace
+
+AddData addDataWithMember(const AddData &addData, const QString &name, const CodesysMemberDefinition &member)
+{
+    AddData result = addData;
+    const bool replaced = !name.isEmpty() && editMemberEntry(result, name, [&](AddDataEntry &e, pugi::xml_node root, pugi::xml_node old) {
+        insertMember(root, old, member);
+        root.remove_child(old);
+        e.content = contentOf(root);
+        e.name = QLatin1String(member.property ? kProperty : kMethod);
+    });
+    if (replaced)
+        return result;
+    pugi::xml_document document;
+    const pugi::xml_node root = document.append_child("r");
+    insertMember(root, {}, member);
+    result.push_back({QLatin1String(member.property ? kProperty : kMethod), QStringLiteral("implementation"), contentOf(root)});
+    return result;
+}
+
+AddData addDataWithoutMember(const AddData &addData, const QString &name)
+{
+    AddData result = addData;
+    editMemberEntry(result, name, [&](AddDataEntry &e, pugi::xml_node root, pugi::xml_node old) {
+        root.remove_child(old);
+        e.content = contentOf(root);
+    });
+    // An entry left with no element goes too (CODESYS writes one member per entry).
+    std::erase_if(result, [](const AddDataEntry &e) { return isMemberEntry(e) && e.content.trimmed().isEmpty(); });
+    return result;
+}
+
+AddData addDataWithInheritance(const AddData &addData, const QString &extends, const QStringList &implements)
+{
+    AddData result = addData;
+    std::erase_if(result, [](const AddDataEntry &e) { return e.name == QLatin1String(kInheritance); });
+    if (extends.isEmpty() && implements.isEmpty())
+        return result;
+    pugi::xml_document document;
+    pugi::xml_node inheritance = document.append_child("Inheritance");
+    if (!extends.isEmpty())
+        inheritance.append_child("Extends").append_child(pugi::node_pcdata).set_value(extends.toUtf8().constData());
+    for (const QString &name : implements)
+        inheritance.append_child("Implements").append_child(pugi::node_pcdata).set_value(name.toUtf8().constData());
+    result.push_back({QLatin1String(kInheritance), QStringLiteral("implementation"), rawXml(inheritance)});
+    return result;
+}
 
 CodesysClass readCodesysClass(const Pou &pou)
 {

@@ -36,6 +36,33 @@ struct CodesysClass {
 // The methods, properties, EXTENDS and IMPLEMENTS CODESYS keeps in `pou`'s addData.
 CodesysClass readCodesysClass(const Pou &pou);
 
+// A method or property to store in CODESYS's form: what readCodesysClass reads back.
+struct CodesysMemberDefinition {
+    struct Accessor {
+        Interface interface; // its local variables
+        std::optional<Body> body; // none: a prototype (ABSTRACT)
+    };
+    bool property = false;
+    QString name;
+    // The declaration as text (header and variables), kept in the member's own addData as CODESYS
+    // does (InterfaceAsPlainText): it carries the qualifiers (PRIVATE, ABSTRACT ...).
+    QString declarationText;
+    Interface interface;       // a method's variables and return type; a property's type as returnType
+    std::optional<Body> body;  // a method's; none: a prototype
+    std::optional<Accessor> getter, setter; // a property's
+};
+
+// `addData` (a POU's) with the member called `name` replaced by `member` where it stands, keeping
+// its ObjectId and the rest of its own addData; appended in an entry of its own when no member
+// is called `name`. Every other entry stays as it is, byte for byte.
+AddData addDataWithMember(const AddData &addData, const QString &name, const CodesysMemberDefinition &member);
+// `addData` without the member called `name`.
+AddData addDataWithoutMember(const AddData &addData, const QString &name);
+
+// An interface's addData saying EXTENDS `extends` and IMPLEMENTS `implements` (CODESYS's
+// pouinheritance entry, replaced or added; none when both are empty).
+AddData addDataWithInheritance(const AddData &addData, const QString &extends, const QStringList &implements);
+
 // An INTERFACE CODESYS keeps in an addData entry: its name and its methods and properties.
 struct CodesysInterface {
     QString name;

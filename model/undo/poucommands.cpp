@@ -98,4 +98,26 @@ void DuplicatePouCommand::undo()
     m_model.removePou(m_copy.id);
 }
 
+SetPouAddDataCommand::SetPouAddDataCommand(
+    ProjectModel &model, PouId id, AddData addData, const QString &text, QUndoCommand *parent)
+    : ModelCommand(model, parent)
+    , m_pouId(id)
+    , m_after(std::move(addData))
+{
+    if (const Pou *pou = model.project().findPou(id))
+        m_before = pou->addData;
+    setText(text);
+    setObsolete(m_before == m_after);
+}
+
+void SetPouAddDataCommand::redo()
+{
+    m_model.setPouAddData(m_pouId, m_after);
+}
+
+void SetPouAddDataCommand::undo()
+{
+    m_model.setPouAddData(m_pouId, m_before);
+}
+
 } // namespace iec::model

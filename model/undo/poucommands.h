@@ -68,4 +68,19 @@ private:
     int m_index = -1;
 };
 
+// Replaces a POU's addData: a method or property added or removed (CODESYS keeps them there).
+class SetPouAddDataCommand : public ModelCommand
+{
+public:
+    SetPouAddDataCommand(ProjectModel &model, PouId id, AddData addData, const QString &text, QUndoCommand *parent = nullptr);
+
+    void redo() override;
+    void undo() override;
+
+private:
+    PouId m_pouId;
+    AddData m_before;
+    AddData m_after;
+};
+
 } // namespace iec::model

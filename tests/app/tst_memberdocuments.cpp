@@ -1,0 +1,263 @@
+// Methods and properties in the window: the tree lists them under their function block, a
+// double-click opens one as text, typing changes what the program computes, the text document's
+// undo takes it back, text that does not read is marked and not taken, a new name in the header
+// renames, and adding and deleting members are steps on the project's undo stack.
+#include "app/documentarea.h"
+#include "app/mainwindow.h"
+#include "app/membereditor.h"
+#include "app/projectcommands.h"
+#include "app/projecttreeactions.h"
+#include "app/projecttreemodel.h"
+#include "app/projecttreeview.h"
+#include "app/undostacks.h"
+#include "editors/text/codeeditor.h"
+#include "interpreter/frontend/codesysmembers.h"
+#include "interpreter/frontend/iecreader.h"
+#include "interpreter/frontend/projectsource.h"
+#include "interpreter/runtime/runtime.h"
+#include "model/projectmodel.h"
+#include "testsettings.h"
+
+#include <QAction>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTextCursor>
+#include <QUndoStack>
+
+using namespace iec;
+using namespace iec::app;
+
+namespace {
+
+const QString kAdd = QStringLiteral("METHOD Add : INT\n"
+                                    "VAR_INPUT\n"
+                                    "    x : INT;\n"
+                                    "END_VAR\n"
+                                    "n := n + x;\n"
+                                    "Add := n;\n"
+                                    "END_METHOD\n");
+
+const QString kSource = QStringLiteral("FUNCTION_BLOCK Counter\nVAR\n    n : INT;\nEND_VAR\n") + kAdd
+    + QStringLiteral("PROPERTY Count : INT\nGET\nCount := n;\nEND_GET\nEND_PROPERTY\n"
+                     "END_FUNCTION_BLOCK\n"
+                     "PROGRAM Main\nVAR\n    c : Counter;\n    r : INT;\nEND_VAR\n"
+                     "r := c.Add(2) + c.Count;\n"
+                     "END_PROGRAM\n");
+
+model::Project sampleProject()
+{
+    return interp::frontend::readIecText(kSource, QStringLiteral("Members")).project;
+}
+
+model::PouId counterId(const model::ProjectModel &model)
+{
+    return model.project().findPou(QStringLiteral("Counter"))->id;
+}
+
+// Main.r after each of three cycles, or the first compiler message.
+QString runThreeCycles(const model::Project &project)
+{
+    interp::Diagnostics diagnostics;
+    const auto module = interp::frontend::compileProject(project, diagnostics);
+    if (!module)
+        return diagnostics.all().empty() ? QStringLiteral("no module") : diagnostics.all().front().toString();
+    interp::Runtime runtime(module);
+    QStringList values;
+    for (int cycle = 0; cycle < 3; ++cycle) {
+        runtime.runCycle();
+        values << runtime.read(*runtime.find(QStringLiteral("Main.r")));
+    }
+    return values.join(QLatin1Char(' '));
+}
+
+// Replaces `from` by `to` in the editor as typing does, then lets the pause pass.
+void typeReplacing(editors::CodeEditor *editor, const QString &from, const QString &to)
+{
+    const qsizetype at = editor->toPlainText().indexOf(from);
+    QVERIFY(at >= 0);
+    QTextCursor cursor(editor->document());
+    cursor.setPosition(int(at));
+    cursor.setPosition(int(at + from.size()), QTextCursor::KeepAnchor);
+    cursor.insertText(to);
+    editor->flushPendingEdit();
+}
+
+MemberEditor *openFromTree(MainWindow &window, const QString &member)
+{
+    ProjectTreeView &tree = window.projectTree();
+    auto *treeModel = qobject_cast<ProjectTreeModel *>(tree.model());
+    const QModelIndex index = treeModel->indexForKey(ProjectTreeModel::memberKey(counterId(window.projectModel()), member));
+    if (!index.isValid())
+        return nullptr;
+    Q_EMIT tree.activated(index);
+    return qobject_cast<MemberEditor *>(window.documents().currentWidget());
+}
+
+} // namespace
+
+class TestMemberDocuments : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase();
+    void treeListsMembersUnderTheirBlock();
+    void typingChangesWhatTheProgramComputes();
+    void textThatDoesNotReadIsMarkedAndNotTaken();
+    void aNewNameInTheHeaderRenames();
+    void addingAndDeletingAreUndoSteps();
+    void onlineTheTextIsOnlyLookedAt();
+
+private:
+    QTemporaryDir m_configHome;
+};
+
+void TestMemberDocuments::initTestCase()
+{
+    useTestSettings(m_configHome);
+}
+
+void TestMemberDocuments::treeListsMembersUnderTheirBlock()
+{
+    MainWindow window;
+    window.projectModel().reset(sampleProject());
+    auto *treeModel = qobject_cast<ProjectTreeModel *>(window.projectTree().model());
+    const model::PouId counter = counterId(window.projectModel());
+    const QModelIndex add = treeModel->indexForKey(ProjectTreeModel::memberKey(counter, QStringLiteral("Add")));
+    const QModelIndex count = treeModel->indexForKey(ProjectTreeModel::memberKey(counter, QStringLiteral("Count")));
+    QVERIFY(add.isValid() && count.isValid());
+    QCOMPARE(add.data().toString(), QStringLiteral("Add (METHOD)"));
+    QCOMPARE(count.data().toString(), QStringLiteral("Count (PROPERTY)"));
+    QCOMPARE(add.parent(), treeModel->indexForKey(ProjectTreeModel::pouKey(counter)));
+    MemberEditor *editor = openFromTree(window, QStringLiteral("Add"));
+    QVERIFY(editor);
+    QCOMPARE(editor->editor()->toPlainText(), kAdd);
+    QCOMPARE(window.documents().tabText(window.documents().currentIndex()), QStringLiteral("Counter.Add"));
+    // Opened again, the same tab comes forward.
+    const int tabs = window.documents().count();
+    QCOMPARE(openFromTree(window, QStringLiteral("add")), editor);
+    QCOMPARE(window.documents().count(), tabs);
+}
+
+void TestMemberDocuments::typingChangesWhatTheProgramComputes()
+{
+    MainWindow window;
+    window.projectModel().reset(sampleProject());
+    const model::AddData before = window.projectModel().project().findPou(QStringLiteral("Counter"))->addData;
+    QCOMPARE(runThreeCycles(window.projectModel().project()), QStringLiteral("4 8 12"));
+    MemberEditor *editor = openFromTree(window, QStringLiteral("Add"));
+    QVERIFY(editor);
+    typeReplacing(editor->editor(), QStringLiteral("n := n + x;"), QStringLiteral("n := n + 10 * x;"));
+    QCOMPARE(editor->editor()->diagnostics(), QList<editors::TextDiagnostic>());
+    const model::Pou &counter = *window.projectModel().project().findPou(QStringLiteral("Counter"));
+    QCOMPARE(interp::frontend::printCodesysMember(counter, QStringLiteral("Add")),
+        QString(kAdd).replace(QStringLiteral("n + x"), QStringLiteral("n + 10 * x")));
+    QCOMPARE(runThreeCycles(window.projectModel().project()), QStringLiteral("40 80 120"));
+    QVERIFY(window.documents().hasUnsavedTyping());
+    // The text document's undo is the authority while typing: it takes the edit back.
+    editor->editor()->undo();
+    editor->editor()->flushPendingEdit();
+    QCOMPARE(editor->editor()->toPlainText(), kAdd);
+    QCOMPARE(window.projectModel().project().findPou(QStringLiteral("Counter"))->addData.at(0).name, before.at(0).name);
+    QCOMPARE(interp::frontend::printCodesysMember(*window.projectModel().project().findPou(QStringLiteral("Counter")),
+                 QStringLiteral("Add")),
+        kAdd);
+    QCOMPARE(runThreeCycles(window.projectModel().project()), QStringLiteral("4 8 12"));
+}
+
+void TestMemberDocuments::textThatDoesNotReadIsMarkedAndNotTaken()
+{
+    MainWindow window;
+    window.projectModel().reset(sampleProject());
+    MemberEditor *editor = openFromTree(window, QStringLiteral("Add"));
+    QVERIFY(editor);
+    const model::AddData before = window.projectModel().project().findPou(QStringLiteral("Counter"))->addData;
+    typeReplacing(editor->editor(), QStringLiteral("n := n + x;"), QStringLiteral("n := n + ;"));
+    const QList<editors::TextDiagnostic> marks = editor->editor()->diagnostics();
+    QVERIFY(!marks.isEmpty());
+    QCOMPARE(marks.front().line, 5);
+    QCOMPARE(window.projectModel().project().findPou(QStringLiteral("Counter"))->addData, before);
+    // Mended, it is taken and the mark goes.
+    typeReplacing(editor->editor(), QStringLiteral("n := n + ;"), QStringLiteral("n := n + 2 * x;"));
+    QCOMPARE(editor->editor()->diagnostics(), QList<editors::TextDiagnostic>());
+    QCOMPARE(runThreeCycles(window.projectModel().project()), QStringLiteral("8 16 24"));
+    // The name of another member is refused at the header.
+    typeReplacing(editor->editor(), QStringLiteral("METHOD Add"), QStringLiteral("METHOD Count"));
+    QVERIFY(!editor->editor()->diagnostics().isEmpty());
+    QCOMPARE(editor->editor()->diagnostics().front().message,
+        QStringLiteral("Counter already has a method or property called Count."));
+    QCOMPARE(editor->name(), QStringLiteral("Add"));
+}
+
+void TestMemberDocuments::aNewNameInTheHeaderRenames()
+{
+    MainWindow window;
+    window.projectModel().reset(sampleProject());
+    MemberEditor *editor = openFromTree(window, QStringLiteral("Add"));
+    QVERIFY(editor);
+    typeReplacing(editor->editor(), QStringLiteral("METHOD Add : INT"), QStringLiteral("METHOD Plus : INT"));
+    typeReplacing(editor->editor(), QStringLiteral("Add := n;"), QStringLiteral("Plus := n;"));
+    QCOMPARE(editor->name(), QStringLiteral("Plus"));
+    QCOMPARE(window.documents().tabText(window.documents().indexOf(editor)), QStringLiteral("Counter.Plus"));
+    auto *treeModel = qobject_cast<ProjectTreeModel *>(window.projectTree().model());
+    const model::PouId counter = counterId(window.projectModel());
+    QVERIFY(treeModel->indexForKey(ProjectTreeModel::memberKey(counter, QStringLiteral("Plus"))).isValid());
+    QVERIFY(!treeModel->indexForKey(ProjectTreeModel::memberKey(counter, QStringLiteral("Add"))).isValid());
+    // The method stays where it was: first.
+    const auto members = interp::frontend::codesysMembers(*window.projectModel().project().findPou(counter));
+    QCOMPARE(members.front().name, QStringLiteral("Plus"));
+}
+
+void TestMemberDocuments::addingAndDeletingAreUndoSteps()
+{
+    MainWindow window;
+    window.projectModel().reset(sampleProject());
+    const model::PouId counter = counterId(window.projectModel());
+    const model::Pou before = *window.projectModel().project().findPou(counter);
+    QUndoStack &stack = window.undoStacks().projectStack();
+    ProjectCommands &commands = window.projectCommands();
+    QString error;
+    QVERIFY(!commands.addMember(counter, QStringLiteral("count"), false, &error));
+    QCOMPARE(error, QStringLiteral("This function block has a method or property named \"count\" already."));
+    QVERIFY(!commands.addMember(window.projectModel().project().findPou(QStringLiteral("Main"))->id,
+        QStringLiteral("Reset"), false, &error));
+    QCOMPARE(error, QStringLiteral("Methods and properties belong to function blocks."));
+    QVERIFY(commands.addMember(counter, QStringLiteral("Reset"), false));
+    QVERIFY(commands.addMember(counter, QStringLiteral("Limit"), true));
+    QCOMPARE(stack.count(), 2);
+    QCOMPARE(stack.undoText(), QStringLiteral("Add Property Limit"));
+    const model::Pou &now = *window.projectModel().project().findPou(counter);
+    QCOMPARE(interp::frontend::printCodesysMember(now, QStringLiteral("Reset")),
+        QStringLiteral("METHOD Reset : BOOL\nVAR_INPUT\nEND_VAR\nReset := TRUE;\nEND_METHOD\n"));
+    QCOMPARE(interp::frontend::printCodesysMember(now, QStringLiteral("Limit")),
+        QStringLiteral("PROPERTY Limit : INT\nGET\nLimit := 0;\nEND_GET\nSET\nEND_SET\nEND_PROPERTY\n"));
+    QCOMPARE(runThreeCycles(window.projectModel().project()), QStringLiteral("4 8 12")); // still compiles
+    // Its tab closes when it goes.
+    MemberEditor *editor = openFromTree(window, QStringLiteral("Reset"));
+    QVERIFY(editor);
+    QVERIFY(commands.removeMember(counter, QStringLiteral("Reset")));
+    QCOMPARE(stack.undoText(), QStringLiteral("Delete Reset"));
+    QTRY_COMPARE(window.documents().indexOf(editor), -1);
+    stack.undo();
+    stack.undo();
+    stack.undo();
+    QCOMPARE(window.projectModel().project().findPou(counter)->addData, before.addData);
+    stack.redo();
+    QCOMPARE(interp::frontend::codesysMembers(*window.projectModel().project().findPou(counter)).size(), size_t(3));
+}
+
+void TestMemberDocuments::onlineTheTextIsOnlyLookedAt()
+{
+    MainWindow window;
+    window.projectModel().reset(sampleProject());
+    MemberEditor *editor = openFromTree(window, QStringLiteral("Count"));
+    QVERIFY(editor);
+    QVERIFY(!editor->editor()->isReadOnly());
+    window.documents().setEditingLocked(true);
+    QVERIFY(editor->editor()->isReadOnly());
+    window.documents().setEditingLocked(false);
+    QVERIFY(!editor->editor()->isReadOnly());
+}
+
+QTEST_MAIN(TestMemberDocuments)
+#include "tst_memberdocuments.moc"
