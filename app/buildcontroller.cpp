@@ -1,10 +1,12 @@
 #include "app/buildcontroller.h"
 
 #include "app/documentarea.h"
+#include "app/membereditor.h"
 #include "editors/common/diagrameditor.h"
 #include "editors/common/diagramview.h"
 #include "editors/text/codeeditor.h"
 #include "interpreter/compiler/lexer.h"
+#include "interpreter/frontend/codesysmembers.h"
 #include "interpreter/frontend/projectsource.h"
 #include "model/projectmodel.h"
 
@@ -168,6 +170,10 @@ void BuildController::underlineInOpenEditors()
 {
     const model::Project &project = m_projectModel.project();
     for (int index = 0; index < m_documents.count(); ++index) {
+        if (auto *member = qobject_cast<MemberEditor *>(m_documents.widget(index))) {
+            member->showCompilerMessages(m_messages);
+            continue;
+        }
         const std::optional<BodyRef> ref = m_documents.bodyAt(index);
         if (!ref)
             continue;
@@ -186,8 +192,10 @@ void BuildController::underlineInOpenEditors()
 void BuildController::openLocation(const Message &message)
 {
     const std::optional<BodyRef> ref = bodyNamed(m_projectModel, message.pouName);
-    if (!ref)
+    if (!ref) {
+        openMemberAt(message);
         return;
+    }
     m_documents.openBody(*ref);
     if (editors::DiagramEditor *diagram = m_documents.diagramEditorFor(*ref); diagram && message.localId) {
         diagram->select({*message.localId});
@@ -199,6 +207,20 @@ void BuildController::openLocation(const Message &message)
         editor->goToLine(message.line, std::max(1, message.column));
         editor->setFocus();
     }
+}
+
+void BuildController::openMemberAt(const Message &message)
+{
+    // "Counter.Add": a method or property of a POU, its lines counted in its body.
+    const qsizetype dot = message.pouName.lastIndexOf(QLatin1Char('.'));
+    const model::Pou *pou = dot > 0 ? m_projectModel.project().findPou(message.pouName.left(dot)) : nullptr;
+    auto *member = pou ? qobject_cast<MemberEditor *>(m_documents.openMember(pou->id, message.pouName.mid(dot + 1))) : nullptr;
+    if (!member)
+        return;
+    const interp::frontend::MemberBodyLines lines = interp::frontend::memberBodyLines(member->editor()->toPlainText());
+    const int first = lines.body > 0 ? lines.body : std::max(lines.getter, 1);
+    member->editor()->goToLine(message.line > 0 ? first + message.line - 1 : 1, std::max(1, message.column));
+    member->editor()->setFocus();
 }
 
 } // namespace iec::app

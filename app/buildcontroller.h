@@ -51,6 +51,8 @@ Q_SIGNALS:
     void graphicalDiagnosticsChanged(const iec::model::BodyRef &body, const QList<iec::app::Message> &messages);
 
 private:
+    // A message about a method or property ("Counter.Add"): its tab opens at the line.
+    void openMemberAt(const Message &message);
     void underlineInOpenEditors();
     void sendGraphicalDiagnostics();
 

@@ -34,6 +34,7 @@ LiveDiagnostics::LiveDiagnostics(model::ProjectModel &model, BuildController &bu
     connect(&model, &model::ProjectModel::dataTypesChanged, this, changed);
     connect(&model, &model::ProjectModel::instancesChanged, this, changed);
     connect(&model, &model::ProjectModel::variablesChanged, this, changed);
+    connect(&model, &model::ProjectModel::pouAddDataChanged, this, changed);
     connect(&model, &model::ProjectModel::bodyTextChanged, this, changed);
     connect(&model, &model::ProjectModel::elementsInserted, this, changed);
     connect(&model, &model::ProjectModel::elementsRemoved, this, changed);

@@ -1,5 +1,6 @@
 #include "app/membereditor.h"
 
+#include "app/messagespane.h"
 #include "editors/text/codeeditor.h"
 #include "editors/text/texteditorwidget.h"
 #include "interpreter/frontend/codesysmembers.h"
@@ -49,6 +50,7 @@ MemberEditor::MemberEditor(model::ProjectModel &model, model::PouId pou, const Q
         editor()->setReadOnly(!editable); // a graphical body has no text to edit
         m_written = found->addData;
     }
+    m_shown = editor()->toPlainText();
     editor()->document()->setModified(false);
     connect(editor(), &editors::CodeEditor::textEdited, this, &MemberEditor::apply);
     connect(&model, &model::ProjectModel::pouAddDataChanged, this, &MemberEditor::followModel);
@@ -94,6 +96,7 @@ void MemberEditor::apply()
     const bool renamed = read.definition->name != m_name;
     m_written = model::plcopen::addDataWithMember(pou->addData, m_name, *read.definition);
     m_name = read.definition->name;
+    m_shown = editor()->toPlainText();
     m_model.setPouAddData(m_pou, m_written);
     if (renamed)
         Q_EMIT titleChanged();
@@ -118,6 +121,31 @@ void MemberEditor::followModel(model::PouId id)
     const bool typedBefore = editor()->document()->isModified();
     editor()->setBodyTextKeepingCursor(text);
     editor()->document()->setModified(typedBefore);
+    m_shown = text;
+}
+
+void MemberEditor::showCompilerMessages(const QList<Message> &messages)
+{
+    if (editor()->toPlainText() != m_shown)
+        return; // typed since: the next compile marks the new text
+    const interp::frontend::MemberBodyLines lines = interp::frontend::memberBodyLines(m_shown);
+    const int first = lines.body > 0 ? lines.body
+        : lines.getter > 0 && lines.setter > 0 ? 0
+                                               : std::max(lines.getter, lines.setter);
+    const QString owner = title();
+    QList<editors::TextDiagnostic> marks;
+    for (const Message &message : messages) {
+        if (message.pouName.compare(owner, Qt::CaseInsensitive) != 0)
+            continue;
+        editors::TextDiagnostic mark;
+        mark.line = first > 0 && message.line > 0 ? first + message.line - 1 : 1;
+        mark.column = first > 0 ? std::max(message.column, 1) : 1;
+        mark.severity = message.severity == Message::Severity::Error ? editors::TextDiagnostic::Severity::Error
+                                                                     : editors::TextDiagnostic::Severity::Warning;
+        mark.message = message.text;
+        marks << mark;
+    }
+    editor()->setDiagnostics(marks);
 }
 
 } // namespace iec::app

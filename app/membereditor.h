@@ -3,6 +3,7 @@
 #include "model/ids.h"
 #include "model/opaque.h"
 
+#include <QList>
 #include <QString>
 #include <QWidget>
 
@@ -16,6 +17,8 @@ class TextEditorWidget;
 } // namespace iec::editors
 
 namespace iec::app {
+
+struct Message;
 
 // A method or property of a function block, which CODESYS keeps in the POU's addData, edited as
 // one text in the form of IEC 61131-3 edition 3 (METHOD ... END_METHOD, PROPERTY ... END_PROPERTY;
@@ -34,6 +37,11 @@ public:
     [[nodiscard]] QString name() const { return m_name; }
     [[nodiscard]] QString title() const; // Base.Add
     [[nodiscard]] editors::CodeEditor *editor() const;
+    // The compiler's messages about this member ("Counter.Add"), underlined at their lines, when
+    // the text is what the model holds (messages of older text are not shown on newer text). A
+    // property's messages go to its GET body, or to the header when it has both a GET and a SET
+    // (the compiler names both "Counter.Count").
+    void showCompilerMessages(const QList<Message> &messages);
 
 Q_SIGNALS:
     void titleChanged();
@@ -48,6 +56,7 @@ private:
     model::PouId m_pou;
     QString m_name;
     model::AddData m_written; // the POU's addData as this editor last wrote it
+    QString m_shown;          // the text the model holds (as loaded, or last taken)
     editors::TextEditorWidget *m_text = nullptr;
 };
 

@@ -101,10 +101,12 @@ model::Body textBody(const ast::Body &parsed, const QString &text)
     return body;
 }
 
-// Where the pieces of the text are: the declaration, and the text of each body.
+// Where the pieces of the text are: the declaration, and the text of each body with the offset
+// it starts from (-1: none).
 struct Pieces {
     int declarationEnd = 0;
     QString body, getter, setter;
+    int bodyFrom = -1, getterFrom = -1, setterFrom = -1;
 };
 
 Pieces cut(QStringView text)
@@ -121,10 +123,10 @@ Pieces cut(QStringView text)
     if (!property) {
         while (cursor.isVarSection())
             pieces.declarationEnd = cursor.skipPast("END_VAR");
-        const int bodyStart = pieces.declarationEnd;
+        pieces.bodyFrom = pieces.declarationEnd;
         while (!cursor.atEnd() && !cursor.is("END_METHOD"))
             cursor.next();
-        pieces.body = bodyText(text, bodyStart, cursor.start());
+        pieces.body = bodyText(text, pieces.bodyFrom, cursor.start());
         return pieces;
     }
     while (!cursor.atEnd() && !cursor.is("END_PROPERTY")) {
@@ -141,6 +143,7 @@ Pieces cut(QStringView text)
         while (!cursor.atEnd() && !cursor.is(end))
             cursor.next();
         (get ? pieces.getter : pieces.setter) = bodyText(text, start, cursor.start());
+        (get ? pieces.getterFrom : pieces.setterFrom) = start;
         cursor.next();
     }
     return pieces;
@@ -161,50 +164,97 @@ CodesysMemberDefinition::Accessor accessorOf(const ast::Method &m, bool setter, 
 
 } // namespace
 
-std::vector<CodesysMemberSummary> codesysMembers(const model::Pou &pou)
+namespace {
+
+std::vector<CodesysMemberSummary> membersOf(const model::plcopen::CodesysClass &definition)
 {
     std::vector<CodesysMemberSummary> result;
-    for (const CodesysMember &m : model::plcopen::readCodesysClass(pou).members) {
+    for (const CodesysMember &m : definition.members) {
         if (std::ranges::none_of(result, [&](const CodesysMemberSummary &s) { return sameName(s.name, m.name); }))
             result.push_back({m.name, m.kind != CodesysMember::Kind::Method});
     }
     return result;
 }
 
-QString printCodesysMember(const model::Pou &pou, const QString &name, bool *editable)
+QString printMember(const model::plcopen::CodesysClass &definition, const QString &owner, const QString &name, bool &textual)
 {
-    bool textual = true;
-    const model::plcopen::CodesysClass definition = model::plcopen::readCodesysClass(pou);
     std::vector<const CodesysMember *> parts;
     for (const CodesysMember &m : definition.members) {
         if (sameName(m.name, name))
             parts.push_back(&m);
     }
-    QString text;
-    if (parts.empty()) {
-        // nothing
-    } else if (parts.front()->kind == CodesysMember::Kind::Method) {
+    if (parts.empty())
+        return {};
+    if (parts.front()->kind == CodesysMember::Kind::Method) {
         const CodesysMember &m = *parts.front();
-        text = header("METHOD", m, m.interface.returnType) + variables(m.interface)
-            + bodyPart(m.body, pou.name + QLatin1Char('.') + m.name, textual) + QStringLiteral("END_METHOD\n");
-    } else {
-        text = header("PROPERTY", *parts.front(), parts.front()->type);
-        // GET before SET, whatever order the file has.
-        std::ranges::stable_sort(parts, [](const CodesysMember *a, const CodesysMember *b) {
-            return a->kind == CodesysMember::Kind::Getter && b->kind != CodesysMember::Kind::Getter;
-        });
-        for (const CodesysMember *accessor : parts) {
-            const bool get = accessor->kind == CodesysMember::Kind::Getter;
-            text += get ? QStringLiteral("GET\n") : QStringLiteral("SET\n");
-            text += variables(accessor->interface);
-            text += bodyPart(accessor->body, pou.name + QLatin1Char('.') + accessor->name, textual);
-            text += get ? QStringLiteral("END_GET\n") : QStringLiteral("END_SET\n");
-        }
-        text += QStringLiteral("END_PROPERTY\n");
+        return header("METHOD", m, m.interface.returnType) + variables(m.interface)
+            + bodyPart(m.body, owner + QLatin1Char('.') + m.name, textual) + QStringLiteral("END_METHOD\n");
     }
+    QString text = header("PROPERTY", *parts.front(), parts.front()->type);
+    // GET before SET, whatever order the file has.
+    std::ranges::stable_sort(parts, [](const CodesysMember *a, const CodesysMember *b) {
+        return a->kind == CodesysMember::Kind::Getter && b->kind != CodesysMember::Kind::Getter;
+    });
+    for (const CodesysMember *accessor : parts) {
+        const bool get = accessor->kind == CodesysMember::Kind::Getter;
+        text += get ? QStringLiteral("GET\n") : QStringLiteral("SET\n");
+        text += variables(accessor->interface);
+        text += bodyPart(accessor->body, owner + QLatin1Char('.') + accessor->name, textual);
+        text += get ? QStringLiteral("END_GET\n") : QStringLiteral("END_SET\n");
+    }
+    return text + QStringLiteral("END_PROPERTY\n");
+}
+
+} // namespace
+
+std::vector<CodesysMemberSummary> codesysMembers(const model::Pou &pou)
+{
+    return membersOf(model::plcopen::readCodesysClass(pou));
+}
+
+QString printCodesysMember(const model::Pou &pou, const QString &name, bool *editable)
+{
+    bool textual = true;
+    const QString text = printMember(model::plcopen::readCodesysClass(pou), pou.name, name, textual);
     if (editable)
         *editable = textual;
     return text;
+}
+
+QString printCodesysInterfaces(const model::Project &project)
+{
+    QString text;
+    for (const model::plcopen::CodesysInterface &itf : model::plcopen::readCodesysInterfaces(project)) {
+        QStringList bases = itf.definition.implements;
+        if (!itf.definition.extends.isEmpty())
+            bases.prepend(itf.definition.extends);
+        text += QStringLiteral("INTERFACE ") + itf.name;
+        if (!bases.isEmpty())
+            text += QStringLiteral(" EXTENDS ") + bases.join(QStringLiteral(", "));
+        text += QLatin1Char('\n');
+        bool textual = true;
+        for (const CodesysMemberSummary &member : membersOf(itf.definition))
+            text += printMember(itf.definition, itf.name, member.name, textual);
+        text += QStringLiteral("END_INTERFACE\n");
+    }
+    return text;
+}
+
+MemberBodyLines memberBodyLines(QStringView text)
+{
+    const Pieces pieces = cut(text);
+    // The line a body's first line is on: bodyText drops the rest of the line it starts on when
+    // that is blank (the line break after END_VAR or GET).
+    const auto lineOf = [&](int from) {
+        if (from < 0)
+            return 0;
+        int line = int(text.left(from).count(u'\n')) + 1;
+        const qsizetype newline = text.indexOf(u'\n', from);
+        if (newline >= 0 && text.mid(from, newline - from).trimmed().isEmpty())
+            ++line;
+        return line;
+    };
+    return {lineOf(pieces.bodyFrom), lineOf(pieces.getterFrom), lineOf(pieces.setterFrom)};
 }
 
 CodesysMemberText readCodesysMemberText(QStringView text, const QString &owner)

@@ -4,6 +4,7 @@
 
 #include "model/plcopen/codesysoop.h"
 #include "model/pou.h"
+#include "model/project.h"
 
 #include <QString>
 #include <QStringView>
@@ -33,6 +34,10 @@ std::vector<CodesysMemberSummary> codesysMembers(const model::Pou &pou);
 // language has no text form: it shows as a comment and `editable` is set false.
 QString printCodesysMember(const model::Pou &pou, const QString &name, bool *editable = nullptr);
 
+// Every INTERFACE the project keeps in CODESYS's addData, as INTERFACE Name [EXTENDS ...] with its
+// prototypes and END_INTERFACE.
+QString printCodesysInterfaces(const model::Project &project);
+
 struct CodesysMemberText {
     std::optional<model::plcopen::CodesysMemberDefinition> definition; // none after an error
     Diagnostics diagnostics; // at lines and columns of the text, in POU "owner.Name"
@@ -41,5 +46,15 @@ struct CodesysMemberText {
 // Reads one METHOD ... END_METHOD or PROPERTY ... END_PROPERTY of the POU named `owner`.
 // Bodies are kept exactly as written.
 CodesysMemberText readCodesysMemberText(QStringView text, const QString &owner);
+
+// The 1-based lines where the bodies of a member's text start, to place the compiler's messages
+// about them (they count lines in the body, POU "Owner.Name"): a method's body; a property's GET
+// and SET bodies. 0: no such body.
+struct MemberBodyLines {
+    int body = 0;
+    int getter = 0;
+    int setter = 0;
+};
+MemberBodyLines memberBodyLines(QStringView text);
 
 } // namespace iec::interp::frontend

@@ -356,6 +356,8 @@ QString printProject(const model::Project &project, std::vector<PrintWarning> *w
     QStringList parts;
     for (const model::DataTypeDecl &type : project.types.dataTypes)
         parts << printTypeDeclaration(type);
+    if (const QString interfaces = printCodesysInterfaces(project); !interfaces.isEmpty())
+        parts << interfaces;
     for (const model::Pou &pou : project.types.pous)
         parts << printPou(pou, warnings);
     for (const model::Configuration &configuration : project.instances.configurations)

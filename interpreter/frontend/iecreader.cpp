@@ -353,7 +353,8 @@ std::vector<PouTexts> allPouTexts(QStringView source)
             cursor.skipPast("END_CONFIGURATION");
         else if (cursor.isVarSection())
             cursor.skipPast("END_VAR");
-        else if (cursor.is("PROGRAM") || cursor.is("FUNCTION_BLOCK") || cursor.is("FUNCTION"))
+        else if (cursor.is("PROGRAM") || cursor.is("FUNCTION_BLOCK") || cursor.is("FUNCTION")
+            || (cursor.is("INTERFACE") && cursor.nameFollows())) // in the parser's order of POUs
             result.push_back(pouTexts(cursor, source));
         else
             cursor.next();
@@ -370,7 +371,7 @@ model::PouKind toModel(ast::PouKind kind)
         return model::PouKind::FunctionBlock;
     case ast::PouKind::Function:
         return model::PouKind::Function;
-    case ast::PouKind::Interface: // PLCopen has no interfaces: kept as a block (CODESYS keeps them in addData)
+    case ast::PouKind::Interface: // not a POU in the model: see interfaceAddData
         return model::PouKind::FunctionBlock;
     }
     return model::PouKind::Program;
@@ -388,8 +389,6 @@ model::Body textBody(ast::Language language, const QString &text)
 // and its interface's (codesysmembers.h). The parse of the whole text reported their errors.
 void addObjectOrientation(model::Pou &result, const ast::Pou &pou, const PouTexts &texts)
 {
-    if (pou.kind == ast::PouKind::Interface)
-        return; // kept as an empty block (see toModel(ast::PouKind))
     for (const QString &text : texts.members) {
         if (const CodesysMemberText read = readCodesysMemberText(text, pou.name); read.definition)
             result.addData = model::plcopen::addDataWithMember(result.addData, {}, *read.definition);
@@ -397,6 +396,17 @@ void addObjectOrientation(model::Pou &result, const ast::Pou &pou, const PouText
     if (result.pouInterface)
         result.pouInterface->addData
             = model::plcopen::addDataWithInheritance(result.pouInterface->addData, pou.extends, pou.implements);
+}
+
+// An INTERFACE goes where CODESYS keeps it: an entry of the project's addData.
+model::AddData interfaceAddData(const model::AddData &addData, const ast::Pou &pou, const PouTexts &texts)
+{
+    std::vector<model::plcopen::CodesysMemberDefinition> prototypes;
+    for (const QString &text : texts.members) {
+        if (const CodesysMemberText read = readCodesysMemberText(text, pou.name); read.definition)
+            prototypes.push_back(*read.definition);
+    }
+    return model::plcopen::addDataWithInterface(addData, pou.name, pou.implements, prototypes);
 }
 
 model::Pou toModel(const ast::Pou &pou, const PouTexts &texts, Diagnostics &diagnostics)
@@ -463,9 +473,13 @@ TextReadResult readIecText(QStringView text, const QString &projectName)
     for (const ast::TypeDecl &type : unit.types)
         result.project.types.dataTypes.push_back({type.name, toModel(type.type), toModel(type.init), {}, {}, {}, 0});
     const std::vector<PouTexts> texts = allPouTexts(text);
-    for (size_t i = 0; i < unit.pous.size(); ++i)
-        result.project.types.pous.push_back(
-            toModel(unit.pous[i], i < texts.size() ? texts[i] : PouTexts {}, result.diagnostics));
+    for (size_t i = 0; i < unit.pous.size(); ++i) {
+        const PouTexts &pouTexts = i < texts.size() ? texts[i] : PouTexts {};
+        if (unit.pous[i].kind == ast::PouKind::Interface)
+            result.project.addData = interfaceAddData(result.project.addData, unit.pous[i], pouTexts);
+        else
+            result.project.types.pous.push_back(toModel(unit.pous[i], pouTexts, result.diagnostics));
+    }
     for (const ast::ConfigurationDecl &configuration : unit.configurations)
         result.project.instances.configurations.push_back(toModel(configuration, text, result.diagnostics));
     if (!unit.globals.empty()) {

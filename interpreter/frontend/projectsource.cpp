@@ -202,7 +202,11 @@ ast::CompilationUnit parseProjectText(const model::Project &project, Diagnostics
         ast::Pou interfacePou;
         interfacePou.kind = ast::PouKind::Interface;
         interfacePou.name = itf.name;
-        interfacePou.implements = itf.definition.implements;
+        // The interfaces it extends: CODESYS writes each as <Extends>, which reads the first as
+        // `extends` and the others as `implements`.
+        if (!itf.definition.extends.isEmpty())
+            interfacePou.implements << itf.definition.extends;
+        interfacePou.implements << itf.definition.implements;
         for (const model::plcopen::CodesysMember &m : itf.definition.members) {
             ast::Method prototype;
             prototype.name = m.name;

@@ -52,6 +52,8 @@ public:
         return m_tokens[m_pos].kind == TokenKind::Keyword && (text().size() == 3 || text()[3] == u'_');
     }
     bool isName() const { return !atEnd() && m_tokens[m_pos].kind == TokenKind::Identifier; }
+    // Whether a name follows this token (INTERFACE I starts an interface; "Interface := 1;" does not).
+    bool nameFollows() const { return m_pos + 1 < m_tokens.size() && m_tokens[m_pos + 1].kind == TokenKind::Identifier; }
     // METHOD or PROPERTY followed by a name or a qualifier, as the parser reads a member
     // ("Method := 1;" is a statement).
     bool startsMember() const

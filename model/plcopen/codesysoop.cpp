@@ -303,6 +303,44 @@ AddData addDataWithInheritance(const AddData &addData, const QString &extends, c
     return result;
 }
 
+AddData addDataWithInterface(const AddData &addData, const QString &name, const QStringList &extends,
+    const std::vector<CodesysMemberDefinition> &members)
+{
+    AddData result;
+    for (const AddDataEntry &e : addData) {
+        // An entry that holds this interface goes; it is written anew below.
+        if (e.name == QLatin1String(kInterface)
+            && e.content.contains(QStringLiteral("<Interface name=\"%1\"").arg(name), Qt::CaseInsensitive))
+            continue;
+        result.push_back(e);
+    }
+    pugi::xml_document document;
+    pugi::xml_node itf = document.append_child("Interface");
+    itf.append_attribute("name").set_value(name.toUtf8().constData());
+    pugi::xml_node own = itf.append_child("addData");
+    if (!extends.isEmpty()) {
+        pugi::xml_node entry = own.append_child("data");
+        entry.append_attribute("name").set_value(kInheritance);
+        entry.append_attribute("handleUnknown").set_value("implementation");
+        pugi::xml_node inheritance = entry.append_child("Inheritance");
+        for (const QString &base : extends)
+            inheritance.append_child("Extends").append_child(pugi::node_pcdata).set_value(base.toUtf8().constData());
+    }
+    for (CodesysMemberDefinition prototype : members) {
+        prototype.body.reset();
+        for (std::optional<CodesysMemberDefinition::Accessor> *accessor : {&prototype.getter, &prototype.setter}) {
+            if (*accessor)
+                (*accessor)->body.reset();
+        }
+        pugi::xml_node entry = own.append_child("data");
+        entry.append_attribute("name").set_value(prototype.property ? kProperty : kMethod);
+        entry.append_attribute("handleUnknown").set_value("implementation");
+        insertMember(entry, {}, prototype);
+    }
+    result.push_back({QLatin1String(kInterface), QStringLiteral("implementation"), rawXml(itf)});
+    return result;
+}
+
 CodesysClass readCodesysClass(const Pou &pou)
 {
     Reader reader;

@@ -59,6 +59,11 @@ AddData addDataWithMember(const AddData &addData, const QString &name, const Cod
 // `addData` without the member called `name`.
 AddData addDataWithoutMember(const AddData &addData, const QString &name);
 
+// The project's addData with INTERFACE `name` (extending `extends`, with the prototypes `members`;
+// their bodies are not written) in CODESYS's interface entry, replacing one of that name.
+AddData addDataWithInterface(const AddData &addData, const QString &name, const QStringList &extends,
+    const std::vector<CodesysMemberDefinition> &members);
+
 // An interface's addData saying EXTENDS `extends` and IMPLEMENTS `implements` (CODESYS's
 // pouinheritance entry, replaced or added; none when both are empty).
 AddData addDataWithInheritance(const AddData &addData, const QString &extends, const QStringList &implements);

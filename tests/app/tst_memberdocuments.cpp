@@ -2,9 +2,11 @@
 // double-click opens one as text, typing changes what the program computes, the text document's
 // undo takes it back, text that does not read is marked and not taken, a new name in the header
 // renames, and adding and deleting members are steps on the project's undo stack.
+#include "app/buildcontroller.h"
 #include "app/documentarea.h"
 #include "app/mainwindow.h"
 #include "app/membereditor.h"
+#include "app/messagespane.h"
 #include "app/projectcommands.h"
 #include "app/projecttreeactions.h"
 #include "app/projecttreemodel.h"
@@ -107,6 +109,7 @@ private Q_SLOTS:
     void aNewNameInTheHeaderRenames();
     void addingAndDeletingAreUndoSteps();
     void onlineTheTextIsOnlyLookedAt();
+    void compilerMessagesAreMarkedInTheMember();
 
 private:
     QTemporaryDir m_configHome;
@@ -257,6 +260,36 @@ void TestMemberDocuments::onlineTheTextIsOnlyLookedAt()
     QVERIFY(editor->editor()->isReadOnly());
     window.documents().setEditingLocked(false);
     QVERIFY(!editor->editor()->isReadOnly());
+}
+
+void TestMemberDocuments::compilerMessagesAreMarkedInTheMember()
+{
+    MainWindow window;
+    window.projectModel().reset(sampleProject());
+    MemberEditor *editor = openFromTree(window, QStringLiteral("Add"));
+    QVERIFY(editor);
+    // It reads as a method, so the model takes it; the compiler finds the unknown name, on the
+    // member's line 6 (line 2 of its body).
+    typeReplacing(editor->editor(), QStringLiteral("Add := n;"), QStringLiteral("Add := n + Cuont;"));
+    QCOMPARE(editor->editor()->diagnostics(), QList<editors::TextDiagnostic>());
+    QTRY_VERIFY_WITH_TIMEOUT(!editor->editor()->diagnostics().isEmpty(), 5000);
+    const editors::TextDiagnostic mark = editor->editor()->diagnostics().front();
+    QCOMPARE(mark.line, 6);
+    QCOMPARE(mark.column, 12);
+    QVERIFY2(mark.message.contains(QStringLiteral("Cuont")), qPrintable(mark.message));
+    // The Messages pane's entry opens the member at that line.
+    window.documents().setCurrentIndex(-1);
+    const MessageListModel &messages = window.messagesPane().model();
+    int row = 0;
+    while (row < messages.rowCount() && messages.message(row).pouName != QStringLiteral("Counter.Add"))
+        ++row;
+    QVERIFY(row < messages.rowCount());
+    window.buildController().openLocation(messages.message(row));
+    QCOMPARE(window.documents().currentWidget(), editor);
+    QCOMPARE(editor->editor()->textCursor().blockNumber() + 1, 6);
+    // Mended, the mark goes with the next compile.
+    typeReplacing(editor->editor(), QStringLiteral(" + Cuont"), QString());
+    QTRY_VERIFY_WITH_TIMEOUT(editor->editor()->diagnostics().isEmpty(), 5000);
 }
 
 QTEST_MAIN(TestMemberDocuments)

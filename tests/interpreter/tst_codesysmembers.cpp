@@ -34,6 +34,7 @@ private Q_SLOTS:
     void textThatIsNotOneMemberIsRefused();
     void removedMemberGoes();
     void stFileKeepsMembersThroughTheModel();
+    void stInterfacesGoToTheProjectsAddData();
 };
 
 namespace {
@@ -293,6 +294,43 @@ void TestCodesysMembers::stFileKeepsMembersThroughTheModel()
     QVERIFY(printed.contains(QStringLiteral("FUNCTION_BLOCK Derived EXTENDS Base\n")));
     const TextReadResult again = readIecText(printed, QStringLiteral("st"));
     QCOMPARE(again.project.types.pous, read.project.types.pous);
+}
+
+void TestCodesysMembers::stInterfacesGoToTheProjectsAddData()
+{
+    const QString interfaceText = QStringLiteral("INTERFACE ICount\n"
+                                                 "METHOD Step : INT\nVAR_INPUT\n    amount : INT;\nEND_VAR\nEND_METHOD\n"
+                                                 "PROPERTY Value : INT\nGET\nEND_GET\nEND_PROPERTY\n"
+                                                 "END_INTERFACE\n");
+    const QString source = interfaceText
+        + QStringLiteral("FUNCTION_BLOCK Counter IMPLEMENTS ICount\nVAR\n    n : INT;\nEND_VAR\n"
+                         "METHOD Step : INT\nVAR_INPUT\n    amount : INT;\nEND_VAR\nn := n + amount;\nStep := n;\nEND_METHOD\n"
+                         "PROPERTY Value : INT\nGET\nValue := n;\nEND_GET\nEND_PROPERTY\n"
+                         "END_FUNCTION_BLOCK\n"
+                         "PROGRAM PLC_PRG\nVAR\n    c : Counter;\n    i : ICount;\n    r : INT;\nEND_VAR\n"
+                         "i := c;\nr := i.Step(3) + i.Value;\n"
+                         "END_PROGRAM\n");
+    const TextReadResult read = readIecText(source, QStringLiteral("st"));
+    QVERIFY2(!read.diagnostics.hasErrors(), qPrintable(errorsOf(read.diagnostics)));
+    // The interface is no POU (it was read as an empty block, and shifted every body after it).
+    QCOMPARE(read.project.types.pous.size(), size_t(2));
+    QCOMPARE(read.project.types.pous[0].name, QStringLiteral("Counter"));
+    QCOMPARE(read.project.types.pous[0].body()->text(), QString());
+    QCOMPARE(read.project.types.pous[1].body()->text(), QStringLiteral("i := c;\nr := i.Step(3) + i.Value;"));
+    const std::vector<model::plcopen::CodesysInterface> interfaces = model::plcopen::readCodesysInterfaces(read.project);
+    QCOMPARE(interfaces.size(), size_t(1));
+    QCOMPARE(interfaces[0].name, QStringLiteral("ICount"));
+    QCOMPARE(interfaces[0].definition.members.size(), size_t(2));
+    QCOMPARE(runTwoCycles(read.project), QStringLiteral("6 12")); // through the interface
+    // Printed as text, read again, and through a PLCopen file: the same.
+    const QString printed = printProject(read.project);
+    QVERIFY2(printed.startsWith(interfaceText), qPrintable(printed));
+    const TextReadResult again = readIecText(printed, QStringLiteral("st"));
+    QCOMPARE(again.project.types.pous, read.project.types.pous);
+    QCOMPARE(again.project.addData, read.project.addData);
+    const auto file = model::plcopen::readProject(model::plcopen::writeProject(read.project));
+    QVERIFY(file.ok);
+    QCOMPARE(runTwoCycles(file.project), QStringLiteral("6 12"));
 }
 
 QTEST_GUILESS_MAIN(TestCodesysMembers)
