@@ -123,6 +123,11 @@ BuildController::BuildController(model::ProjectModel &projectModel, DocumentArea
     , m_messagesPane(messages)
 {
     connect(&messages, &MessagesPane::messageActivated, this, &BuildController::openLocation);
+    // A tab opened after the last compile shows its messages at once, not after the next one.
+    connect(&documents, &QTabWidget::currentChanged, this, [this] {
+        underlineInOpenEditors();
+        sendGraphicalDiagnostics();
+    });
 }
 
 bool BuildController::build(const interp::CompileOptions &options)
@@ -171,7 +176,8 @@ void BuildController::underlineInOpenEditors()
     const model::Project &project = m_projectModel.project();
     for (int index = 0; index < m_documents.count(); ++index) {
         if (auto *member = qobject_cast<MemberEditor *>(m_documents.widget(index))) {
-            member->showCompilerMessages(m_messages);
+            if (const std::optional<QList<Message>> own = member->messagesAtLines(m_messages))
+                member->editor()->setDiagnostics(textDiagnostics(*own, member->title(), *member->editor()->document()));
             continue;
         }
         const std::optional<BodyRef> ref = m_documents.bodyAt(index);

@@ -124,28 +124,25 @@ void MemberEditor::followModel(model::PouId id)
     m_shown = text;
 }
 
-void MemberEditor::showCompilerMessages(const QList<Message> &messages)
+std::optional<QList<Message>> MemberEditor::messagesAtLines(const QList<Message> &messages) const
 {
     if (editor()->toPlainText() != m_shown)
-        return; // typed since: the next compile marks the new text
+        return std::nullopt;
     const interp::frontend::MemberBodyLines lines = interp::frontend::memberBodyLines(m_shown);
     const int first = lines.body > 0 ? lines.body
         : lines.getter > 0 && lines.setter > 0 ? 0
                                                : std::max(lines.getter, lines.setter);
     const QString owner = title();
-    QList<editors::TextDiagnostic> marks;
-    for (const Message &message : messages) {
+    QList<Message> own;
+    for (Message message : messages) {
         if (message.pouName.compare(owner, Qt::CaseInsensitive) != 0)
             continue;
-        editors::TextDiagnostic mark;
-        mark.line = first > 0 && message.line > 0 ? first + message.line - 1 : 1;
-        mark.column = first > 0 ? std::max(message.column, 1) : 1;
-        mark.severity = message.severity == Message::Severity::Error ? editors::TextDiagnostic::Severity::Error
-                                                                     : editors::TextDiagnostic::Severity::Warning;
-        mark.message = message.text;
-        marks << mark;
+        const bool placed = first > 0 && message.line > 0;
+        message.line = placed ? first + message.line - 1 : 1;
+        message.column = placed ? message.column : 1;
+        own << message;
     }
-    editor()->setDiagnostics(marks);
+    return own;
 }
 
 } // namespace iec::app

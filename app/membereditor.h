@@ -7,6 +7,8 @@
 #include <QString>
 #include <QWidget>
 
+#include <optional>
+
 namespace iec::model {
 class ProjectModel;
 }
@@ -37,11 +39,11 @@ public:
     [[nodiscard]] QString name() const { return m_name; }
     [[nodiscard]] QString title() const; // Base.Add
     [[nodiscard]] editors::CodeEditor *editor() const;
-    // The compiler's messages about this member ("Counter.Add"), underlined at their lines, when
-    // the text is what the model holds (messages of older text are not shown on newer text). A
-    // property's messages go to its GET body, or to the header when it has both a GET and a SET
-    // (the compiler names both "Counter.Count").
-    void showCompilerMessages(const QList<Message> &messages);
+    // The compiler's messages about this member ("Counter.Add", lines counted in its body) moved
+    // to the lines of its text; nullopt when the text is not what the model holds (typed since:
+    // messages of older text are not shown on newer text). A property's messages go to its GET
+    // body, or to the header when it has both a GET and a SET (the compiler names both alike).
+    [[nodiscard]] std::optional<QList<Message>> messagesAtLines(const QList<Message> &messages) const;
 
 Q_SIGNALS:
     void titleChanged();

@@ -1407,11 +1407,11 @@ Autosaved: %2</source>
         </message>
         <message>
             <source>%1 (PROPERTY)</source>
-            <translation>%1（属性）</translation>
+            <translation>%1 (属性)</translation>
         </message>
         <message>
             <source>%1 (METHOD)</source>
-            <translation>%1（方法）</translation>
+            <translation>%1 (方法)</translation>
         </message>
         <message>
             <source>Edited as text: METHOD ... END_METHOD or PROPERTY ... END_PROPERTY</source>

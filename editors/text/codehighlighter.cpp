@@ -56,6 +56,19 @@ bool isStKeywordToo(QStringView word)
     return false;
 }
 
+// Words of edition 3 and CODESYS the lexer leaves as names, because a program may also use them
+// as names ("Method := 1"): coloured as keywords all the same, as CODESYS colours them.
+bool isContextualKeyword(QStringView word)
+{
+    for (const char *w : {"METHOD", "END_METHOD", "PROPERTY", "END_PROPERTY", "END_GET", "END_SET", "INTERFACE",
+             "END_INTERFACE", "EXTENDS", "IMPLEMENTS", "THIS", "SUPER", "ABSTRACT", "FINAL", "PUBLIC", "PRIVATE",
+             "PROTECTED", "INTERNAL", "POINTER", "REFERENCE"}) {
+        if (word.compare(QLatin1String(w), Qt::CaseInsensitive) == 0)
+            return true;
+    }
+    return false;
+}
+
 } // namespace
 
 CodeHighlighter::CodeHighlighter(TextLanguage language, QTextDocument *document)
@@ -81,6 +94,8 @@ CodeHighlighter::Style CodeHighlighter::styleOf(interp::TokenKind kind, QStringV
     using K = interp::TokenKind;
     switch (kind) {
     case K::Identifier:
+        if (isContextualKeyword(word))
+            return Style::Keyword;
         return findStandardPou(word) ? Style::StandardPou : Style::Plain;
     case K::Keyword:
         if (m_language == TextLanguage::ST && interp::isIlOperator(word) && !isStKeywordToo(word))

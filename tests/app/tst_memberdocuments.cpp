@@ -276,16 +276,25 @@ void TestMemberDocuments::compilerMessagesAreMarkedInTheMember()
     const editors::TextDiagnostic mark = editor->editor()->diagnostics().front();
     QCOMPARE(mark.line, 6);
     QCOMPARE(mark.column, 12);
+    QCOMPARE(mark.length, 5); // the whole name
     QVERIFY2(mark.message.contains(QStringLiteral("Cuont")), qPrintable(mark.message));
+    // Closed and opened again, the tab shows the messages at once.
+    window.documents().closeAll();
+    editor = openFromTree(window, QStringLiteral("Add"));
+    QVERIFY(editor);
+    QCOMPARE(editor->editor()->diagnostics().size(), 1);
+    QCOMPARE(editor->editor()->diagnostics().front().line, 6);
     // The Messages pane's entry opens the member at that line.
-    window.documents().setCurrentIndex(-1);
+    window.documents().closeAll();
     const MessageListModel &messages = window.messagesPane().model();
     int row = 0;
     while (row < messages.rowCount() && messages.message(row).pouName != QStringLiteral("Counter.Add"))
         ++row;
     QVERIFY(row < messages.rowCount());
     window.buildController().openLocation(messages.message(row));
-    QCOMPARE(window.documents().currentWidget(), editor);
+    editor = qobject_cast<MemberEditor *>(window.documents().currentWidget());
+    QVERIFY(editor);
+    QCOMPARE(editor->title(), QStringLiteral("Counter.Add"));
     QCOMPARE(editor->editor()->textCursor().blockNumber() + 1, 6);
     // Mended, the mark goes with the next compile.
     typeReplacing(editor->editor(), QStringLiteral(" + Cuont"), QString());

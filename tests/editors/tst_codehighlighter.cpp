@@ -65,6 +65,9 @@ void TestCodeHighlighter::formats_data()
     QTest::newRow("identifier") << "IF x THEN" << 3 << ST << Style::Plain;
     QTest::newRow("blank") << "IF x THEN" << 2 << ST << Style::Plain;
     QTest::newRow("lower-case keyword") << "end_if;" << 2 << ST << Style::Keyword;
+    QTest::newRow("METHOD") << "METHOD Add : INT" << 0 << ST << Style::Keyword;
+    QTest::newRow("END_PROPERTY") << "END_PROPERTY" << 4 << ST << Style::Keyword;
+    QTest::newRow("SUPER") << "SUPER^.Step(1);" << 1 << ST << Style::Keyword;
     QTest::newRow("type name") << "x : INT;" << 5 << ST << Style::TypeName;
     QTest::newRow("integer") << "x := 42;" << 6 << ST << Style::Number;
     QTest::newRow("based integer") << "x := 16#FF;" << 9 << ST << Style::Number;
