@@ -2,6 +2,7 @@
 
 #include "editors/declarations/declarationtext.h"
 #include "interpreter/compiler/lexer.h"
+#include "interpreter/frontend/codesysmembers.h"
 #include "interpreter/frontend/iecprinter.h"
 
 #include <QRegularExpression>
@@ -328,6 +329,15 @@ SearchResult ProjectSearch::find(const model::Project &project, const SearchQuer
             }
         }
     });
+    for (const model::Pou &pou : project.types.pous) {
+        for (const interp::frontend::CodesysMemberSummary &member : interp::frontend::codesysMembers(pou)) {
+            SearchHit base;
+            base.place = pou.name + QLatin1Char('.') + member.name;
+            base.body = BodyRef {pou.id, BodyRef::Part::Pou, {}};
+            base.member = member.name;
+            findInText(*pattern, interp::frontend::printCodesysMember(pou, member.name), base, result.hits);
+        }
+    }
     forEachDeclaration(project, [&](SearchHit base, const model::VarList &, const model::Variable &variable) {
         const QString line = variableLine(variable);
         if (!matches(*pattern, line))

@@ -22,6 +22,7 @@ struct SearchHit {
     QString place;                             // "Main", "Main.Fill", "IO": what the list shows
     std::optional<model::BodyRef> body;        // a body's text or element, or a POU's declarations
     std::optional<editors::GlobalListRef> list; // a global variable list's declaration
+    QString member;                            // a method or property of body->pou: a line of its text
     QString variable;                          // declarations: the variable declared there
     int line = 0;                              // text: 1-based line and column, length of the match
     int column = 0;
@@ -51,7 +52,8 @@ class ProjectSearch
     Q_DECLARE_TR_FUNCTIONS(iec::app::ProjectSearch)
 
 public:
-    // Every match of `query` in the ST/IL bodies of POUs, actions and transitions, the texts of
+    // Every match of `query` in the ST/IL bodies of POUs, actions and transitions, the text of
+    // methods and properties (as their tab shows it, docs/ide.md), the texts of
     // graphical elements (variables, expressions, block types and instances, step names,
     // conditions, action names, comments), the POUs' declarations and the global variable lists.
     // In the order of the project tree; a line with several matches gives several hits.

@@ -1,6 +1,7 @@
 #include "app/searchresultspane.h"
 
 #include "app/documentarea.h"
+#include "app/membereditor.h"
 #include "editors/declarations/declarationeditor.h"
 #include "editors/globals/globallisteditor.h"
 #include "editors/text/codeeditor.h"
@@ -125,6 +126,19 @@ SearchQuery FindInProjectDialog::query() const
     return {m_text->text(), m_case->isChecked(), m_word->isChecked(), m_regex->isChecked()};
 }
 
+namespace {
+
+void selectMatch(editors::CodeEditor *editor, const SearchHit &hit)
+{
+    editor->goToLine(hit.line, hit.column);
+    QTextCursor cursor = editor->textCursor();
+    cursor.movePosition(QTextCursor::Right, QTextCursor::KeepAnchor, hit.length);
+    editor->setTextCursor(cursor);
+    editor->setFocus();
+}
+
+} // namespace
+
 bool showSearchHit(DocumentArea &documents, const SearchHit &hit)
 {
     if (hit.list) {
@@ -133,6 +147,13 @@ bool showSearchHit(DocumentArea &documents, const SearchHit &hit)
     }
     if (!hit.body)
         return false;
+    if (!hit.member.isEmpty()) {
+        auto *member = qobject_cast<MemberEditor *>(documents.openMember(hit.body->pou, hit.member));
+        if (!member || hit.line < 1 || hit.line > member->editor()->document()->blockCount())
+            return false;
+        selectMatch(member->editor(), hit);
+        return true;
+    }
     QWidget *document = documents.openBody(*hit.body);
     if (!document)
         return false;
@@ -152,11 +173,7 @@ bool showSearchHit(DocumentArea &documents, const SearchHit &hit)
     editors::CodeEditor *editor = documents.textEditorFor(*hit.body);
     if (!editor || hit.line < 1 || hit.line > editor->document()->blockCount())
         return false;
-    editor->goToLine(hit.line, hit.column);
-    QTextCursor cursor = editor->textCursor();
-    cursor.movePosition(QTextCursor::Right, QTextCursor::KeepAnchor, hit.length);
-    editor->setTextCursor(cursor);
-    editor->setFocus();
+    selectMatch(editor, hit);
     return true;
 }
 

@@ -11,6 +11,8 @@
 #include "app/projecttreeactions.h"
 #include "app/projecttreemodel.h"
 #include "app/projecttreeview.h"
+#include "app/projectsearch.h"
+#include "app/searchresultspane.h"
 #include "app/undostacks.h"
 #include "editors/text/codeeditor.h"
 #include "interpreter/frontend/codesysmembers.h"
@@ -110,6 +112,7 @@ private Q_SLOTS:
     void addingAndDeletingAreUndoSteps();
     void onlineTheTextIsOnlyLookedAt();
     void compilerMessagesAreMarkedInTheMember();
+    void findInProjectSearchesMembers();
 
 private:
     QTemporaryDir m_configHome;
@@ -299,6 +302,23 @@ void TestMemberDocuments::compilerMessagesAreMarkedInTheMember()
     // Mended, the mark goes with the next compile.
     typeReplacing(editor->editor(), QStringLiteral(" + Cuont"), QString());
     QTRY_VERIFY_WITH_TIMEOUT(editor->editor()->diagnostics().isEmpty(), 5000);
+}
+
+void TestMemberDocuments::findInProjectSearchesMembers()
+{
+    MainWindow window;
+    window.projectModel().reset(sampleProject());
+    const SearchResult result = ProjectSearch::find(window.projectModel().project(), {QStringLiteral("n + x")});
+    QCOMPARE(result.hits.size(), size_t(1));
+    const SearchHit &hit = result.hits.front();
+    QCOMPARE(hit.place, QStringLiteral("Counter.Add"));
+    QCOMPARE(hit.member, QStringLiteral("Add"));
+    QCOMPARE(hit.line, 5);
+    QCOMPARE(hit.column, 6);
+    QVERIFY(showSearchHit(window.documents(), hit));
+    auto *editor = qobject_cast<MemberEditor *>(window.documents().currentWidget());
+    QVERIFY(editor);
+    QCOMPARE(editor->editor()->textCursor().selectedText(), QStringLiteral("n + x"));
 }
 
 QTEST_MAIN(TestMemberDocuments)
