@@ -234,7 +234,8 @@ QString contentOf(pugi::xml_node root)
     return content;
 }
 
-// Calls `edit(root, member)` for the entry holding member `name`; false when there is none.
+// Calls `edit(entry, root, member)` for the entry holding member `name` (its content parsed under
+// `root`); false when there is none.
 template<class Edit> bool editMemberEntry(AddData &addData, const QString &name, Edit edit)
 {
     for (AddDataEntry &e : addData) {
