@@ -142,13 +142,21 @@ bool isMemberNode(pugi::xml_node n)
     return n.type() == pugi::node_element && (hasLocalName(n, "Method") || hasLocalName(n, "Property"));
 }
 
+// Text inside `node`; none when empty, so that the element reads back as it was written (an empty
+// text node is written as <x></x> but read as <x/>; found by the monkey test).
+void appendText(pugi::xml_node node, const QString &text)
+{
+    if (!text.isEmpty())
+        node.append_child(pugi::node_pcdata).set_value(text.toUtf8().constData());
+}
+
 // CODESYS's form of program text: <ST><xhtml xmlns="...">text</xhtml></ST>.
 void appendBody(pugi::xml_node parent, const Body &body)
 {
     const char *language = body.language() == BodyLanguage::IL ? "IL" : "ST";
     pugi::xml_node xhtml = parent.append_child("body").append_child(language).append_child("xhtml");
     xhtml.append_attribute("xmlns").set_value(kXhtmlNamespace);
-    xhtml.append_child(pugi::node_pcdata).set_value(body.text().toUtf8().constData());
+    appendText(xhtml, body.text());
 }
 
 void appendInterface(pugi::xml_node parent, const Interface &interface)
@@ -176,7 +184,7 @@ void appendOwnAddData(pugi::xml_node parent, pugi::xml_node old, const QString &
         entry.remove_child(entry.first_child());
     pugi::xml_node xhtml = entry.append_child("InterfaceAsPlainText").append_child("xhtml");
     xhtml.append_attribute("xmlns").set_value(kXhtmlNamespace);
-    xhtml.append_child(pugi::node_pcdata).set_value(declaration.toUtf8().constData());
+    appendText(xhtml, declaration);
 }
 
 void appendAccessor(pugi::xml_node parent, const char *tag, const CodesysMemberDefinition::Accessor &accessor, pugi::xml_node old)
@@ -297,9 +305,9 @@ AddData addDataWithInheritance(const AddData &addData, const QString &extends, c
     pugi::xml_document document;
     pugi::xml_node inheritance = document.append_child("Inheritance");
     if (!extends.isEmpty())
-        inheritance.append_child("Extends").append_child(pugi::node_pcdata).set_value(extends.toUtf8().constData());
+        appendText(inheritance.append_child("Extends"), extends);
     for (const QString &name : implements)
-        inheritance.append_child("Implements").append_child(pugi::node_pcdata).set_value(name.toUtf8().constData());
+        appendText(inheritance.append_child("Implements"), name);
     result.push_back({QLatin1String(kInheritance), QStringLiteral("implementation"), rawXml(inheritance)});
     return result;
 }
@@ -325,7 +333,7 @@ AddData addDataWithInterface(const AddData &addData, const QString &name, const 
         entry.append_attribute("handleUnknown").set_value("implementation");
         pugi::xml_node inheritance = entry.append_child("Inheritance");
         for (const QString &base : extends)
-            inheritance.append_child("Extends").append_child(pugi::node_pcdata).set_value(base.toUtf8().constData());
+            appendText(inheritance.append_child("Extends"), base);
     }
     for (CodesysMemberDefinition prototype : members) {
         prototype.body.reset();

@@ -306,7 +306,7 @@ void Monkey::recordSteps(const std::vector<History> &before)
                 then = old.position;
         }
         if (now.position != then)
-            steps.push_back({now.owner, now.position - then});
+            steps.push_back({now.owner, now.position - then, qobject_cast<QTextDocument *>(now.owner.data()) != nullptr});
     }
     m_steps.push_back(std::move(steps));
 }
@@ -358,6 +358,10 @@ bool Monkey::undoAll(QString *problem)
 {
     for (auto gesture = m_steps.rbegin(); gesture != m_steps.rend(); ++gesture) {
         for (auto step = gesture->rbegin(); step != gesture->rend(); ++step) {
+            if (!step->owner && step->text) {
+                ++m_lostTyping;
+                continue;
+            }
             if (!step->owner) {
                 *problem = QStringLiteral("gesture %1 changed a history that is gone (%2)")
                                .arg(m_steps.rend() - gesture)

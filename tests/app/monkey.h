@@ -39,9 +39,13 @@ public:
     // One random gesture on the current document; returns what it did ("action Insert Step",
     // "type ...", ...), for the log a failure prints.
     QString gesture();
-    // Takes every logged gesture back, newest first; false (with `problem`) when a history it
-    // needs is gone.
+    // Takes every logged gesture back, newest first; false (with `problem`) when an undo stack it
+    // needs is gone. Typing in a text document whose tab has closed since cannot be taken back
+    // that way: it is skipped (lostTyping() counts it), and the caller's comparison with the
+    // starting model says whether what took the document away took the typing with it (undoing
+    // an Add Method removes the method and what was typed in it).
     bool undoAll(QString *problem);
+    [[nodiscard]] int lostTyping() const { return m_lostTyping; }
     // Ends online mode if a gesture started it (nothing may be edited online).
     void logout();
     // What the gestures did so far, one line each.
@@ -57,6 +61,7 @@ private:
     struct Step {
         QPointer<QObject> owner;
         int delta = 0; // how far the gesture moved that history
+        bool text = false; // a text document's typing, not an undo stack
     };
 
     QString trigger(const QList<QAction *> &candidates, const QString &kind);
@@ -80,6 +85,7 @@ private:
     std::vector<std::vector<Step>> m_steps; // per gesture
     QStringList m_log;
     QMap<QString, int> m_counts;
+    int m_lostTyping = 0;
 };
 
 } // namespace monkey

@@ -219,7 +219,7 @@ void TestCodesysMembers::newMemberIsWrittenInCodesysForm()
     model::Project project = loaded();
     QCOMPARE(replaced(project, QString(), QStringLiteral("METHOD PRIVATE Reset\nn := 0;\nEND_METHOD\n")), QString());
     const model::AddData &addData = project.types.pous.front().addData;
-    QCOMPARE(addData.size(), size_t(3));
+    QCOMPARE(addData.size(), size_t(3)); // the new method's entry, before the property below
     QCOMPARE(addData[2].name, QStringLiteral("http://www.3s-software.com/plcopenxml/method"));
     QCOMPARE(addData[2].handleUnknown, QStringLiteral("implementation"));
     QCOMPARE(addData[2].content,
@@ -227,9 +227,18 @@ void TestCodesysMembers::newMemberIsWrittenInCodesysForm()
                        "<addData><data name=\"http://www.3s-software.com/plcopenxml/interfaceasplaintext\" handleUnknown=\"implementation\">"
                        "<InterfaceAsPlainText><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">METHOD PRIVATE Reset\n</xhtml></InterfaceAsPlainText>"
                        "</data></addData></Method>"));
+    QCOMPARE(replaced(project, QString(), QStringLiteral("PROPERTY Limit : INT\nGET\nLimit := 0;\nEND_GET\nSET\nEND_SET\nEND_PROPERTY\n")),
+        QString());
+    // Saved and opened again, the model is the same (the monkey test saves and compares so).
+    const auto again = model::plcopen::readProject(model::plcopen::writeProject(project));
+    QVERIFY(again.ok);
+    const model::AddData &written = project.types.pous.front().addData;
+    QCOMPARE(again.project.types.pous.front().addData.size(), written.size());
+    for (size_t i = 0; i < written.size(); ++i) // entry by entry, so that a failure shows the text
+        QCOMPARE(again.project.types.pous.front().addData.at(i), written.at(i));
     const model::plcopen::CodesysClass read = model::plcopen::readCodesysClass(project.types.pous.front());
-    QCOMPARE(read.members.back().name, QStringLiteral("Reset"));
-    QCOMPARE(read.members.back().qualifiers, QStringList {QStringLiteral("PRIVATE")});
+    QCOMPARE(read.members[read.members.size() - 3].name, QStringLiteral("Reset"));
+    QCOMPARE(read.members[read.members.size() - 3].qualifiers, QStringList {QStringLiteral("PRIVATE")});
     QCOMPARE(printCodesysMember(project.types.pous.front(), QStringLiteral("Reset")),
         QStringLiteral("METHOD PRIVATE Reset\nn := 0;\nEND_METHOD\n"));
 }
