@@ -81,6 +81,12 @@ void appendFragment(pugi::xml_node parent, const QString &xml)
 {
     if (xml.isEmpty())
         return;
+    if (xml.trimmed().isEmpty()) {
+        // Only white space (an addData entry holding nothing else): a fragment parse drops it, so
+        // it is written as text, which the reader keeps (found by fuzz_plcopen).
+        parent.append_child(pugi::node_pcdata).set_value(xml.toUtf8().constData());
+        return;
+    }
     pugi::xml_document fragment;
     const QByteArray bytes = xml.toUtf8();
     if (!fragment.load_buffer(bytes.constData(), bytes.size(),
