@@ -6437,6 +6437,10 @@ Automatisch gespeichert: %2</translation>
             <source>Write one METHOD ... END_METHOD or one PROPERTY ... END_PROPERTY here, and nothing before or after it.</source>
             <translation>Schreiben Sie hier genau ein METHOD ... END_METHOD oder ein PROPERTY ... END_PROPERTY und nichts davor oder danach.</translation>
         </message>
+        <message>
+            <source>The text holds the control character U+%1, which a project file cannot keep; remove it.</source>
+            <translation>Der Text enthält das Steuerzeichen U+%1, das eine Projektdatei nicht speichern kann; entfernen Sie es.</translation>
+        </message>
     </context>
     <context>
         <name>iec::interp::Condition</name>

@@ -6431,6 +6431,10 @@ Autosaved: %2</source>
             <source>Write one METHOD ... END_METHOD or one PROPERTY ... END_PROPERTY here, and nothing before or after it.</source>
             <translation>此处只写一个 METHOD ... END_METHOD 或一个 PROPERTY ... END_PROPERTY，前后不要有其他内容。</translation>
         </message>
+        <message>
+            <source>The text holds the control character U+%1, which a project file cannot keep; remove it.</source>
+            <translation>文本中含有控制字符 U+%1，项目文件无法保存它；请将其删除。</translation>
+        </message>
     </context>
     <context>
         <name>iec::interp::Condition</name>

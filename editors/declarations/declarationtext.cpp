@@ -25,12 +25,13 @@ QString variableLine(const model::Variable &variable)
         variable.documentation ? variable.documentation->text : QString());
 }
 
-// The comment's words without (* *) or //.
+// The comment's words without (* *) or //, on one line as the text view prints them (a comment
+// over two lines read back as one changed the model; found by fuzz_declarations).
 QString commentContent(QStringView token)
 {
     if (token.startsWith(u"//"))
-        return token.mid(2).trimmed().toString();
-    return token.mid(2, token.size() - 4).trimmed().toString();
+        return token.mid(2).toString().simplified();
+    return token.mid(2, token.size() - 4).toString().simplified();
 }
 
 // 1-based line of every comment in `text`, with its content.
@@ -200,10 +201,13 @@ QString declarationLine(const QString &name, const QString &address, const QStri
         line += QStringLiteral(" := ") + initialValue;
     line += QLatin1Char(';');
     if (!comment.trimmed().isEmpty()) {
-        // A "*)" inside would end the comment early; one line keeps one declaration a line.
-        QString content = comment.simplified();
-        content.replace(QStringLiteral("*)"), QStringLiteral("* )"));
-        line += QStringLiteral(" (* ") + content + QStringLiteral(" *)");
+        // One line keeps one declaration a line; a "*)" inside would end a (* *) comment early,
+        // so such a text becomes a // comment, which runs to the end of the line.
+        const QString content = comment.simplified();
+        if (content.contains(QStringLiteral("*)")))
+            line += QStringLiteral(" // ") + content;
+        else
+            line += QStringLiteral(" (* ") + content + QStringLiteral(" *)");
     }
     return line;
 }

@@ -463,10 +463,36 @@ model::DataType dataTypeFromAst(const ast::TypeSpec &spec)
     return toModel(spec);
 }
 
+// Characters XML 1.0 cannot hold (NUL and the other control characters but tab and line breaks,
+// U+FFFE, U+FFFF): a project file could not keep the text, so they are an error where they stand
+// (a NUL in a comment cut the body short in the saved file; found by fuzz_iectext).
+void reportUnstorableCharacters(QStringView text, Diagnostics &diagnostics)
+{
+    int line = 1;
+    int column = 1;
+    for (const QChar c : text) {
+        const char16_t u = c.unicode();
+        if ((u < 0x20 && u != u'\t' && u != u'\n' && u != u'\r') || u == 0xFFFE || u == 0xFFFF) {
+            diagnostics.error({}, {line, column},
+                QCoreApplication::translate("iec::interp::Compiler",
+                    "The text holds the control character U+%1, which a project file cannot keep; remove it.")
+                    .arg(QStringLiteral("%1").arg(int(u), 4, 16, QLatin1Char('0')).toUpper()));
+            return;
+        }
+        if (u == u'\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+}
+
 TextReadResult readIecText(QStringView text, const QString &projectName)
 {
     TextReadResult result;
     result.project = emptyProject(projectName);
+    reportUnstorableCharacters(text, result.diagnostics);
     ast::CompilationUnit unit;
     // On the compiler's stack, so that the parser's limits hold in any thread (limits.h).
     runOnCompilerStack([&] { unit = parseUnit(text, result.diagnostics); });

@@ -131,6 +131,7 @@ private Q_SLOTS:
     void validateRows();
     void declarationTextPrintsSectionsWithComments();
     void readDeclarationText_data();
+    void commentsPrintAsTheyRead();
     void readDeclarationText();
     void textKeepsWhatItCannotShow();
     void addresses_data();
@@ -315,6 +316,12 @@ void TestDeclarations::readDeclarationText_data()
                {variable(QStringLiteral("a"), QStringLiteral("REAL"), {}, {}, QStringLiteral("both")),
                    variable(QStringLiteral("b"), QStringLiteral("REAL"), {}, {}, QStringLiteral("both"))})})
         << std::vector<DeclarationProblem> {};
+    // Found by fuzz_declarations: a comment over two lines is read as the one line it prints as.
+    QTest::newRow("comment over two lines")
+        << QStringLiteral("VAR\n  a : INT; (* first\nsecond *)\nEND_VAR")
+        << interfaceOf({varList(VarListKind::Local,
+               {variable(QStringLiteral("a"), QStringLiteral("INT"), {}, {}, QStringLiteral("first second"))})})
+        << std::vector<DeclarationProblem> {};
     QTest::newRow("missing semicolon") << QStringLiteral("VAR\n  a : INT\n  b : BOOL;\nEND_VAR") << Interface {}
                                        << std::vector<DeclarationProblem> {
                                               {2, 10, QStringLiteral("Missing ';' after the declaration of a.")}};
@@ -347,6 +354,21 @@ void TestDeclarations::readDeclarationText()
     QCOMPARE(result.problems, problems);
     QVERIFY(result.declarations.has_value());
     QCOMPARE(*result.declarations, expected);
+}
+
+void TestDeclarations::commentsPrintAsTheyRead()
+{
+    // "*)" would end a (* *) comment early: such a text is printed as a // comment.
+    for (const QString &comment : {QStringLiteral("opens *) the valve"), QStringLiteral("first second")}) {
+        const Interface declared = interfaceOf({varList(VarListKind::Local,
+            {variable(QStringLiteral("a"), QStringLiteral("INT"), {}, {}, comment)})});
+        const DeclarationTextResult result = iec::editors::readDeclarationText(declarationText(declared));
+        QVERIFY(result.declarations.has_value());
+        QCOMPARE(*result.declarations, declared);
+    }
+    QVERIFY(declarationText(interfaceOf({varList(VarListKind::Local,
+                                {variable(QStringLiteral("a"), QStringLiteral("INT"), {}, {}, QStringLiteral("x *) y"))})}))
+                .contains(QStringLiteral("a : INT; // x *) y")));
 }
 
 void TestDeclarations::textKeepsWhatItCannotShow()

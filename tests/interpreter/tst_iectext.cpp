@@ -26,6 +26,7 @@ private Q_SLOTS:
     void globalListNamesAndChartsSurviveText();
     void graphicalBodiesBecomeAComment();
     void reportsParseErrorsWithFileLines();
+    void refusesCharactersAFileCannotKeep();
     void textAndModelRunAlike();
 };
 
@@ -208,6 +209,19 @@ void TestIecText::reportsParseErrorsWithFileLines()
     const auto read = frontend::readIecText(u"PROGRAM Main\nVAR x : INT END_VAR\nEND_PROGRAM\n", {});
     QVERIFY(read.diagnostics.hasErrors());
     QCOMPARE(read.diagnostics.all().front().location.line, 2);
+}
+
+void TestIecText::refusesCharactersAFileCannotKeep()
+{
+    // Found by fuzz_iectext: a NUL in a comment was kept in the body and cut it short in XML.
+    const QString text = QStringLiteral("PROGRAM Main\n(* a\tb \x01 *) x := 1;\nEND_PROGRAM\n");
+    const auto read = frontend::readIecText(text, {});
+    QVERIFY(read.diagnostics.hasErrors());
+    const Diagnostic &error = read.diagnostics.all().front();
+    QCOMPARE(error.location.line, 2);
+    QCOMPARE(error.location.column, 8); // the tab before it counts as one character
+    QCOMPARE(error.message,
+        QStringLiteral("The text holds the control character U+0001, which a project file cannot keep; remove it."));
 }
 
 void TestIecText::textAndModelRunAlike()
