@@ -120,8 +120,12 @@ void readFormattedText(pugi::xml_node node, FormattedText &text)
 void writeProgramText(pugi::xml_node node, const QString &text)
 {
     pugi::xml_node paragraph = node.append_child("xhtml:p");
+    // A NUL (pasted into an editor) would end the text there: the rest of the body would be lost
+    // from the file. XML cannot hold it at all, so it is written as U+FFFD, the replacement character.
+    QString storable = text;
+    storable.replace(QChar(u'\0'), QChar(0xFFFD));
     // CDATA cannot contain "]]>": end the section between "]]" and ">" and start a new one.
-    const std::string utf8 = text.toStdString();
+    const std::string utf8 = storable.toStdString();
     std::size_t start = 0;
     for (std::size_t found = utf8.find("]]>"); found != std::string::npos; found = utf8.find("]]>", start)) {
         paragraph.append_child(pugi::node_cdata).set_value(utf8.substr(start, found + 2 - start).c_str());

@@ -73,6 +73,7 @@ private Q_SLOTS:
     void hostileInput();
     void missingFileIsAFileError();
     void oldFormsLoadWithWarningsAndAreWrittenValid();
+    void nulInABodyDoesNotCutItShort();
 };
 
 void TestPlcopenRobustness::truncatedInputIsAnErrorWithALine()
@@ -317,6 +318,22 @@ void TestPlcopenRobustness::oldFormsLoadWithWarningsAndAreWrittenValid()
     const plcopen::ReadResult again = plcopen::readProject(written);
     QVERIFY(again.ok);
     QVERIFY(again.diagnostics.empty());
+}
+
+void TestPlcopenRobustness::nulInABodyDoesNotCutItShort()
+{
+    // XML cannot hold a NUL; written as U+FFFD, the text after it stays in the file.
+    Project project;
+    Pou pou;
+    pou.name = QStringLiteral("Main");
+    Body body = Body::withLanguage(BodyLanguage::ST);
+    body.setText(QStringLiteral("a := 1; (* pasted ") + QChar(u'\0') + QStringLiteral(" *)\nb := 2;"));
+    pou.bodies.push_back(body);
+    project.types.pous.push_back(pou);
+    const auto read = plcopen::readProject(plcopen::writeProject(project));
+    QVERIFY(read.ok);
+    QCOMPARE(read.project.types.pous.front().body()->text(),
+        QStringLiteral("a := 1; (* pasted ") + QChar(0xFFFD) + QStringLiteral(" *)\nb := 2;"));
 }
 
 QTEST_GUILESS_MAIN(TestPlcopenRobustness)
