@@ -111,6 +111,10 @@ std::uint32_t Codegen::materialize(const Value &value)
 {
     if (value.kind == Value::Kind::Operand)
         return value.operand;
+    // An invalid value (no type) comes only after an error was reported, so no code will run; it
+    // was taken as a constant of no type (found by fuzz_il: CONCAT with a string of NULs).
+    if (!value.type)
+        return 0;
     return constantOperand(value.type, value.constant);
 }
 
