@@ -6,7 +6,6 @@
 #include "editors/common/diagramview.h"
 #include "editors/text/codeeditor.h"
 #include "interpreter/compiler/lexer.h"
-#include "interpreter/frontend/codesysmembers.h"
 #include "interpreter/frontend/projectsource.h"
 #include "model/projectmodel.h"
 
@@ -223,9 +222,8 @@ void BuildController::openMemberAt(const Message &message)
     auto *member = pou ? qobject_cast<MemberEditor *>(m_documents.openMember(pou->id, message.pouName.mid(dot + 1))) : nullptr;
     if (!member)
         return;
-    const interp::frontend::MemberBodyLines lines = interp::frontend::memberBodyLines(member->editor()->toPlainText());
-    const int first = lines.body > 0 ? lines.body : std::max(lines.getter, 1);
-    member->editor()->goToLine(message.line > 0 ? first + message.line - 1 : 1, std::max(1, message.column));
+    const Message placed = member->atTextLine(message);
+    member->editor()->goToLine(placed.line, placed.column);
     member->editor()->setFocus();
 }
 

@@ -124,23 +124,32 @@ void MemberEditor::followModel(model::PouId id)
     m_shown = text;
 }
 
+int MemberEditor::firstBodyLine() const
+{
+    const interp::frontend::MemberBodyLines lines = interp::frontend::memberBodyLines(editor()->toPlainText());
+    if (lines.body > 0)
+        return lines.body;
+    return lines.getter > 0 && lines.setter > 0 ? 0 : std::max(lines.getter, lines.setter);
+}
+
+Message MemberEditor::atTextLine(Message message) const
+{
+    const int first = firstBodyLine();
+    const bool placed = first > 0 && message.line > 0;
+    message.line = placed ? first + message.line - 1 : 1;
+    message.column = placed ? std::max(message.column, 1) : 1;
+    return message;
+}
+
 std::optional<QList<Message>> MemberEditor::messagesAtLines(const QList<Message> &messages) const
 {
     if (editor()->toPlainText() != m_shown)
         return std::nullopt;
-    const interp::frontend::MemberBodyLines lines = interp::frontend::memberBodyLines(m_shown);
-    const int first = lines.body > 0 ? lines.body
-        : lines.getter > 0 && lines.setter > 0 ? 0
-                                               : std::max(lines.getter, lines.setter);
     const QString owner = title();
     QList<Message> own;
-    for (Message message : messages) {
-        if (message.pouName.compare(owner, Qt::CaseInsensitive) != 0)
-            continue;
-        const bool placed = first > 0 && message.line > 0;
-        message.line = placed ? first + message.line - 1 : 1;
-        message.column = placed ? message.column : 1;
-        own << message;
+    for (const Message &message : messages) {
+        if (message.pouName.compare(owner, Qt::CaseInsensitive) == 0)
+            own << atTextLine(message);
     }
     return own;
 }

@@ -44,6 +44,9 @@ public:
     // messages of older text are not shown on newer text). A property's messages go to its GET
     // body, or to the header when it has both a GET and a SET (the compiler names both alike).
     [[nodiscard]] std::optional<QList<Message>> messagesAtLines(const QList<Message> &messages) const;
+    // One such message moved to its line and column in the text (the header when its body is
+    // not known); messagesAtLines and the Messages pane's "open the place" both use it.
+    [[nodiscard]] Message atTextLine(Message message) const;
 
 Q_SIGNALS:
     void titleChanged();
@@ -51,6 +54,7 @@ Q_SIGNALS:
     void removed();
 
 private:
+    [[nodiscard]] int firstBodyLine() const; // 0: not one body (a property with GET and SET)
     void apply();
     void followModel(model::PouId id);
 
