@@ -6,6 +6,7 @@
 #include <array>
 #include <string>
 #include <string_view>
+#include <unordered_set>
 
 namespace iec::interp {
 
@@ -178,9 +179,22 @@ constexpr std::string_view kTypeNames[] = {
     "ANY_CHARS",
 };
 
-// Upper-cases an ASCII word; anything else makes it match no table entry.
+constexpr qsizetype kLongestTableWord = 24;
+
+template<size_t N> constexpr bool allFit(const std::string_view (&table)[N])
+{
+    return std::all_of(std::begin(table), std::end(table), [](std::string_view word) {
+        return std::ssize(word) <= kLongestTableWord;
+    });
+}
+static_assert(allFit(kKeywords) && allFit(kIlOperators) && allFit(kTypeNames));
+
+// Upper-cases an ASCII word; anything else, or a word longer than every table entry, makes it
+// match no entry (and a long name costs no allocation).
 std::string upperAscii(QStringView word)
 {
+    if (word.size() > kLongestTableWord)
+        return {};
     std::string out;
     out.reserve(static_cast<size_t>(word.size()));
     for (const QChar c : word) {
@@ -192,9 +206,31 @@ std::string upperAscii(QStringView word)
     return out;
 }
 
-template<size_t N> bool inTable(const std::string_view (&table)[N], const std::string &upper)
+// The tables as hash sets, built once: the lexer looks up every word it reads, and a linear
+// search through them was half the time of reading a large file.
+using WordSet = std::unordered_set<std::string_view>;
+template<size_t N> WordSet setOf(const std::string_view (&table)[N])
 {
-    return std::find(std::begin(table), std::end(table), upper) != std::end(table);
+    return WordSet(std::begin(table), std::end(table));
+}
+
+bool isKeywordUpper(const std::string &upper)
+{
+    static const WordSet keywords = setOf(kKeywords);
+    static const WordSet ilOperators = setOf(kIlOperators);
+    return keywords.contains(upper) || ilOperators.contains(upper);
+}
+
+bool isTypeNameUpper(const std::string &upper)
+{
+    static const WordSet typeNames = setOf(kTypeNames);
+    return typeNames.contains(upper);
+}
+
+bool isIlOperatorUpper(const std::string &upper)
+{
+    static const WordSet ilOperators = setOf(kIlOperators);
+    return ilOperators.contains(upper);
 }
 
 bool isLetter(QChar c)
@@ -353,9 +389,9 @@ private:
             return;
         }
         const std::string upper = upperAscii(name);
-        if (inTable(kKeywords, upper) || inTable(kIlOperators, upper))
+        if (isKeywordUpper(upper))
             push(TokenKind::Keyword, start);
-        else if (inTable(kTypeNames, upper))
+        else if (isTypeNameUpper(upper))
             push(TokenKind::TypeName, start);
         else
             push(TokenKind::Identifier, start);
@@ -612,19 +648,17 @@ std::vector<Token> tokenize(QStringView text)
 
 bool isKeyword(QStringView word)
 {
-    const std::string upper = upperAscii(word);
-    return inTable(kKeywords, upper) || inTable(kIlOperators, upper);
+    return isKeywordUpper(upperAscii(word));
 }
 
 bool isTypeName(QStringView word)
 {
-    return inTable(kTypeNames, upperAscii(word));
+    return isTypeNameUpper(upperAscii(word));
 }
 
 bool isIlOperator(QStringView word)
 {
-    const std::string upper = upperAscii(word);
-    return inTable(kIlOperators, upper);
+    return isIlOperatorUpper(upperAscii(word));
 }
 
 bool hasIdentifierShape(QStringView word)
