@@ -216,10 +216,11 @@ void BuildController::openLocation(const Message &message)
 
 void BuildController::openMemberAt(const Message &message)
 {
-    // "Counter.Add": a method or property of a POU, its lines counted in its body.
-    const qsizetype dot = message.pouName.lastIndexOf(QLatin1Char('.'));
-    const model::Pou *pou = dot > 0 ? m_projectModel.project().findPou(message.pouName.left(dot)) : nullptr;
-    auto *member = pou ? qobject_cast<MemberEditor *>(m_documents.openMember(pou->id, message.pouName.mid(dot + 1))) : nullptr;
+    // "Counter.Add" (a method), "Counter.Count.GET" (a property's accessor): lines counted in
+    // that body. A POU's name has no dot, so the first part is the POU and the second the member.
+    const QStringList parts = message.pouName.split(QLatin1Char('.'));
+    const model::Pou *pou = parts.size() >= 2 ? m_projectModel.project().findPou(parts[0]) : nullptr;
+    auto *member = pou ? qobject_cast<MemberEditor *>(m_documents.openMember(pou->id, parts[1])) : nullptr;
     if (!member)
         return;
     const Message placed = member->atTextLine(message);

@@ -124,17 +124,29 @@ void MemberEditor::followModel(model::PouId id)
     m_shown = text;
 }
 
-int MemberEditor::firstBodyLine() const
+int MemberEditor::bodyLineOf(const QString &codeName) const
 {
     const interp::frontend::MemberBodyLines lines = interp::frontend::memberBodyLines(editor()->toPlainText());
-    if (lines.body > 0)
-        return lines.body;
-    return lines.getter > 0 && lines.setter > 0 ? 0 : std::max(lines.getter, lines.setter);
+    if (codeName.endsWith(QLatin1String(".GET"), Qt::CaseInsensitive))
+        return lines.getter;
+    if (codeName.endsWith(QLatin1String(".SET"), Qt::CaseInsensitive))
+        return lines.setter;
+    return lines.body;
+}
+
+bool MemberEditor::isMine(const QString &codeName) const
+{
+    const QString own = title();
+    if (codeName.compare(own, Qt::CaseInsensitive) == 0)
+        return true;
+    return codeName.size() == own.size() + 4 && codeName.startsWith(own, Qt::CaseInsensitive)
+        && (codeName.endsWith(QLatin1String(".GET"), Qt::CaseInsensitive)
+            || codeName.endsWith(QLatin1String(".SET"), Qt::CaseInsensitive));
 }
 
 Message MemberEditor::atTextLine(Message message) const
 {
-    const int first = firstBodyLine();
+    const int first = bodyLineOf(message.pouName);
     const bool placed = first > 0 && message.line > 0;
     message.line = placed ? first + message.line - 1 : 1;
     message.column = placed ? std::max(message.column, 1) : 1;
@@ -145,11 +157,13 @@ std::optional<QList<Message>> MemberEditor::messagesAtLines(const QList<Message>
 {
     if (editor()->toPlainText() != m_shown)
         return std::nullopt;
-    const QString owner = title();
     QList<Message> own;
     for (const Message &message : messages) {
-        if (message.pouName.compare(owner, Qt::CaseInsensitive) == 0)
-            own << atTextLine(message);
+        if (!isMine(message.pouName))
+            continue;
+        Message placed = atTextLine(message);
+        placed.pouName = title(); // its lines are now the tab's, whichever body it was in
+        own << placed;
     }
     return own;
 }

@@ -39,10 +39,10 @@ public:
     [[nodiscard]] QString name() const { return m_name; }
     [[nodiscard]] QString title() const; // Base.Add
     [[nodiscard]] editors::CodeEditor *editor() const;
-    // The compiler's messages about this member ("Counter.Add", lines counted in its body) moved
-    // to the lines of its text; nullopt when the text is not what the model holds (typed since:
-    // messages of older text are not shown on newer text). A property's messages go to its GET
-    // body, or to the header when it has both a GET and a SET (the compiler names both alike).
+    // The compiler's messages about this member ("Counter.Add", and a property's
+    // "Counter.Count.GET" and "Counter.Count.SET"; lines counted in that body) moved to the lines
+    // of its text; nullopt when the text is not what the model holds (typed since: messages of
+    // older text are not shown on newer text).
     [[nodiscard]] std::optional<QList<Message>> messagesAtLines(const QList<Message> &messages) const;
     // One such message moved to its line and column in the text (the header when its body is
     // not known); messagesAtLines and the Messages pane's "open the place" both use it.
@@ -54,7 +54,9 @@ Q_SIGNALS:
     void removed();
 
 private:
-    [[nodiscard]] int firstBodyLine() const; // 0: not one body (a property with GET and SET)
+    // Where the body a message names starts in the text; 0 when the text has no such body.
+    [[nodiscard]] int bodyLineOf(const QString &codeName) const;
+    [[nodiscard]] bool isMine(const QString &codeName) const;
     void apply();
     void followModel(model::PouId id);
 

@@ -247,6 +247,20 @@ struct Method {
     Body body;
 };
 
+// What messages, faults and the debugger call a method's code: "Counter.Add", and for a
+// property's accessors "Counter.Count.GET" and "Counter.Count.SET", so that a message in a
+// property with both says which of its bodies it is in.
+inline QString methodCodeName(const QString &owner, const QString &name, Method::Role role)
+{
+    const QString member = owner + QLatin1Char('.') + name;
+    switch (role) {
+    case Method::Role::Getter: return member + QLatin1String(".GET");
+    case Method::Role::Setter: return member + QLatin1String(".SET");
+    case Method::Role::Method: break;
+    }
+    return member;
+}
+
 struct Pou {
     PouKind kind = PouKind::Program;
     QString name;

@@ -57,7 +57,7 @@ void Codegen::registerMethods()
             PouInfo info;
             info.ast = &function;
             info.index = static_cast<int>(m_pous.size());
-            info.name = owner->name + QLatin1Char('.') + m.name;
+            info.name = methodCodeName(owner->name, m.name, m.role);
             info.kind = PouKind::Function;
             info.fromLibrary = m_pous[i].fromLibrary;
             info.methodOf = static_cast<int>(i);

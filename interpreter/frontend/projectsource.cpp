@@ -131,7 +131,7 @@ void addCodesysClass(const model::Pou &pou, ast::Pou &result, Diagnostics &diagn
         method.returnType = declared.returnType;
         method.hasBody = m.body.has_value() && !method.isAbstract;
         if (m.body)
-            method.body = lowerBody(*m.body, result, pou.name + QLatin1Char('.') + m.name, diagnostics);
+            method.body = lowerBody(*m.body, result, ast::methodCodeName(pou.name, m.name, method.role), diagnostics);
         result.methods.push_back(std::move(method));
     }
 }

@@ -28,6 +28,8 @@
 #include <QTextCursor>
 #include <QUndoStack>
 
+#include <algorithm>
+
 using namespace iec;
 using namespace iec::app;
 
@@ -112,6 +114,7 @@ private Q_SLOTS:
     void addingAndDeletingAreUndoSteps();
     void onlineTheTextIsOnlyLookedAt();
     void compilerMessagesAreMarkedInTheMember();
+    void aPropertysMessagesGoToTheirAccessor();
     void findInProjectSearchesMembers();
 
 private:
@@ -302,6 +305,49 @@ void TestMemberDocuments::compilerMessagesAreMarkedInTheMember()
     // Mended, the mark goes with the next compile.
     typeReplacing(editor->editor(), QStringLiteral(" + Cuont"), QString());
     QTRY_VERIFY_WITH_TIMEOUT(editor->editor()->diagnostics().isEmpty(), 5000);
+}
+
+namespace {
+
+int lineOf(const editors::CodeEditor *editor, const QString &text)
+{
+    return editor->document()->find(text).blockNumber() + 1;
+}
+
+} // namespace
+
+// A property with both a GET and a SET: the compiler names its bodies Counter.Count.GET and
+// Counter.Count.SET, so each message is marked in its own body and the Messages pane opens it.
+void TestMemberDocuments::aPropertysMessagesGoToTheirAccessor()
+{
+    MainWindow window;
+    window.projectModel().reset(sampleProject());
+    MemberEditor *editor = openFromTree(window, QStringLiteral("Count"));
+    QVERIFY(editor);
+    typeReplacing(editor->editor(), QStringLiteral("Count := n;"), QStringLiteral("Count := n + Bad1;"));
+    typeReplacing(editor->editor(), QStringLiteral("END_GET\n"), QStringLiteral("END_GET\nSET\nn := Count - Bad2;\nEND_SET\n"));
+    QTRY_COMPARE_WITH_TIMEOUT(editor->editor()->diagnostics().size(), 2, 5000);
+    QList<editors::TextDiagnostic> marks = editor->editor()->diagnostics();
+    std::sort(marks.begin(), marks.end(), [](const auto &a, const auto &b) { return a.line < b.line; });
+    QCOMPARE(marks[0].line, lineOf(editor->editor(), QStringLiteral("Bad1")));
+    QCOMPARE(marks[0].column, 14);
+    QVERIFY2(marks[0].message.contains(QStringLiteral("Bad1")), qPrintable(marks[0].message));
+    QCOMPARE(marks[1].line, lineOf(editor->editor(), QStringLiteral("Bad2")));
+    QCOMPARE(marks[1].column, 14);
+    QVERIFY2(marks[1].message.contains(QStringLiteral("Bad2")), qPrintable(marks[1].message));
+    QVERIFY(marks[0].line < marks[1].line);
+    const int setterLine = marks[1].line;
+    window.documents().closeAll();
+    const MessageListModel &messages = window.messagesPane().model();
+    int row = 0;
+    while (row < messages.rowCount() && messages.message(row).pouName != QStringLiteral("Counter.Count.SET"))
+        ++row;
+    QVERIFY(row < messages.rowCount());
+    window.buildController().openLocation(messages.message(row));
+    editor = qobject_cast<MemberEditor *>(window.documents().currentWidget());
+    QVERIFY(editor);
+    QCOMPARE(editor->title(), QStringLiteral("Counter.Count"));
+    QCOMPARE(editor->editor()->textCursor().blockNumber() + 1, setterLine);
 }
 
 void TestMemberDocuments::findInProjectSearchesMembers()
