@@ -219,6 +219,8 @@ void BuildController::openMemberAt(const Message &message)
     // "Counter.Add" (a method), "Counter.Count.GET" (a property's accessor): lines counted in
     // that body. A POU's name has no dot, so the first part is the POU and the second the member.
     const QStringList parts = message.pouName.split(QLatin1Char('.'));
+    if (parts.size() == 1 && m_documents.openInterface(parts[0]))
+        return; // an INTERFACE's message: its tab shows where
     const model::Pou *pou = parts.size() >= 2 ? m_projectModel.project().findPou(parts[0]) : nullptr;
     auto *member = pou ? qobject_cast<MemberEditor *>(m_documents.openMember(pou->id, parts[1])) : nullptr;
     if (!member)

@@ -24,6 +24,7 @@ struct DeclarationRow;
 
 namespace iec::app {
 
+class AddDataTextEditor;
 class MemberEditor;
 class UndoStacks;
 
@@ -74,6 +75,9 @@ public:
     // the model as a body's does; online it is only looked at. (documentareamembers.cpp)
     QWidget *openMember(model::PouId pou, const QString &name);
     [[nodiscard]] MemberEditor *memberEditorFor(model::PouId pou, const QString &name) const;
+    // Opens INTERFACE `name` (CODESYS keeps it in the project's addData) as text in a tab, in the
+    // same way; nullptr when there is no such interface.
+    QWidget *openInterface(const QString &name);
     // Go to definition of `path` (a dotted name) used in the body `from`: a variable of the POU
     // shows its declaration row, a member of a function block instance the row in that FB, a
     // POU opens, a data type opens its editor, an action or transition of the POU opens. False
@@ -141,6 +145,7 @@ private:
     QWidget *createBodyEditor(const model::BodyRef &ref);
     QWidget *createDiagramEditor(const editors::EditorFactory &factory, const model::BodyRef &ref);
     void closeDocument(int index);
+    QWidget *addAddDataTab(AddDataTextEditor *editor); // a member or interface tab, wired
 
     model::ProjectModel &m_projectModel;
     UndoStacks *m_undoStacks;

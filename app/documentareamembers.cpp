@@ -1,8 +1,9 @@
-// The document area's tabs for methods and properties (DocumentArea members kept apart from the
+// The document area's tabs for methods, properties and interfaces (DocumentArea members kept apart from the
 // body editors in documentarea.cpp).
 
 #include "app/documentarea.h"
 
+#include "app/interfaceeditor.h"
 #include "app/membereditor.h"
 #include "app/treeicons.h"
 #include "editors/text/codeeditor.h"
@@ -37,14 +38,33 @@ QWidget *DocumentArea::openMember(model::PouId pou, const QString &name)
                return m.name.compare(name, Qt::CaseInsensitive) == 0;
            }))
         return nullptr;
-    auto *editor = new MemberEditor(m_projectModel, pou, name);
+    return addAddDataTab(new MemberEditor(m_projectModel, pou, name));
+}
+
+QWidget *DocumentArea::openInterface(const QString &name)
+{
+    for (int index = 0; index < count(); ++index) {
+        auto *open = qobject_cast<InterfaceEditor *>(widget(index));
+        if (open && open->name().compare(name, Qt::CaseInsensitive) == 0) {
+            setCurrentWidget(open);
+            return open;
+        }
+    }
+    const QStringList names = interp::frontend::codesysInterfaceNames(m_projectModel.project());
+    if (!names.contains(name, Qt::CaseInsensitive))
+        return nullptr;
+    return addAddDataTab(new InterfaceEditor(m_projectModel, name));
+}
+
+QWidget *DocumentArea::addAddDataTab(AddDataTextEditor *editor)
+{
     editor->setProperty(kWholeTabEditorProperty, true); // online, its text is only looked at
-    connect(editor, &MemberEditor::titleChanged, this, [this, editor] {
+    connect(editor, &AddDataTextEditor::titleChanged, this, [this, editor] {
         if (const int index = indexOf(editor); index >= 0)
             setTabText(index, editor->title());
     });
     // Queued: the editor is inside its own slot when it reports the removal.
-    connect(editor, &MemberEditor::removed, editor, [this, editor] {
+    connect(editor, &AddDataTextEditor::removed, editor, [this, editor] {
         if (const int index = indexOf(editor); index >= 0)
             closeDocument(index);
     }, Qt::QueuedConnection);

@@ -220,6 +220,7 @@ void MainWindow::createMenus()
     m_insertMenu->addAction(m_treeActions->addTransitionAction());
     m_insertMenu->addAction(m_treeActions->addMethodAction());
     m_insertMenu->addAction(m_treeActions->addPropertyAction());
+    m_insertMenu->addAction(m_treeActions->addInterfaceAction());
     m_insertMenu->addAction(m_treeActions->addGlobalListAction());
 
     m_projectMenu = addMenu("projectMenu");
@@ -280,10 +281,12 @@ void MainWindow::createDocks()
     connect(m_projectTree, &ProjectTreeView::openRequested, m_documents, &DocumentArea::openBody);
     connect(m_projectTree, &ProjectTreeView::openDataTypeRequested, m_documents, &DocumentArea::openDataType);
     connect(m_projectTree, &ProjectTreeView::openMemberRequested, m_documents, &DocumentArea::openMember);
+    connect(m_projectTree, &ProjectTreeView::openInterfaceRequested, m_documents, &DocumentArea::openInterface);
     m_treeActions
         = new ProjectTreeActions(*m_projectCommands, *m_globalListCommands, *m_projectModel, *m_projectTree, this);
     connectInstanceDocuments();
     connect(m_treeActions, &ProjectTreeActions::memberCreated, m_documents, &DocumentArea::openMember);
+    connect(m_treeActions, &ProjectTreeActions::interfaceCreated, m_documents, &DocumentArea::openInterface);
     connect(m_treeActions, &ProjectTreeActions::created, this, [this](const model::BodyRef &item) {
         m_projectTree->selectKey(item.part == model::BodyRef::Part::Pou ? ProjectTreeModel::pouKey(item.pou)
                                                                         : ProjectTreeModel::partKey(item));

@@ -26,6 +26,12 @@ bool isPouOrTypeName(const model::Project &project, const QString &name, model::
     return pouClash || project.findDataType(name) != nullptr;
 }
 
+bool isInterfaceName(const model::Project &project, const QString &name, const QString &except = {})
+{
+    return !sameName(name, except)
+        && std::ranges::any_of(interp::frontend::codesysInterfaceNames(project), [&](const QString &n) { return sameName(n, name); });
+}
+
 bool isPartName(const model::Project &project, model::PouId id, const QString &name, const QString &except)
 {
     const model::Pou *pou = project.findPou(id);
@@ -83,6 +89,19 @@ std::optional<QString> NameRules::pouNameError(const model::Project &project, co
         return error;
     if (isPouOrTypeName(project, name, renamed))
         return tr("A POU or data type named \"%1\" exists already.").arg(name);
+    if (isInterfaceName(project, name))
+        return tr("An interface named \"%1\" exists already.").arg(name);
+    return std::nullopt;
+}
+
+std::optional<QString> NameRules::interfaceNameError(const model::Project &project, const QString &name, const QString &renamed)
+{
+    if (auto error = identifierError(name))
+        return error;
+    if (isPouOrTypeName(project, name, {}))
+        return tr("A POU or data type named \"%1\" exists already.").arg(name);
+    if (isInterfaceName(project, name, renamed))
+        return tr("An interface named \"%1\" exists already.").arg(name);
     return std::nullopt;
 }
 
@@ -129,7 +148,7 @@ QString NameRules::uniqueGlobalListName(const model::Project &project, const QSt
 
 QString NameRules::uniquePouName(const model::Project &project, const QString &base)
 {
-    return firstFree(base, [&](const QString &name) { return isPouOrTypeName(project, name, {}); });
+    return firstFree(base, [&](const QString &name) { return isPouOrTypeName(project, name, {}) || isInterfaceName(project, name); });
 }
 
 QString NameRules::uniquePartName(const model::Project &project, model::PouId pou, const QString &base)

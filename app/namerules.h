@@ -36,6 +36,10 @@ public:
     // The same for a method or property of `pou` (they share a namespace).
     [[nodiscard]] static std::optional<QString> memberNameError(
         const model::Project &project, model::PouId pou, const QString &name);
+    // The same for an INTERFACE (CODESYS keeps them in addData): they share the namespace of POUs
+    // and data types. `renamed` is the interface's current name when it is being renamed.
+    [[nodiscard]] static std::optional<QString> interfaceNameError(
+        const model::Project &project, const QString &name, const QString &renamed = {});
     // The same for a global variable list: code writes `List.Variable`, so a list's name is unique
     // among the lists and no POU or data type has it. `renamedKey` is GlobalListRef::key() of
     // the list being renamed.

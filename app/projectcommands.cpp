@@ -8,6 +8,7 @@
 #include "interpreter/frontend/codesysmembers.h"
 #include "model/plcopen/codesysoop.h"
 #include "model/projectmodel.h"
+#include "model/undo/instancecommands.h"
 #include "model/undo/partcommands.h"
 #include "model/undo/poucommands.h"
 
@@ -145,6 +146,28 @@ bool ProjectCommands::removeMember(model::PouId pou, const QString &name)
     if (without == found->addData)
         return false;
     m_stack.push(new model::SetPouAddDataCommand(m_model, pou, without, tr("Delete %1").arg(name)));
+    return true;
+}
+
+bool ProjectCommands::addInterface(const QString &name, QString *error)
+{
+    flushPendingEdits();
+    const model::Project &project = m_model.project();
+    if (const auto problem = NameRules::interfaceNameError(project, name))
+        return fail(error, *problem);
+    const model::plcopen::CodesysInterfaceDefinition empty {name, {}, {}};
+    m_stack.push(new model::SetProjectAddDataCommand(m_model, model::plcopen::addDataWithInterface(project.addData, {}, empty),
+        tr("Add Interface %1").arg(name)));
+    return true;
+}
+
+bool ProjectCommands::removeInterface(const QString &name)
+{
+    flushPendingEdits();
+    const model::AddData without = model::plcopen::addDataWithoutInterface(m_model.project().addData, name);
+    if (without == m_model.project().addData)
+        return false;
+    m_stack.push(new model::SetProjectAddDataCommand(m_model, without, tr("Delete %1").arg(name)));
     return true;
 }
 

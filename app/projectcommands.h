@@ -61,6 +61,10 @@ public:
     // addData), or removes one; one step on the project's undo stack each.
     bool addMember(model::PouId pou, const QString &name, bool property, QString *error = nullptr);
     bool removeMember(model::PouId pou, const QString &name);
+    // Adds an INTERFACE `name` with no methods (CODESYS keeps interfaces in the project's
+    // addData), or removes one; one step on the project's undo stack each.
+    bool addInterface(const QString &name, QString *error = nullptr);
+    bool removeInterface(const QString &name);
 
     // The name an item of the tree shows for `item`; empty when it does not exist.
     [[nodiscard]] QString nameOf(const model::BodyRef &item) const;

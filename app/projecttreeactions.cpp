@@ -30,6 +30,7 @@ ProjectTreeActions::ProjectTreeActions(ProjectCommands &commands, GlobalListComm
     m_addTransition = createAction("addTransitionAction", &ProjectTreeActions::addTransitionInteractive);
     m_addMethod = createAction("addMethodAction", &ProjectTreeActions::addMethodInteractive);
     m_addProperty = createAction("addPropertyAction", &ProjectTreeActions::addPropertyInteractive);
+    m_addInterface = createAction("addInterfaceAction", &ProjectTreeActions::addInterfaceInteractive);
     m_addGlobalList = new QAction(this);
     m_addGlobalList->setObjectName(QStringLiteral("addGlobalListAction"));
     connect(m_addGlobalList, &QAction::triggered, this, [this] { addGlobalListInteractive(); });
@@ -76,6 +77,7 @@ void ProjectTreeActions::addTo(QMenu *menu) const
     menu->addAction(m_addTransition);
     menu->addAction(m_addMethod);
     menu->addAction(m_addProperty);
+    menu->addAction(m_addInterface);
     menu->addAction(m_addGlobalList);
     menu->addAction(m_taskConfiguration);
     menu->addSeparator();
@@ -91,6 +93,7 @@ void ProjectTreeActions::retranslate()
     m_addTransition->setText(tr("Add &Transition..."));
     m_addMethod->setText(tr("Add &Method..."));
     m_addProperty->setText(tr("Add Propert&y..."));
+    m_addInterface->setText(tr("Add &Interface..."));
     m_addGlobalList->setText(tr("Add &Global Variable List..."));
     m_taskConfiguration->setText(tr("Task &Configuration"));
     m_rename->setText(tr("&Rename..."));
@@ -116,6 +119,12 @@ QString ProjectTreeActions::currentMember() const
     return treeModel && treeModel->isMember(m_tree.currentIndex()) ? treeModel->name(m_tree.currentIndex()) : QString();
 }
 
+QString ProjectTreeActions::currentInterface() const
+{
+    const auto *treeModel = qobject_cast<const ProjectTreeModel *>(m_tree.model());
+    return treeModel && treeModel->isInterface(m_tree.currentIndex()) ? treeModel->name(m_tree.currentIndex()) : QString();
+}
+
 std::optional<editors::GlobalListRef> ProjectTreeActions::currentGlobalList() const
 {
     const auto *treeModel = qobject_cast<const ProjectTreeModel *>(m_tree.model());
@@ -136,11 +145,12 @@ void ProjectTreeActions::updateEnabled()
     const bool mayHaveMembers = owner && owner->kind == model::PouKind::FunctionBlock;
     m_addMethod->setEnabled(mayHaveMembers && !m_locked);
     m_addProperty->setEnabled(mayHaveMembers && !m_locked);
+    m_addInterface->setEnabled(!m_locked);
     m_addGlobalList->setEnabled(!m_locked);
     const bool named = item.has_value() || currentGlobalList().has_value();
     for (QAction *action : {m_rename, m_duplicate})
         action->setEnabled(named && !m_locked);
-    m_delete->setEnabled((named || !currentMember().isEmpty()) && !m_locked);
+    m_delete->setEnabled((named || !currentMember().isEmpty() || !currentInterface().isEmpty()) && !m_locked);
 }
 
 void ProjectTreeActions::setLocked(bool locked)
@@ -322,6 +332,24 @@ void ProjectTreeActions::renameInPlace(const BodyRef &item, const QString &newNa
     if (!m_commands.rename(item, newName, &error))
         QMessageBox::warning(m_dialogParent, tr("Rename %1").arg(m_commands.nameOf(item)), error);
 }
+void ProjectTreeActions::addInterfaceInteractive()
+{
+    if (refuseWhenLocked())
+        return;
+    const model::Project &project = m_model.project();
+    const QString suggested = NameRules::firstFree(QStringLiteral("I_Interface"),
+        [&](const QString &name) { return NameRules::interfaceNameError(project, name).has_value(); });
+    RenameDialog dialog(suggested, [&](const QString &name) { return NameRules::interfaceNameError(project, name); },
+        m_dialogParent);
+    dialog.setWindowTitle(tr("Add Interface"));
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    QString error;
+    if (m_commands.addInterface(dialog.newName(), &error))
+        Q_EMIT interfaceCreated(dialog.newName());
+    else
+        QMessageBox::warning(m_dialogParent, dialog.windowTitle(), error);
+}
 
 void ProjectTreeActions::deleteInteractive()
 {
@@ -330,9 +358,10 @@ void ProjectTreeActions::deleteInteractive()
     const std::optional<BodyRef> item = currentItem();
     const auto list = currentGlobalList();
     const QString member = currentMember();
-    if (!item && !list && member.isEmpty())
+    const QString interface = currentInterface();
+    if (!item && !list && member.isEmpty() && interface.isEmpty())
         return;
-    const QString name = item ? m_commands.nameOf(*item) : list ? list->displayName() : member;
+    const QString name = item ? m_commands.nameOf(*item) : list ? list->displayName() : !member.isEmpty() ? member : interface;
     const auto answer = QMessageBox::question(m_dialogParent, tr("Delete"),
         tr("Delete %1? Edit → Undo brings it back.").arg(name), QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
     if (answer != QMessageBox::Yes)
@@ -341,6 +370,8 @@ void ProjectTreeActions::deleteInteractive()
         m_commands.remove(*item);
     else if (list)
         m_lists.remove(*list);
+    else if (!interface.isEmpty())
+        m_commands.removeInterface(interface);
     else if (const model::Pou *pou = currentPou())
         m_commands.removeMember(pou->id, member);
 }

@@ -35,6 +35,7 @@ public:
     [[nodiscard]] QAction *addTransitionAction() const { return m_addTransition; }
     [[nodiscard]] QAction *addMethodAction() const { return m_addMethod; }
     [[nodiscard]] QAction *addPropertyAction() const { return m_addProperty; }
+    [[nodiscard]] QAction *addInterfaceAction() const { return m_addInterface; }
     [[nodiscard]] QAction *addGlobalListAction() const { return m_addGlobalList; }
     [[nodiscard]] QAction *taskConfigurationAction() const { return m_taskConfiguration; }
     [[nodiscard]] QAction *renameAction() const { return m_rename; }
@@ -51,6 +52,7 @@ public Q_SLOTS:
     void addTransitionInteractive();
     void addMethodInteractive();
     void addPropertyInteractive();
+    void addInterfaceInteractive();
     // Asks for the name of a new global variable list in `owner` (by default where
     // GlobalListCommands puts it) and adds it.
     void addGlobalListInteractive(const std::optional<iec::editors::GlobalListRef> &owner = std::nullopt);
@@ -68,6 +70,7 @@ Q_SIGNALS:
     void created(const iec::model::BodyRef &item);
     // A method or property was added: the window opens it.
     void memberCreated(iec::model::PouId pou, const QString &name);
+    void interfaceCreated(const QString &name);
     // A global variable list was created (added or duplicated): the window opens it.
     void globalListCreated(const iec::editors::GlobalListRef &list);
     // The task configuration of `configuration` is to be shown.
@@ -83,6 +86,7 @@ private:
     [[nodiscard]] const model::Pou *currentPou() const;
     // The method or property the current node is; empty for other nodes.
     [[nodiscard]] QString currentMember() const;
+    [[nodiscard]] QString currentInterface() const;
     void updateEnabled();
     bool refuseWhenLocked();
     void showContextMenu(const QPoint &position);
@@ -100,6 +104,7 @@ private:
     QAction *m_addTransition = nullptr;
     QAction *m_addMethod = nullptr;
     QAction *m_addProperty = nullptr;
+    QAction *m_addInterface = nullptr;
     QAction *m_addGlobalList = nullptr;
     QAction *m_taskConfiguration = nullptr;
     QAction *m_rename = nullptr;

@@ -24,6 +24,7 @@ ProjectTreeModel::ProjectTreeModel(model::ProjectModel &projectModel, QObject *p
     connect(&projectModel, &model::ProjectModel::dataTypesChanged, this, refresh);
     connect(&projectModel, &model::ProjectModel::instancesChanged, this, refresh);
     connect(&projectModel, &model::ProjectModel::pouAddDataChanged, this, refresh);
+    connect(&projectModel, &model::ProjectModel::projectAddDataChanged, this, refresh);
     rebuild();
 }
 
@@ -35,6 +36,11 @@ QString ProjectTreeModel::folderKey(Folder folder)
 QString ProjectTreeModel::pouKey(model::PouId id)
 {
     return QStringLiteral("pou:%1").arg(id.value);
+}
+
+QString ProjectTreeModel::interfaceKey(const QString &name)
+{
+    return QStringLiteral("interface:%1").arg(name.toLower());
 }
 
 QString ProjectTreeModel::memberKey(model::PouId pou, const QString &name)
@@ -136,6 +142,12 @@ void ProjectTreeModel::rebuild()
                                                        : functions;
         addPou(folder, pou);
     }
+    // Shown when there are interfaces: most IEC projects have none (Add Interface makes one).
+    if (const QStringList names = interp::frontend::codesysInterfaceNames(project); !names.isEmpty()) {
+        const int interfaces = addNode({.folder = Folder::Interfaces, .key = folderKey(Folder::Interfaces)});
+        for (const QString &name : names)
+            addNode({.kind = NodeKind::Interface, .key = interfaceKey(name), .name = name, .parent = interfaces});
+    }
     const int dataTypes = addNode({.folder = Folder::DataTypes, .key = folderKey(Folder::DataTypes)});
     for (const model::DataTypeDecl &type : project.types.dataTypes)
         addNode({.kind = NodeKind::DataType, .key = QStringLiteral("type:%1").arg(type.name.toLower()),
@@ -193,6 +205,8 @@ QString ProjectTreeModel::displayText(const Node &node) const
             return tr("Function Blocks");
         case Folder::Functions:
             return tr("Functions");
+        case Folder::Interfaces:
+            return tr("Interfaces");
         case Folder::DataTypes:
             return tr("Data Types");
         case Folder::GlobalVariables:
@@ -217,6 +231,8 @@ QString ProjectTreeModel::displayText(const Node &node) const
     }
     if (node.kind == NodeKind::Member)
         return node.property ? tr("%1 (PROPERTY)").arg(node.name) : tr("%1 (METHOD)").arg(node.name);
+    if (node.kind == NodeKind::Interface)
+        return tr("%1 (ITF)").arg(node.name);
     return node.name;
 }
 
@@ -235,6 +251,8 @@ QVariant ProjectTreeModel::data(const QModelIndex &index, int role) const
             return tr("%1, written in %2").arg(item->name, languageName(item->language));
         if (item->kind == NodeKind::Member)
             return tr("Edited as text: METHOD ... END_METHOD or PROPERTY ... END_PROPERTY");
+        if (item->kind == NodeKind::Interface)
+            return tr("Edited as text: INTERFACE ... END_INTERFACE");
         return {};
     case Qt::DecorationRole:
         switch (item->kind) {
@@ -310,6 +328,12 @@ std::optional<BodyRef> ProjectTreeModel::bodyRef(const QModelIndex &index) const
     default:
         return std::nullopt;
     }
+}
+
+bool ProjectTreeModel::isInterface(const QModelIndex &index) const
+{
+    const Node *item = node(index);
+    return item && item->kind == NodeKind::Interface;
 }
 
 bool ProjectTreeModel::isMember(const QModelIndex &index) const

@@ -26,9 +26,11 @@ class ProjectTreeModel : public QAbstractItemModel
     Q_OBJECT
 
 public:
-    // Member: a method or property of a POU (CODESYS keeps them in its addData).
-    enum class NodeKind { Folder, Pou, Action, Transition, DataType, GlobalVarList, Configuration, Resource, Task, Member };
-    enum class Folder { Programs, FunctionBlocks, Functions, DataTypes, GlobalVariables, Configurations };
+    // Member: a method or property of a POU; Interface: an INTERFACE of the project (CODESYS keeps
+    // both in addData).
+    enum class NodeKind { Folder, Pou, Action, Transition, DataType, GlobalVarList, Configuration, Resource, Task, Member, Interface };
+    // In the order of their keys (kept across versions), not of the tree.
+    enum class Folder { Programs, FunctionBlocks, Functions, DataTypes, GlobalVariables, Configurations, Interfaces };
     enum Role { KeyRole = Qt::UserRole + 1, NodeKindRole };
 
     explicit ProjectTreeModel(model::ProjectModel &projectModel, QObject *parent = nullptr);
@@ -41,6 +43,8 @@ public:
     [[nodiscard]] model::PouId pouId(const QModelIndex &index) const;
     // Whether the node is a method or property: its name() is the member's, pouId() its POU.
     [[nodiscard]] bool isMember(const QModelIndex &index) const;
+    // Whether the node is an INTERFACE: its name() is the interface's.
+    [[nodiscard]] bool isInterface(const QModelIndex &index) const;
     // The global variable list a node shows; nullopt for other nodes.
     [[nodiscard]] std::optional<editors::GlobalListRef> globalList(const QModelIndex &index) const;
     // The configuration a configuration, resource or task node belongs to; empty for other nodes.
@@ -62,6 +66,7 @@ public:
     static QString partKey(const model::BodyRef &ref);
     static QString globalListKey(const editors::GlobalListRef &list);
     static QString memberKey(model::PouId pou, const QString &name);
+    static QString interfaceKey(const QString &name);
 
 Q_SIGNALS:
     void renameRequested(const iec::model::BodyRef &item, const QString &newName);

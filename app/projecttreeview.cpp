@@ -23,6 +23,8 @@ ProjectTreeView::ProjectTreeView(QWidget *parent)
             Q_EMIT openRequested(*body);
         else if (m_model->isMember(index))
             Q_EMIT openMemberRequested(m_model->pouId(index), m_model->name(index));
+        else if (m_model->isInterface(index))
+            Q_EMIT openInterfaceRequested(m_model->name(index));
         else if (m_model->nodeKind(index) == ProjectTreeModel::NodeKind::DataType)
             Q_EMIT openDataTypeRequested(m_model->name(index));
         else if (const auto list = m_model->globalList(index))

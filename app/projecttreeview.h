@@ -29,6 +29,7 @@ Q_SIGNALS:
     void openDataTypeRequested(const QString &typeName);
     // A method or property of a POU was activated.
     void openMemberRequested(iec::model::PouId pou, const QString &name);
+    void openInterfaceRequested(const QString &name);
     // A global variable list was activated.
     void openGlobalListRequested(const iec::editors::GlobalListRef &list);
     // A configuration, one of its resources or tasks was activated: its editor opens there.

@@ -99,6 +99,8 @@ QIcon nodeIcon(ProjectTreeModel::NodeKind kind)
         return style->standardIcon(QStyle::SP_DriveHDIcon);
     case ProjectTreeModel::NodeKind::Task:
         return style->standardIcon(QStyle::SP_BrowserReload);
+    case ProjectTreeModel::NodeKind::Interface:
+        return style->standardIcon(QStyle::SP_FileDialogInfoView);
     default:
         return {};
     }

@@ -247,6 +247,16 @@ bool ProjectModel::setInstances(const Instances &instances)
     return true;
 }
 
+bool ProjectModel::setProjectAddData(const AddData &addData)
+{
+    if (m_project.addData == addData)
+        return false;
+    m_project.addData = addData;
+    touch();
+    Q_EMIT projectAddDataChanged();
+    return true;
+}
+
 // ---- declarations -------------------------------------------------------------------------
 
 bool ProjectModel::addVariable(PouId id, VarListKind kind, Variable variable, int index)

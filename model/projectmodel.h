@@ -58,6 +58,9 @@ public:
     // the pouInstance typeNames of every task that runs it).
     bool setInstances(const Instances &instances);
 
+    // ---- the project's own addData (where CODESYS keeps INTERFACEs). Emits projectAddDataChanged.
+    bool setProjectAddData(const AddData &addData);
+
     // ---- declarations of a POU
     // Adds to the first var list of that kind (a new list when there is none) at `index`.
     bool addVariable(PouId pou, VarListKind kind, Variable variable, int index = -1);
@@ -111,6 +114,7 @@ Q_SIGNALS:
     void pouPartsChanged(iec::model::PouId id); // actions or transitions added, removed, renamed
     void dataTypesChanged();
     void instancesChanged();
+    void projectAddDataChanged();
     void variablesChanged(iec::model::PouId id);
     void pouAddDataChanged(iec::model::PouId id);
     void bodyTextChanged(const iec::model::BodyRef &ref);

@@ -115,6 +115,10 @@
             <source>This function block has a method or property named "%1" already.</source>
             <translation>Dieser Funktionsbaustein hat bereits eine Methode oder Eigenschaft namens „%1“.</translation>
         </message>
+        <message>
+            <source>An interface named "%1" exists already.</source>
+            <translation>Eine Schnittstelle namens „%1“ gibt es bereits.</translation>
+        </message>
     </context>
     <context>
         <name>ProjectCommands</name>
@@ -149,6 +153,10 @@
         <message>
             <source>Delete %1</source>
             <translation>%1 löschen</translation>
+        </message>
+        <message>
+            <source>Add Interface %1</source>
+            <translation>Schnittstelle %1 hinzufügen</translation>
         </message>
     </context>
     <context>
@@ -1293,7 +1301,7 @@ Automatisch gespeichert: %2</translation>
         </message>
         <message>
             <source>D&amp;uplicate</source>
-            <translation>D&amp;uplizieren</translation>
+            <translation>Dupli&amp;zieren</translation>
         </message>
         <message>
             <source>Add POU</source>
@@ -1338,6 +1346,14 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>Add Method</source>
             <translation>Methode hinzufügen</translation>
+        </message>
+        <message>
+            <source>Add &amp;Interface...</source>
+            <translation>&amp;Schnittstelle hinzufügen...</translation>
+        </message>
+        <message>
+            <source>Add Interface</source>
+            <translation>Schnittstelle hinzufügen</translation>
         </message>
     </context>
     <context>
@@ -1417,6 +1433,18 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>Edited as text: METHOD ... END_METHOD or PROPERTY ... END_PROPERTY</source>
             <translation>Als Text bearbeitet: METHOD ... END_METHOD oder PROPERTY ... END_PROPERTY</translation>
+        </message>
+        <message>
+            <source>Interfaces</source>
+            <translation>Schnittstellen</translation>
+        </message>
+        <message>
+            <source>%1 (ITF)</source>
+            <translation>%1 (ITF)</translation>
+        </message>
+        <message>
+            <source>Edited as text: INTERFACE ... END_INTERFACE</source>
+            <translation>Als Text bearbeitet: INTERFACE ... END_INTERFACE</translation>
         </message>
     </context>
     <context>
@@ -6440,6 +6468,26 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>The text holds the control character U+%1, which a project file cannot keep; remove it.</source>
             <translation>Der Text enthält das Steuerzeichen U+%1, das eine Projektdatei nicht speichern kann; entfernen Sie es.</translation>
+        </message>
+        <message>
+            <source>%1 must implement the method %2 of %3.</source>
+            <translation>%1 muss die Methode %2 von %3 implementieren.</translation>
+        </message>
+        <message>
+            <source>%1 must implement the GET of the property %2 of %3.</source>
+            <translation>%1 muss das GET der Eigenschaft %2 von %3 implementieren.</translation>
+        </message>
+        <message>
+            <source>%1 must implement the SET of the property %2 of %3.</source>
+            <translation>%1 muss das SET der Eigenschaft %2 von %3 implementieren.</translation>
+        </message>
+        <message>
+            <source>%1 implements %2, which is no interface of the project.</source>
+            <translation>%1 implementiert %2, doch das ist keine Schnittstelle des Projekts.</translation>
+        </message>
+        <message>
+            <source>This text must be one INTERFACE ... END_INTERFACE and nothing else.</source>
+            <translation>Dieser Text muss genau ein INTERFACE ... END_INTERFACE sein, sonst nichts.</translation>
         </message>
     </context>
     <context>

@@ -114,6 +114,10 @@
             <source>This function block has a method or property named "%1" already.</source>
             <translation>该功能块已有名为“%1”的方法或属性。</translation>
         </message>
+        <message>
+            <source>An interface named "%1" exists already.</source>
+            <translation>名为“%1”的接口已存在。</translation>
+        </message>
     </context>
     <context>
         <name>ProjectCommands</name>
@@ -148,6 +152,10 @@
         <message>
             <source>Delete %1</source>
             <translation>删除 %1</translation>
+        </message>
+        <message>
+            <source>Add Interface %1</source>
+            <translation>添加接口 %1</translation>
         </message>
     </context>
     <context>
@@ -1338,6 +1346,14 @@ Autosaved: %2</source>
             <source>Add Method</source>
             <translation>添加方法</translation>
         </message>
+        <message>
+            <source>Add &amp;Interface...</source>
+            <translation>添加接口(&amp;I)...</translation>
+        </message>
+        <message>
+            <source>Add Interface</source>
+            <translation>添加接口</translation>
+        </message>
     </context>
     <context>
         <name>iec::app::ProjectTreeModel</name>
@@ -1416,6 +1432,18 @@ Autosaved: %2</source>
         <message>
             <source>Edited as text: METHOD ... END_METHOD or PROPERTY ... END_PROPERTY</source>
             <translation>以文本编辑：METHOD ... END_METHOD 或 PROPERTY ... END_PROPERTY</translation>
+        </message>
+        <message>
+            <source>Interfaces</source>
+            <translation>接口</translation>
+        </message>
+        <message>
+            <source>%1 (ITF)</source>
+            <translation>%1 (ITF)</translation>
+        </message>
+        <message>
+            <source>Edited as text: INTERFACE ... END_INTERFACE</source>
+            <translation>以文本编辑：INTERFACE ... END_INTERFACE</translation>
         </message>
     </context>
     <context>
@@ -6434,6 +6462,26 @@ Autosaved: %2</source>
         <message>
             <source>The text holds the control character U+%1, which a project file cannot keep; remove it.</source>
             <translation>文本中含有控制字符 U+%1，项目文件无法保存它；请将其删除。</translation>
+        </message>
+        <message>
+            <source>%1 must implement the method %2 of %3.</source>
+            <translation>%1 必须实现 %3 的方法 %2。</translation>
+        </message>
+        <message>
+            <source>%1 must implement the GET of the property %2 of %3.</source>
+            <translation>%1 必须实现 %3 的属性 %2 的 GET。</translation>
+        </message>
+        <message>
+            <source>%1 must implement the SET of the property %2 of %3.</source>
+            <translation>%1 必须实现 %3 的属性 %2 的 SET。</translation>
+        </message>
+        <message>
+            <source>%1 implements %2, which is no interface of the project.</source>
+            <translation>%1 实现了 %2，但它不是本项目中的接口。</translation>
+        </message>
+        <message>
+            <source>This text must be one INTERFACE ... END_INTERFACE and nothing else.</source>
+            <translation>此文本必须恰好是一个 INTERFACE ... END_INTERFACE，不能有其他内容。</translation>
         </message>
     </context>
     <context>

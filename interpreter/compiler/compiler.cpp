@@ -306,6 +306,7 @@ std::shared_ptr<Module> Codegen::run(const std::vector<const CompilationUnit *> 
     if (util)
         collectPous(utilLibrary(), true);
     registerMethods();
+    checkImplementations();
     allocate(8, 8); // offset 0 is never a variable
     reserveProcessImage(units);
 

@@ -14,7 +14,9 @@
 #include "interpreter/compiler/typeutil.h"
 
 #include <QCoreApplication>
+#include <QSet>
 
+#include <algorithm>
 #include <functional>
 
 namespace iec::interp::detail {
@@ -70,6 +72,46 @@ void Codegen::registerMethods()
             }
             m_pous[i].methods.insert(k, info.index);
             m_pous.push_back(info);
+        }
+    }
+}
+
+// A function block that IMPLEMENTS an interface has every method and property accessor the
+// interface (and the interfaces it extends) declares, itself or through its base, as CODESYS
+// requires; an ABSTRACT block may leave them to the blocks that extend it.
+void Codegen::checkImplementations()
+{
+    for (const PouInfo &block : m_pous) {
+        const Pou *a = block.ast;
+        if (!a || block.kind != PouKind::FunctionBlock || block.fromLibrary || a->implements.isEmpty())
+            continue;
+        m_pouName = block.name;
+        QSet<int> seen;
+        std::function<void(int, int)> check = [&](int itf, int depth) {
+            if (itf < 0 || depth > 32 || seen.contains(itf) || m_pous[size_t(itf)].kind != PouKind::Interface || a->isAbstract)
+                return;
+            seen.insert(itf);
+            QList<int> prototypes = m_pous[size_t(itf)].methods.values();
+            std::sort(prototypes.begin(), prototypes.end()); // as declared, whatever the hash's order
+            for (const int index : prototypes) {
+                const Method *prototype = m_pous[size_t(index)].method;
+                if (!prototype || findMethod(block.index, prototype->name, prototype->role) >= 0)
+                    continue;
+                const QString itfName = m_pous[size_t(itf)].name;
+                error(a->location, prototype->role == Method::Role::Method
+                        ? QCoreApplication::translate("iec::interp::Compiler", "%1 must implement the method %2 of %3.").arg(a->name, prototype->name, itfName)
+                        : prototype->role == Method::Role::Getter
+                        ? QCoreApplication::translate("iec::interp::Compiler", "%1 must implement the GET of the property %2 of %3.").arg(a->name, prototype->name, itfName)
+                        : QCoreApplication::translate("iec::interp::Compiler", "%1 must implement the SET of the property %2 of %3.").arg(a->name, prototype->name, itfName));
+            }
+            for (const QString &parent : m_pous[size_t(itf)].ast->implements)
+                check(m_pouIndex.value(key(parent), -1), depth + 1);
+        };
+        for (const QString &itf : a->implements) {
+            const int index = m_pouIndex.value(key(itf), -1);
+            if (index < 0 || m_pous[size_t(index)].kind != PouKind::Interface)
+                error(a->location, QCoreApplication::translate("iec::interp::Compiler", "%1 implements %2, which is no interface of the project.").arg(a->name, itf));
+            check(index, 0);
         }
     }
 }

@@ -221,23 +221,48 @@ QString printCodesysMember(const model::Pou &pou, const QString &name, bool *edi
     return text;
 }
 
+namespace {
+
+QString printInterface(const model::plcopen::CodesysInterface &itf)
+{
+    QStringList bases = itf.definition.implements;
+    if (!itf.definition.extends.isEmpty())
+        bases.prepend(itf.definition.extends);
+    QString text = QStringLiteral("INTERFACE ") + itf.name;
+    if (!bases.isEmpty())
+        text += QStringLiteral(" EXTENDS ") + bases.join(QStringLiteral(", "));
+    text += QLatin1Char('\n');
+    bool textual = true;
+    for (const CodesysMemberSummary &member : membersOf(itf.definition))
+        text += printMember(itf.definition, itf.name, member.name, textual);
+    return text + QStringLiteral("END_INTERFACE\n");
+}
+
+} // namespace
+
 QString printCodesysInterfaces(const model::Project &project)
 {
     QString text;
-    for (const model::plcopen::CodesysInterface &itf : model::plcopen::readCodesysInterfaces(project)) {
-        QStringList bases = itf.definition.implements;
-        if (!itf.definition.extends.isEmpty())
-            bases.prepend(itf.definition.extends);
-        text += QStringLiteral("INTERFACE ") + itf.name;
-        if (!bases.isEmpty())
-            text += QStringLiteral(" EXTENDS ") + bases.join(QStringLiteral(", "));
-        text += QLatin1Char('\n');
-        bool textual = true;
-        for (const CodesysMemberSummary &member : membersOf(itf.definition))
-            text += printMember(itf.definition, itf.name, member.name, textual);
-        text += QStringLiteral("END_INTERFACE\n");
-    }
+    for (const model::plcopen::CodesysInterface &itf : model::plcopen::readCodesysInterfaces(project))
+        text += printInterface(itf);
     return text;
+}
+
+QStringList codesysInterfaceNames(const model::Project &project)
+{
+    QStringList names;
+    for (const model::plcopen::CodesysInterface &itf : model::plcopen::readCodesysInterfaces(project))
+        names << itf.name;
+    return names;
+}
+
+QString printCodesysInterface(const model::Project &project, const QString &name)
+{
+    for (const model::plcopen::CodesysInterface &itf : model::plcopen::readCodesysInterfaces(project)) {
+        if (itf.name.compare(name, Qt::CaseInsensitive) == 0)
+            return printInterface(itf);
+    }
+    return {};
 }
 
 MemberBodyLines memberBodyLines(QStringView text)

@@ -7,6 +7,7 @@
 #include "model/project.h"
 
 #include <QString>
+#include <QStringList>
 #include <QStringView>
 
 #include <optional>
@@ -37,6 +38,9 @@ QString printCodesysMember(const model::Pou &pou, const QString &name, bool *edi
 // Every INTERFACE the project keeps in CODESYS's addData, as INTERFACE Name [EXTENDS ...] with its
 // prototypes and END_INTERFACE.
 QString printCodesysInterfaces(const model::Project &project);
+// Their names, in the order they stand; one of them as text (empty when there is none).
+QStringList codesysInterfaceNames(const model::Project &project);
+QString printCodesysInterface(const model::Project &project, const QString &name);
 
 struct CodesysMemberText {
     std::optional<model::plcopen::CodesysMemberDefinition> definition; // none after an error

@@ -398,15 +398,20 @@ void addObjectOrientation(model::Pou &result, const ast::Pou &pou, const PouText
             = model::plcopen::addDataWithInheritance(result.pouInterface->addData, pou.extends, pou.implements);
 }
 
+model::plcopen::CodesysInterfaceDefinition interfaceDefinition(const ast::Pou &pou, const PouTexts &texts)
+{
+    model::plcopen::CodesysInterfaceDefinition definition {pou.name, pou.implements, {}};
+    for (const QString &text : texts.members) {
+        if (const CodesysMemberText read = readCodesysMemberText(text, pou.name); read.definition)
+            definition.members.push_back(*read.definition);
+    }
+    return definition;
+}
+
 // An INTERFACE goes where CODESYS keeps it: an entry of the project's addData.
 model::AddData interfaceAddData(const model::AddData &addData, const ast::Pou &pou, const PouTexts &texts)
 {
-    std::vector<model::plcopen::CodesysMemberDefinition> prototypes;
-    for (const QString &text : texts.members) {
-        if (const CodesysMemberText read = readCodesysMemberText(text, pou.name); read.definition)
-            prototypes.push_back(*read.definition);
-    }
-    return model::plcopen::addDataWithInterface(addData, pou.name, pou.implements, prototypes);
+    return model::plcopen::addDataWithInterface(addData, pou.name, interfaceDefinition(pou, texts));
 }
 
 model::Pou toModel(const ast::Pou &pou, const PouTexts &texts, Diagnostics &diagnostics)
@@ -486,6 +491,26 @@ void reportUnstorableCharacters(QStringView text, Diagnostics &diagnostics)
             ++column;
         }
     }
+}
+
+InterfaceText readInterfaceText(QStringView text)
+{
+    InterfaceText result;
+    reportUnstorableCharacters(text, result.diagnostics);
+    ast::CompilationUnit unit;
+    runOnCompilerStack([&] { unit = parseUnit(text, result.diagnostics); });
+    if (result.diagnostics.hasErrors())
+        return result;
+    const bool one = unit.pous.size() == 1 && unit.pous.front().kind == ast::PouKind::Interface && unit.types.empty()
+        && unit.configurations.empty() && unit.globals.empty();
+    if (!one) {
+        result.diagnostics.error({}, {1, 1, -1, -1},
+            QCoreApplication::translate("iec::interp::Compiler", "This text must be one INTERFACE ... END_INTERFACE and nothing else."));
+        return result;
+    }
+    const std::vector<PouTexts> texts = allPouTexts(text);
+    result.definition = interfaceDefinition(unit.pous.front(), texts.empty() ? PouTexts {} : texts.front());
+    return result;
 }
 
 TextReadResult readIecText(QStringView text, const QString &projectName)

@@ -3,9 +3,12 @@
 #include "interpreter/compiler/ast.h"
 #include "interpreter/compiler/diagnostics.h"
 
+#include "model/plcopen/codesysoop.h"
 #include "model/project.h"
 
 #include <QStringView>
+
+#include <optional>
 
 // Reads IEC 61131-3 text (.st: TYPE, PROGRAM, FUNCTION_BLOCK, FUNCTION, CONFIGURATION ... as the
 // parser understands it) into the project model. Declarations become model values; ST and IL
@@ -20,6 +23,15 @@ struct TextReadResult {
 
 // `projectName` becomes contentHeader/@name. With parse errors the project holds what was read.
 TextReadResult readIecText(QStringView text, const QString &projectName);
+
+struct InterfaceText {
+    std::optional<model::plcopen::CodesysInterfaceDefinition> definition; // none after an error
+    Diagnostics diagnostics; // at lines and columns of the text
+};
+
+// Reads one INTERFACE Name [EXTENDS ...] with its METHOD and PROPERTY prototypes and
+// END_INTERFACE (the IDE's interface tab); anything else in the text is an error.
+InterfaceText readInterfaceText(QStringView text);
 
 // Declarations the parser read, as model values; what the model cannot hold is a warning.
 std::vector<model::VarList> varListsFromAst(

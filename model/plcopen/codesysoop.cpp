@@ -264,6 +264,54 @@ template<class Edit> bool editMemberEntry(AddData &addData, const QString &name,
     return false;
 }
 
+// Calls `edit(entry, root, interface)` for the interface entry holding INTERFACE `name`; false
+// when there is none.
+template<class Edit> bool editInterfaceEntry(AddData &addData, const QString &name, Edit edit)
+{
+    for (AddDataEntry &e : addData) {
+        if (e.name != QLatin1String(kInterface))
+            continue;
+        pugi::xml_document document;
+        const QByteArray wrapped = "<r>" + e.content.toUtf8() + "</r>";
+        if (!document.load_buffer(wrapped.constData(), std::size_t(wrapped.size()), pugi::parse_default | pugi::parse_ws_pcdata_single))
+            continue;
+        const pugi::xml_node root = document.first_child();
+        for (pugi::xml_node n = root.first_child(); n; n = n.next_sibling()) {
+            if (n.type() == pugi::node_element && hasLocalName(n, "Interface")
+                && QString::fromUtf8(n.attribute("name").value()).compare(name, Qt::CaseInsensitive) == 0) {
+                edit(e, root, n);
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+// An interface's content: its own addData with the interfaces it extends and its prototypes.
+void appendInterfaceContent(pugi::xml_node itf, const CodesysInterfaceDefinition &definition)
+{
+    pugi::xml_node own = itf.append_child("addData");
+    if (!definition.extends.isEmpty()) {
+        pugi::xml_node entry = own.append_child("data");
+        entry.append_attribute("name").set_value(kInheritance);
+        entry.append_attribute("handleUnknown").set_value("implementation");
+        pugi::xml_node inheritance = entry.append_child("Inheritance");
+        for (const QString &base : definition.extends)
+            appendText(inheritance.append_child("Extends"), base);
+    }
+    for (CodesysMemberDefinition prototype : definition.members) {
+        prototype.body.reset();
+        for (std::optional<CodesysMemberDefinition::Accessor> *accessor : {&prototype.getter, &prototype.setter}) {
+            if (*accessor)
+                (*accessor)->body.reset();
+        }
+        pugi::xml_node entry = own.append_child("data");
+        entry.append_attribute("name").set_value(prototype.property ? kProperty : kMethod);
+        entry.append_attribute("handleUnknown").set_value("implementation");
+        insertMember(entry, {}, prototype);
+    }
+}
+
 } // namespace
 
 AddData addDataWithMember(const AddData &addData, const QString &name, const CodesysMemberDefinition &member)
@@ -312,42 +360,48 @@ AddData addDataWithInheritance(const AddData &addData, const QString &extends, c
     return result;
 }
 
-AddData addDataWithInterface(const AddData &addData, const QString &name, const QStringList &extends,
-    const std::vector<CodesysMemberDefinition> &members)
+AddData addDataWithInterface(const AddData &addData, const QString &replacing, const CodesysInterfaceDefinition &definition)
 {
-    AddData result;
-    for (const AddDataEntry &e : addData) {
-        // An entry that holds this interface goes; it is written anew below.
-        if (e.name == QLatin1String(kInterface)
-            && e.content.contains(QStringLiteral("<Interface name=\"%1\"").arg(name), Qt::CaseInsensitive))
-            continue;
-        result.push_back(e);
-    }
-    pugi::xml_document document;
-    pugi::xml_node itf = document.append_child("Interface");
-    itf.append_attribute("name").set_value(name.toUtf8().constData());
-    pugi::xml_node own = itf.append_child("addData");
-    if (!extends.isEmpty()) {
-        pugi::xml_node entry = own.append_child("data");
-        entry.append_attribute("name").set_value(kInheritance);
-        entry.append_attribute("handleUnknown").set_value("implementation");
-        pugi::xml_node inheritance = entry.append_child("Inheritance");
-        for (const QString &base : extends)
-            appendText(inheritance.append_child("Extends"), base);
-    }
-    for (CodesysMemberDefinition prototype : members) {
-        prototype.body.reset();
-        for (std::optional<CodesysMemberDefinition::Accessor> *accessor : {&prototype.getter, &prototype.setter}) {
-            if (*accessor)
-                (*accessor)->body.reset();
+    AddData result = addData;
+    const auto build = [&](pugi::xml_node parent, pugi::xml_node before) {
+        pugi::xml_node itf = before ? parent.insert_child_before("Interface", before) : parent.append_child("Interface");
+        itf.append_attribute("name").set_value(definition.name.toUtf8().constData());
+        for (pugi::xml_attribute a = before.first_attribute(); a; a = a.next_attribute()) {
+            if (std::strcmp(a.name(), "name") != 0)
+                itf.append_attribute(a.name()).set_value(a.value()); // ObjectId and what else CODESYS wrote
         }
-        pugi::xml_node entry = own.append_child("data");
-        entry.append_attribute("name").set_value(prototype.property ? kProperty : kMethod);
-        entry.append_attribute("handleUnknown").set_value("implementation");
-        insertMember(entry, {}, prototype);
-    }
-    result.push_back({QLatin1String(kInterface), QStringLiteral("implementation"), rawXml(itf)});
+        appendInterfaceContent(itf, definition);
+    };
+    const bool replaced = !replacing.isEmpty()
+        && editInterfaceEntry(result, replacing, [&](AddDataEntry &e, pugi::xml_node root, pugi::xml_node old) {
+               build(root, old);
+               root.remove_child(old);
+               e.content = contentOf(root);
+           });
+    if (replaced)
+        return result;
+    pugi::xml_document document;
+    const pugi::xml_node root = document.append_child("r");
+    build(root, {});
+    result.push_back({QLatin1String(kInterface), QStringLiteral("implementation"), contentOf(root)});
     return result;
+}
+
+AddData addDataWithoutInterface(const AddData &addData, const QString &name)
+{
+    AddData result = addData;
+    editInterfaceEntry(result, name, [&](AddDataEntry &e, pugi::xml_node root, pugi::xml_node old) {
+        root.remove_child(old);
+        e.content = contentOf(root);
+    });
+    std::erase_if(result, [](const AddDataEntry &e) { return e.name == QLatin1String(kInterface) && e.content.trimmed().isEmpty(); });
+    return result;
+}
+
+bool keepsInterface(const AddData &addData, const QString &name)
+{
+    AddData copy = addData;
+    return editInterfaceEntry(copy, name, [](AddDataEntry &, pugi::xml_node, pugi::xml_node) { });
 }
 
 CodesysClass readCodesysClass(const Pou &pou)

@@ -59,11 +59,22 @@ AddData addDataWithMember(const AddData &addData, const QString &name, const Cod
 // `addData` without the member called `name`.
 AddData addDataWithoutMember(const AddData &addData, const QString &name);
 
-// The project's addData with INTERFACE `name` (extending `extends`, with the prototypes `members`;
-// their bodies are not written) in CODESYS's interface entry, replacing one of that name.
-AddData addDataWithInterface(const AddData &addData, const QString &name, const QStringList &extends,
-    const std::vector<CodesysMemberDefinition> &members);
+// An INTERFACE to store in CODESYS's form: its name, the interfaces it extends and the
+// prototypes of its methods and properties (their bodies are not written).
+struct CodesysInterfaceDefinition {
+    QString name;
+    QStringList extends;
+    std::vector<CodesysMemberDefinition> members;
+};
 
+// The project's addData with the INTERFACE called `replacing` (case-insensitive) replaced by
+// `definition` where it stands, keeping its attributes (ObjectId); appended in CODESYS's
+// interface entry of its own when none is called `replacing`. Every other entry stays as it is.
+AddData addDataWithInterface(const AddData &addData, const QString &replacing, const CodesysInterfaceDefinition &definition);
+// `addData` without the INTERFACE called `name` (an entry left empty goes too).
+AddData addDataWithoutInterface(const AddData &addData, const QString &name);
+// True when `addData` itself (not a configuration's or resource's) keeps INTERFACE `name`.
+bool keepsInterface(const AddData &addData, const QString &name);
 // An interface's addData saying EXTENDS `extends` and IMPLEMENTS `implements` (CODESYS's
 // pouinheritance entry, replaced or added; none when both are empty).
 AddData addDataWithInheritance(const AddData &addData, const QString &extends, const QStringList &implements);

@@ -22,6 +22,25 @@ void SetInstancesCommand::undo()
     m_model.setInstances(m_before);
 }
 
+SetProjectAddDataCommand::SetProjectAddDataCommand(ProjectModel &model, AddData addData, const QString &text, QUndoCommand *parent)
+    : ModelCommand(model, parent)
+    , m_before(model.project().addData)
+    , m_after(std::move(addData))
+{
+    setText(text);
+    setObsolete(m_before == m_after);
+}
+
+void SetProjectAddDataCommand::redo()
+{
+    m_model.setProjectAddData(m_after);
+}
+
+void SetProjectAddDataCommand::undo()
+{
+    m_model.setProjectAddData(m_before);
+}
+
 namespace {
 
 bool renameIn(std::vector<PouInstance> &instances, const QString &oldName, const QString &newName)

@@ -19,6 +19,20 @@ private:
     Instances m_after;
 };
 
+// Replaces the project's own addData (adding or deleting a CODESYS INTERFACE kept there).
+class SetProjectAddDataCommand : public ModelCommand
+{
+public:
+    SetProjectAddDataCommand(ProjectModel &model, AddData addData, const QString &text, QUndoCommand *parent = nullptr);
+
+    void redo() override;
+    void undo() override;
+
+private:
+    AddData m_before;
+    AddData m_after;
+};
+
 // The instances with every pouInstance of type `oldName` (case-insensitive, as IEC names are)
 // running `newName` instead; nullopt when nothing refers to `oldName`.
 std::optional<Instances> instancesWithProgramRenamed(const Instances &instances, const QString &oldName,

@@ -4,6 +4,7 @@
 // renames, and adding and deleting members are steps on the project's undo stack.
 #include "app/buildcontroller.h"
 #include "app/documentarea.h"
+#include "app/interfaceeditor.h"
 #include "app/mainwindow.h"
 #include "app/membereditor.h"
 #include "app/messagespane.h"
@@ -116,6 +117,8 @@ private Q_SLOTS:
     void compilerMessagesAreMarkedInTheMember();
     void aPropertysMessagesGoToTheirAccessor();
     void findInProjectSearchesMembers();
+    void interfacesAreEditedAsText();
+    void addingAndDeletingInterfacesAreUndoSteps();
 
 private:
     QTemporaryDir m_configHome;
@@ -365,6 +368,136 @@ void TestMemberDocuments::findInProjectSearchesMembers()
     auto *editor = qobject_cast<MemberEditor *>(window.documents().currentWidget());
     QVERIFY(editor);
     QCOMPARE(editor->editor()->textCursor().selectedText(), QStringLiteral("n + x"));
+}
+
+
+namespace {
+
+const QString kShape = QStringLiteral("INTERFACE IShape\n"
+                                      "METHOD Area : INT\n"
+                                      "END_METHOD\n"
+                                      "END_INTERFACE\n");
+
+const QString kShapeSource = kShape
+    + QStringLiteral("FUNCTION_BLOCK Square IMPLEMENTS IShape\nVAR\n    side : INT := 3;\nEND_VAR\n"
+                     "METHOD Area : INT\nArea := side * side;\nEND_METHOD\n"
+                     "END_FUNCTION_BLOCK\n"
+                     "PROGRAM Main\nVAR\n    s : Square;\n    i : IShape;\n    r : INT;\nEND_VAR\n"
+                     "i := s;\nr := r + i.Area();\n"
+                     "END_PROGRAM\n");
+
+InterfaceEditor *openInterfaceFromTree(MainWindow &window, const QString &name)
+{
+    ProjectTreeView &tree = window.projectTree();
+    auto *treeModel = qobject_cast<ProjectTreeModel *>(tree.model());
+    const QModelIndex index = treeModel->indexForKey(ProjectTreeModel::interfaceKey(name));
+    if (!index.isValid())
+        return nullptr;
+    Q_EMIT tree.activated(index);
+    return qobject_cast<InterfaceEditor *>(window.documents().currentWidget());
+}
+
+} // namespace
+
+// An INTERFACE (CODESYS keeps it in the project's addData) is listed in the tree and edited as
+// one text, as a method is: typing goes into the model after a pause, the text document's undo
+// takes it back, text that does not read (or takes a POU's name) is marked and not taken, and a
+// new name in the header renames it.
+void TestMemberDocuments::interfacesAreEditedAsText()
+{
+    MainWindow window;
+    window.projectModel().reset(interp::frontend::readIecText(kShapeSource, QStringLiteral("Shapes")).project);
+    auto *treeModel = qobject_cast<ProjectTreeModel *>(window.projectTree().model());
+    const QModelIndex node = treeModel->indexForKey(ProjectTreeModel::interfaceKey(QStringLiteral("IShape")));
+    QVERIFY(node.isValid());
+    QCOMPARE(node.data().toString(), QStringLiteral("IShape (ITF)"));
+    QCOMPARE(node.parent(), treeModel->indexForKey(ProjectTreeModel::folderKey(ProjectTreeModel::Folder::Interfaces)));
+    QCOMPARE(runThreeCycles(window.projectModel().project()), QStringLiteral("9 18 27"));
+    InterfaceEditor *editor = openInterfaceFromTree(window, QStringLiteral("IShape"));
+    QVERIFY(editor);
+    QCOMPARE(editor->editor()->toPlainText(), kShape);
+    QCOMPARE(window.documents().tabText(window.documents().currentIndex()), QStringLiteral("IShape"));
+    QVERIFY(!editor->editor()->isReadOnly());
+    // A prototype the block does not implement: taken, and the compiler says what is missing.
+    typeReplacing(editor->editor(), QStringLiteral("END_INTERFACE"), QStringLiteral("METHOD Perimeter : INT\nEND_METHOD\nEND_INTERFACE"));
+    QCOMPARE(interp::frontend::printCodesysInterface(window.projectModel().project(), QStringLiteral("IShape")),
+        editor->editor()->toPlainText());
+    QVERIFY(runThreeCycles(window.projectModel().project()).contains(QStringLiteral("Perimeter")));
+    // The text document's undo takes it back, through the model.
+    editor->editor()->undo();
+    editor->editor()->flushPendingEdit();
+    QCOMPARE(interp::frontend::printCodesysInterface(window.projectModel().project(), QStringLiteral("IShape")), kShape);
+    QCOMPARE(runThreeCycles(window.projectModel().project()), QStringLiteral("9 18 27"));
+    // Text that does not read is marked, not taken.
+    const model::AddData before = window.projectModel().project().addData;
+    typeReplacing(editor->editor(), QStringLiteral("END_METHOD"), QStringLiteral("END_METHD"));
+    QVERIFY(!editor->editor()->diagnostics().isEmpty());
+    QCOMPARE(window.projectModel().project().addData, before);
+    typeReplacing(editor->editor(), QStringLiteral("END_METHD"), QStringLiteral("END_METHOD"));
+    QVERIFY(editor->editor()->diagnostics().isEmpty());
+    // A POU's name is refused at the header.
+    typeReplacing(editor->editor(), QStringLiteral("INTERFACE IShape"), QStringLiteral("INTERFACE Square"));
+    QCOMPARE(editor->editor()->diagnostics().size(), 1);
+    QCOMPARE(editor->editor()->diagnostics().front().message, QStringLiteral("A POU or data type named \"Square\" exists already."));
+    QCOMPARE(window.projectModel().project().addData, before);
+    // A free name renames: the tab's title and the tree follow.
+    typeReplacing(editor->editor(), QStringLiteral("INTERFACE Square"), QStringLiteral("INTERFACE IArea"));
+    QCOMPARE(interp::frontend::codesysInterfaceNames(window.projectModel().project()), QStringList {QStringLiteral("IArea")});
+    QCOMPARE(window.documents().tabText(window.documents().indexOf(editor)), QStringLiteral("IArea"));
+    QVERIFY(treeModel->indexForKey(ProjectTreeModel::interfaceKey(QStringLiteral("IArea"))).isValid());
+    // Online it is only looked at.
+    window.documents().setEditingLocked(true);
+    QVERIFY(editor->editor()->isReadOnly());
+    window.documents().setEditingLocked(false);
+    QVERIFY(!editor->editor()->isReadOnly());
+}
+
+void TestMemberDocuments::addingAndDeletingInterfacesAreUndoSteps()
+{
+    MainWindow window;
+    window.projectModel().reset(interp::frontend::readIecText(kShapeSource, QStringLiteral("Shapes")).project);
+    const model::AddData before = window.projectModel().project().addData;
+    QUndoStack &stack = window.undoStacks().projectStack();
+    ProjectCommands &commands = window.projectCommands();
+    QString error;
+    QVERIFY(!commands.addInterface(QStringLiteral("ishape"), &error));
+    QCOMPARE(error, QStringLiteral("An interface named \"ishape\" exists already."));
+    QVERIFY(!commands.addInterface(QStringLiteral("Main"), &error));
+    QCOMPARE(error, QStringLiteral("A POU or data type named \"Main\" exists already."));
+    QVERIFY(commands.addInterface(QStringLiteral("IMove")));
+    QCOMPARE(stack.count(), 1);
+    QCOMPARE(stack.undoText(), QStringLiteral("Add Interface IMove"));
+    QCOMPARE(interp::frontend::printCodesysInterface(window.projectModel().project(), QStringLiteral("IMove")),
+        QStringLiteral("INTERFACE IMove\nEND_INTERFACE\n"));
+    // Typing still pending in its tab when an undo removes it does not bring it back (the monkey
+    // found that).
+    auto *typed = qobject_cast<InterfaceEditor *>(window.documents().openInterface(QStringLiteral("IMove")));
+    QVERIFY(typed);
+    QTextCursor cursor(typed->editor()->document());
+    cursor.movePosition(QTextCursor::End);
+    cursor.insertText(QStringLiteral("(* pending *)"));
+    stack.undo();
+    window.documents().flushEdits();
+    QCOMPARE(window.projectModel().project().addData, before);
+    QTRY_COMPARE(window.documents().indexOf(typed), -1);
+    stack.redo();
+    // A POU cannot take an interface's name.
+    QVERIFY(!commands.addPou(NewPou {QStringLiteral("IMove")}, &error));
+    QCOMPARE(error, QStringLiteral("An interface named \"IMove\" exists already."));
+    // Its tab closes when it goes.
+    InterfaceEditor *editor = openInterfaceFromTree(window, QStringLiteral("IShape"));
+    QVERIFY(editor);
+    QVERIFY(commands.removeInterface(QStringLiteral("IShape")));
+    QCOMPARE(stack.undoText(), QStringLiteral("Delete IShape"));
+    QTRY_COMPARE(window.documents().indexOf(editor), -1);
+    QVERIFY(!window.documents().openInterface(QStringLiteral("IShape")));
+    stack.undo();
+    stack.undo();
+    QCOMPARE(window.projectModel().project().addData, before);
+    QVERIFY(window.documents().openInterface(QStringLiteral("IShape")));
+    stack.redo();
+    QCOMPARE(interp::frontend::codesysInterfaceNames(window.projectModel().project()),
+        (QStringList {QStringLiteral("IShape"), QStringLiteral("IMove")}));
 }
 
 QTEST_MAIN(TestMemberDocuments)

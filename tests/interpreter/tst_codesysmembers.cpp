@@ -35,6 +35,9 @@ private Q_SLOTS:
     void removedMemberGoes();
     void stFileKeepsMembersThroughTheModel();
     void stInterfacesGoToTheProjectsAddData();
+    void editedInterfaceStaysWhereItStood();
+    void textThatIsNotOneInterfaceIsRefused_data();
+    void textThatIsNotOneInterfaceIsRefused();
 };
 
 namespace {
@@ -340,6 +343,150 @@ void TestCodesysMembers::stInterfacesGoToTheProjectsAddData()
     const auto file = model::plcopen::readProject(model::plcopen::writeProject(read.project));
     QVERIFY(file.ok);
     QCOMPARE(runTwoCycles(file.project), QStringLiteral("6 12"));
+}
+
+namespace {
+
+// A project whose addData keeps CODESYS's INTERFACE ICount (with its ObjectId) and another
+// tool's entry after it; Counter implements ICount and PLC_PRG calls it through the interface.
+QByteArray interfaceProjectXml()
+{
+    return R"(<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0200">
+  <fileHeader companyName="" productName="CODESYS" productVersion="CODESYS V3.5 SP16" creationDateTime="2024-01-01T00:00:00" />
+  <contentHeader name="itf"><coordinateInfo><fbd><scaling x="1" y="1" /></fbd><ld><scaling x="1" y="1" /></ld><sfc><scaling x="1" y="1" /></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes />
+    <pous>
+      <pou name="Counter" pouType="functionBlock">
+        <interface><localVars><variable name="n"><type><INT /></type></variable></localVars>
+          <addData><data name="http://www.3s-software.com/plcopenxml/pouinheritance" handleUnknown="implementation"><Inheritance><Implements>ICount</Implements></Inheritance></data></addData>
+        </interface>
+        <body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml"></xhtml></ST></body>
+        <addData>
+          <data name="http://www.3s-software.com/plcopenxml/method" handleUnknown="implementation">
+            <Method name="Step" ObjectId="m1">
+              <interface><returnType><INT /></returnType><inputVars><variable name="amount"><type><INT /></type></variable></inputVars></interface>
+              <body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">n := n + amount;
+Step := n;</xhtml></ST></body>
+              <addData />
+            </Method>
+          </data>
+        </addData>
+      </pou>
+      <pou name="PLC_PRG" pouType="program">
+        <interface><localVars>
+          <variable name="c"><type><derived name="Counter" /></type></variable>
+          <variable name="i"><type><derived name="ICount" /></type></variable>
+          <variable name="r"><type><INT /></type></variable>
+        </localVars></interface>
+        <body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">i := c;
+r := i.Step(2);</xhtml></ST></body>
+      </pou>
+    </pous>
+  </types>
+  <instances><configurations /></instances>
+  <addData>
+    <data name="http://www.3s-software.com/plcopenxml/interface" handleUnknown="implementation">
+      <Interface name="ICount" ObjectId="a1b2">
+        <addData>
+          <data name="http://www.3s-software.com/plcopenxml/method" handleUnknown="implementation">
+            <Method name="Step" ObjectId="c3">
+              <interface><returnType><INT /></returnType><inputVars><variable name="amount"><type><INT /></type></variable></inputVars></interface>
+              <addData />
+            </Method>
+          </data>
+        </addData>
+      </Interface>
+    </data>
+    <data name="urn:other-tool" handleUnknown="preserve"><Note>kept</Note></data>
+  </addData>
+</project>
+)";
+}
+
+const QString kICountText = QStringLiteral("INTERFACE ICount\n"
+                                           "METHOD Step : INT\n"
+                                           "VAR_INPUT\n"
+                                           "    amount : INT;\n"
+                                           "END_VAR\n"
+                                           "END_METHOD\n"
+                                           "END_INTERFACE\n");
+
+} // namespace
+
+// The IDE's interface tab: the text of an INTERFACE read back replaces it where it stood, with its
+// ObjectId; a new name renames it; removed, its entry goes and the others stay.
+void TestCodesysMembers::editedInterfaceStaysWhereItStood()
+{
+    const auto file = model::plcopen::readProject(interfaceProjectXml());
+    QVERIFY(file.ok);
+    model::Project project = file.project;
+    QCOMPARE(runTwoCycles(project), QStringLiteral("2 4"));
+    QCOMPARE(codesysInterfaceNames(project), QStringList {QStringLiteral("ICount")});
+    QCOMPARE(printCodesysInterface(project, QStringLiteral("icount")), kICountText);
+    QCOMPARE(printCodesysInterface(project, QStringLiteral("IOther")), QString());
+    // Printed and read back: the same interface.
+    const InterfaceText same = readInterfaceText(kICountText);
+    QVERIFY2(same.definition, qPrintable(errorsOf(same.diagnostics)));
+    model::Project again = project;
+    again.addData = model::plcopen::addDataWithInterface(project.addData, QStringLiteral("ICount"), *same.definition);
+    QCOMPARE(printCodesysInterface(again, QStringLiteral("ICount")), kICountText);
+    QCOMPARE(runTwoCycles(again), QStringLiteral("2 4"));
+    // A property added: in place, ObjectId kept, the other tool's entry after it untouched.
+    QString edited = kICountText;
+    edited.replace(QStringLiteral("END_INTERFACE"), QStringLiteral("PROPERTY Value : INT\nGET\nEND_GET\nEND_PROPERTY\nEND_INTERFACE"));
+    const InterfaceText read = readInterfaceText(edited);
+    QVERIFY2(read.definition, qPrintable(errorsOf(read.diagnostics)));
+    project.addData = model::plcopen::addDataWithInterface(project.addData, QStringLiteral("ICount"), *read.definition);
+    QCOMPARE(project.addData.size(), size_t(2));
+    QVERIFY2(project.addData[0].content.contains(QStringLiteral("<Interface name=\"ICount\" ObjectId=\"a1b2\">")),
+        qPrintable(project.addData[0].content));
+    QCOMPARE(project.addData[1].name, QStringLiteral("urn:other-tool"));
+    QCOMPARE(printCodesysInterface(project, QStringLiteral("ICount")), edited);
+    // Counter does not implement the new property, as CODESYS requires.
+    QCOMPARE(runTwoCycles(project), QStringLiteral("Counter:1:1: error: Counter must implement the GET of the property Value of ICount."));
+    // Written to a file and read again: the same text.
+    const auto saved = model::plcopen::readProject(model::plcopen::writeProject(project));
+    QVERIFY(saved.ok);
+    QCOMPARE(printCodesysInterface(saved.project, QStringLiteral("ICount")), edited);
+    // Renamed in its header: where it stood, with its ObjectId; the block still names ICount,
+    // which no longer exists, so the compiler says so.
+    QString renamed = edited;
+    renamed.replace(QStringLiteral("INTERFACE ICount"), QStringLiteral("INTERFACE ICounter"));
+    project.addData = model::plcopen::addDataWithInterface(project.addData, QStringLiteral("ICount"), *readInterfaceText(renamed).definition);
+    QCOMPARE(codesysInterfaceNames(project), QStringList {QStringLiteral("ICounter")});
+    QVERIFY(project.addData[0].content.contains(QStringLiteral("<Interface name=\"ICounter\" ObjectId=\"a1b2\">")));
+    QVERIFY(model::plcopen::keepsInterface(project.addData, QStringLiteral("icounter")));
+    QVERIFY(!model::plcopen::keepsInterface(project.addData, QStringLiteral("ICount")));
+    QVERIFY(runTwoCycles(project).contains(QStringLiteral("ICount")));
+    // Removed: its entry goes, the other stays.
+    project.addData = model::plcopen::addDataWithoutInterface(project.addData, QStringLiteral("ICounter"));
+    QCOMPARE(project.addData.size(), size_t(1));
+    QCOMPARE(project.addData[0].name, QStringLiteral("urn:other-tool"));
+    QCOMPARE(codesysInterfaceNames(project), QStringList());
+}
+
+void TestCodesysMembers::textThatIsNotOneInterfaceIsRefused_data()
+{
+    QTest::addColumn<QString>("text");
+    QTest::addColumn<QString>("message"); // the first diagnostic, as Diagnostic::toString prints it
+    QTest::newRow("a function block") << QStringLiteral("FUNCTION_BLOCK F\nEND_FUNCTION_BLOCK\n")
+                                      << QStringLiteral("1:1: error: This text must be one INTERFACE ... END_INTERFACE and nothing else.");
+    QTest::newRow("two interfaces") << QStringLiteral("INTERFACE A\nEND_INTERFACE\nINTERFACE B\nEND_INTERFACE\n")
+                                    << QStringLiteral("1:1: error: This text must be one INTERFACE ... END_INTERFACE and nothing else.");
+    QTest::newRow("no end") << QStringLiteral("INTERFACE A\nMETHOD M : INT\nEND_METHOD\n") << QString();
+    QTest::newRow("empty") << QString() << QStringLiteral("1:1: error: This text must be one INTERFACE ... END_INTERFACE and nothing else.");
+}
+
+void TestCodesysMembers::textThatIsNotOneInterfaceIsRefused()
+{
+    QFETCH(QString, text);
+    QFETCH(QString, message);
+    const InterfaceText read = readInterfaceText(text);
+    QVERIFY(!read.definition);
+    QVERIFY(read.diagnostics.hasErrors());
+    if (!message.isEmpty())
+        QCOMPARE(read.diagnostics.all().front().toString(), message);
 }
 
 QTEST_GUILESS_MAIN(TestCodesysMembers)

@@ -116,6 +116,22 @@ void TestOop::errors_data()
                                 << "B:3:1: error: A is FINAL; no function block can extend it.";
     QTest::newRow("not implemented") << counters + "FUNCTION_BLOCK Other\nEND_FUNCTION_BLOCK\nPROGRAM Main\nVAR o : Other; i : ICount; END_VAR\ni := o;\nEND_PROGRAM"
                                      << "Main:39:1: error: Other does not implement ICount.";
+    const QString shape = QStringLiteral("INTERFACE IShape\nMETHOD Area : INT\nEND_METHOD\nPROPERTY Name : INT\nGET\nEND_GET\nEND_PROPERTY\nEND_INTERFACE\n"
+                                         "INTERFACE ISolid EXTENDS IShape\nMETHOD Volume : INT\nEND_METHOD\nEND_INTERFACE\n");
+    const QString main = QStringLiteral("PROGRAM Main\nEND_PROGRAM");
+    QTest::newRow("method missing") << shape + "FUNCTION_BLOCK Sq IMPLEMENTS IShape\nPROPERTY Name : INT\nGET\nName := 1;\nEND_GET\nEND_PROPERTY\nEND_FUNCTION_BLOCK\n" + main
+                                    << "Sq:13:1: error: Sq must implement the method Area of IShape.";
+    QTest::newRow("getter missing") << shape + "FUNCTION_BLOCK Sq IMPLEMENTS IShape\nMETHOD Area : INT\nArea := 1;\nEND_METHOD\nEND_FUNCTION_BLOCK\n" + main
+                                    << "Sq:13:1: error: Sq must implement the GET of the property Name of IShape.";
+    QTest::newRow("missing from the interface it extends")
+        << shape + "FUNCTION_BLOCK Cube IMPLEMENTS ISolid\nMETHOD Volume : INT\nVolume := 1;\nEND_METHOD\nMETHOD Area : INT\nArea := 1;\nEND_METHOD\nEND_FUNCTION_BLOCK\n" + main
+        << "Cube:13:1: error: Cube must implement the GET of the property Name of IShape.";
+    QTest::newRow("inherited from the base counts, abstract may leave out")
+        << shape + "FUNCTION_BLOCK ABSTRACT Base IMPLEMENTS IShape\nMETHOD Area : INT\nArea := 1;\nEND_METHOD\nEND_FUNCTION_BLOCK\n"
+               "FUNCTION_BLOCK Sq EXTENDS Base IMPLEMENTS IShape\nEND_FUNCTION_BLOCK\n" + main
+        << "Sq:18:1: error: Sq must implement the GET of the property Name of IShape.";
+    QTest::newRow("unknown interface") << "FUNCTION_BLOCK Sq IMPLEMENTS INope\nEND_FUNCTION_BLOCK\n" + main
+                                       << "Sq:1:1: error: Sq implements INope, which is no interface of the project.";
 }
 
 void TestOop::errors()
