@@ -1083,6 +1083,10 @@ Automatisch gespeichert: %2</translation>
             <source>ONLINE HISTORY | scan %1 of %2 | t = %3 s</source>
             <translation>ONLINE HISTORIE | Zyklus %1 von %2 | t = %3 s</translation>
         </message>
+        <message>
+            <source>Program log: %1</source>
+            <translation>Programmprotokoll: %1</translation>
+        </message>
     </context>
     <context>
         <name>iec::app::ProjectDocumentation</name>
@@ -6488,6 +6492,14 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>This text must be one INTERFACE ... END_INTERFACE and nothing else.</source>
             <translation>Dieser Text muss genau ein INTERFACE ... END_INTERFACE sein, sonst nichts.</translation>
+        </message>
+        <message>
+            <source>%1 cannot override %2: it is FINAL.</source>
+            <translation>%1 kann %2 nicht überschreiben: %2 ist FINAL.</translation>
+        </message>
+        <message>
+            <source>%1 must implement the ABSTRACT %2, or be ABSTRACT itself.</source>
+            <translation>%1 muss das ABSTRACT %2 implementieren oder selbst ABSTRACT sein.</translation>
         </message>
     </context>
     <context>

@@ -1082,6 +1082,10 @@ Autosaved: %2</source>
             <source>ONLINE HISTORY | scan %1 of %2 | t = %3 s</source>
             <translation>在线 历史 | 扫描 %1 / %2 | t = %3 s</translation>
         </message>
+        <message>
+            <source>Program log: %1</source>
+            <translation>程序日志：%1</translation>
+        </message>
     </context>
     <context>
         <name>iec::app::ProjectDocumentation</name>
@@ -6482,6 +6486,14 @@ Autosaved: %2</source>
         <message>
             <source>This text must be one INTERFACE ... END_INTERFACE and nothing else.</source>
             <translation>此文本必须恰好是一个 INTERFACE ... END_INTERFACE，不能有其他内容。</translation>
+        </message>
+        <message>
+            <source>%1 cannot override %2: it is FINAL.</source>
+            <translation>%1 不能重写 %2：它是 FINAL。</translation>
+        </message>
+        <message>
+            <source>%1 must implement the ABSTRACT %2, or be ABSTRACT itself.</source>
+            <translation>%1 必须实现 ABSTRACT 的 %2，或者自身声明为 ABSTRACT。</translation>
         </message>
     </context>
     <context>

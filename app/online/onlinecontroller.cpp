@@ -22,6 +22,10 @@ namespace iec::app {
 namespace {
 
 const QString kRuntimeSource = QStringLiteral("runtime");
+// What the program logs (LOGGER), kept across logout so it can be read afterwards; the newest
+// kMaxLogMessages, so that a program logging every cycle cannot fill the memory.
+const QString kLogSource = QStringLiteral("log");
+constexpr qsizetype kMaxLogMessages = 500;
 constexpr int kCycleTimesMs[] = {1, 2, 5, 10, 20, 50, 100};
 
 void showDockOf(QWidget &pane)
@@ -197,6 +201,8 @@ bool OnlineController::login()
         return false;
     m_module = module;
     m_messages.model().setMessages(kRuntimeSource, {});
+    m_log.clear();
+    m_messages.model().setMessages(kLogSource, {});
 
     ++m_session;
     const int session = m_session;
@@ -216,6 +222,10 @@ bool OnlineController::login()
     connect(m_worker, &RuntimeWorker::commandFailed, this, [this, session](const QString &message) {
         if (session == m_session)
             m_statusBar.showMessage(message, 10000);
+    });
+    connect(m_worker, &RuntimeWorker::logged, this, [this, session](const QStringList &texts, const QList<int> &levels) {
+        if (session == m_session)
+            showLog(texts, levels);
     });
     connect(m_worker, &RuntimeWorker::traceProblems, this, [this, session](const QStringList &problems) {
         if (session == m_session)
@@ -368,6 +378,20 @@ void OnlineController::runCyclesInteractive()
                                            1'000'000, 1, &ok);
     if (ok)
         runCycles(count);
+}
+
+void OnlineController::showLog(const QStringList &texts, const QList<int> &levels)
+{
+    for (qsizetype i = 0; i < texts.size(); ++i) {
+        Message message;
+        const int level = levels.value(i, 2);
+        message.severity = level == 0 ? Message::Severity::Error : level == 1 ? Message::Severity::Warning : Message::Severity::Info;
+        message.text = tr("Program log: %1").arg(texts[i]);
+        m_log.append(message);
+    }
+    if (m_log.size() > kMaxLogMessages)
+        m_log.remove(0, m_log.size() - kMaxLogMessages);
+    m_messages.model().setMessages(kLogSource, m_log);
 }
 
 void OnlineController::resetWarm()

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "app/documentarea.h"
+#include "app/messagespane.h"
 #include "app/online/runtimeworker.h"
 #include "model/ids.h"
 
@@ -24,7 +25,6 @@ class ProjectModel;
 namespace iec::app {
 
 class BuildController;
-class MessagesPane;
 class WatchPane;
 
 // Online mode in the window: Login compiles the project (errors block it and stay in the
@@ -109,6 +109,7 @@ private:
     void shutDownWorker();
     void showSnapshot(std::shared_ptr<const interp::RuntimeSnapshot> snapshot);
     void showFault(const interp::RuntimeFault &fault);
+    void showLog(const QStringList &texts, const QList<int> &levels);
     // What the watch pane and the open views want, by name and by chart (instance, POU id):
     // cheap to build and compare on every snapshot; the POUs are copied only when it changed.
     struct Wanted {
@@ -127,6 +128,7 @@ private:
     model::ProjectModel &m_projectModel;
     DocumentArea &m_documents;
     MessagesPane &m_messages;
+    QList<Message> m_log; // what the program logged this session (messages pane, "log")
     BuildController &m_build;
     WatchPane &m_watch;
     QStatusBar &m_statusBar;

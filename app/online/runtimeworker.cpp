@@ -345,6 +345,15 @@ void RuntimeWorker::publish()
         fillValues(*snapshot, *m_runtime);
     snapshot->trace = traceUpdate();
     m_lastPublish.start();
+    if (const std::vector<interp::Runtime::LogEntry> log = m_runtime->takeLog(); !log.empty()) {
+        QStringList texts;
+        QList<int> levels;
+        for (const interp::Runtime::LogEntry &entry : log) {
+            texts << entry.toString();
+            levels << entry.level;
+        }
+        Q_EMIT logged(texts, levels);
+    }
     Q_EMIT snapshotReady(std::move(snapshot));
 }
 

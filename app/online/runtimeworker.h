@@ -105,6 +105,9 @@ Q_SIGNALS:
     void commandFailed(const QString &message);
     // Run ended: Stop, the N cycles are done, or a fault.
     void stopped();
+    // What the program logged (Beremiz's LOGGER) since the last publication: "INFO: text (cycle 3)"
+    // with its level (0 critical, 1 warning, 2 info, 3 debug), in order.
+    void logged(const QStringList &texts, const QList<int> &levels);
     // What the trace settings name that cannot be recorded, one sentence each.
     void traceProblems(const QStringList &problems);
 

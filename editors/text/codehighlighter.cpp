@@ -4,6 +4,8 @@
 
 #include <QTextDocument>
 
+#include <algorithm>
+
 #include <array>
 
 namespace iec::editors {
@@ -151,8 +153,15 @@ void CodeHighlighter::highlightBlock(const QString &text)
     ++m_highlightedBlocks;
     interp::LexState state = decode(previousBlockState());
     const QStringView view(text);
-    for (const interp::Token &token : interp::tokenize(view, state)) {
-        const Style style = styleOf(token.kind, view.mid(token.offset, token.length));
+    const std::vector<interp::Token> tokens = interp::tokenize(view, state);
+    // GET and SET open a property's accessors on a line of their own; anywhere else they are names.
+    const bool accessorLine
+        = std::ranges::count_if(tokens, [](const interp::Token &t) { return t.kind != interp::TokenKind::Comment; }) == 1;
+    for (const interp::Token &token : tokens) {
+        const QStringView word = view.mid(token.offset, token.length);
+        const bool accessor = accessorLine && token.kind == interp::TokenKind::Identifier
+            && (word.compare(u"GET", Qt::CaseInsensitive) == 0 || word.compare(u"SET", Qt::CaseInsensitive) == 0);
+        const Style style = accessor ? Style::Keyword : styleOf(token.kind, word);
         if (style != Style::Plain)
             setFormat(token.offset, token.length, formats()[size_t(style)]);
     }

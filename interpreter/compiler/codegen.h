@@ -249,6 +249,7 @@ public:
     // ---- oop.cpp ----
     void registerMethods();
     void checkImplementations();
+    void checkOverrides();
     int baseOf(int pou) const;
     int findMethod(int pou, const QString &name, ast::Method::Role role) const;
     int findInterfaceMethod(int pou, const QString &name, ast::Method::Role role, int depth = 0) const;

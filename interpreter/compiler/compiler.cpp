@@ -307,6 +307,7 @@ std::shared_ptr<Module> Codegen::run(const std::vector<const CompilationUnit *> 
         collectPous(utilLibrary(), true);
     registerMethods();
     checkImplementations();
+    checkOverrides();
     allocate(8, 8); // offset 0 is never a variable
     reserveProcessImage(units);
 

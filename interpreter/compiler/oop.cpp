@@ -116,6 +116,44 @@ void Codegen::checkImplementations()
     }
 }
 
+// What CODESYS checks of methods along EXTENDS: a FINAL method is not overridden, and a block
+// that is not ABSTRACT has code for every method and accessor it has, its own or inherited (an
+// ABSTRACT one left without an implementation could be called and has nothing to run).
+void Codegen::checkOverrides()
+{
+    for (const PouInfo &block : m_pous) {
+        const Pou *a = block.ast;
+        if (!a || block.kind != PouKind::FunctionBlock || block.fromLibrary)
+            continue;
+        m_pouName = block.name;
+        const int base = baseOf(block.index);
+        for (const Method &m : a->methods) {
+            const int overridden = base >= 0 ? findMethod(base, m.name, m.role) : -1;
+            if (overridden >= 0 && m_pous[size_t(overridden)].method->isFinal)
+                error(m.location, QCoreApplication::translate("iec::interp::Compiler", "%1 cannot override %2: it is FINAL.")
+                                      .arg(methodCodeName(a->name, m.name, m.role), m_pous[size_t(overridden)].name));
+        }
+        if (a->isAbstract)
+            continue;
+        QSet<QString> seen;
+        for (int c = block.index, depth = 0; c >= 0 && depth < 64; c = baseOf(c), ++depth) {
+            QList<int> methods = m_pous[size_t(c)].methods.values();
+            std::sort(methods.begin(), methods.end());
+            for (const int index : methods) {
+                const Method *m = m_pous[size_t(index)].method;
+                const QString k = m_pous[size_t(index)].name.section(QLatin1Char('.'), 1).toUpper();
+                if (!m || seen.contains(k))
+                    continue;
+                seen.insert(k);
+                const int resolved = findMethod(block.index, m->name, m->role);
+                if (resolved >= 0 && m_pous[size_t(resolved)].method->isAbstract)
+                    error(a->location, QCoreApplication::translate("iec::interp::Compiler", "%1 must implement the ABSTRACT %2, or be ABSTRACT itself.")
+                                           .arg(a->name, m_pous[size_t(resolved)].name));
+            }
+        }
+    }
+}
+
 // The block a function block extends, or -1.
 int Codegen::baseOf(int pou) const
 {

@@ -242,12 +242,24 @@ QString contentOf(pugi::xml_node root)
     return content;
 }
 
-// Calls `edit(entry, root, member)` for the entry holding member `name` (its content parsed under
-// `root`); false when there is none.
-template<class Edit> bool editMemberEntry(AddData &addData, const QString &name, Edit edit)
+bool isInterfaceEntry(const AddDataEntry &e)
+{
+    return e.name == QLatin1String(kInterface);
+}
+
+bool isInterfaceNode(pugi::xml_node n)
+{
+    return n.type() == pugi::node_element && hasLocalName(n, "Interface");
+}
+
+// Calls `edit(entry, root, element)` for the first entry where `isEntry` holds that has an
+// element called `name` (case-insensitive) where `isNode` holds, its content parsed under `root`;
+// false when there is none.
+template<class Edit> bool editNamedElement(AddData &addData, const QString &name, bool (*isEntry)(const AddDataEntry &),
+    bool (*isNode)(pugi::xml_node), Edit edit)
 {
     for (AddDataEntry &e : addData) {
-        if (!isMemberEntry(e))
+        if (!isEntry(e))
             continue;
         pugi::xml_document document;
         const QByteArray wrapped = "<r>" + e.content.toUtf8() + "</r>";
@@ -255,7 +267,7 @@ template<class Edit> bool editMemberEntry(AddData &addData, const QString &name,
             continue;
         const pugi::xml_node root = document.first_child();
         for (pugi::xml_node n = root.first_child(); n; n = n.next_sibling()) {
-            if (isMemberNode(n) && QString::fromUtf8(n.attribute("name").value()).compare(name, Qt::CaseInsensitive) == 0) {
+            if (isNode(n) && QString::fromUtf8(n.attribute("name").value()).compare(name, Qt::CaseInsensitive) == 0) {
                 edit(e, root, n);
                 return true;
             }
@@ -264,27 +276,28 @@ template<class Edit> bool editMemberEntry(AddData &addData, const QString &name,
     return false;
 }
 
-// Calls `edit(entry, root, interface)` for the interface entry holding INTERFACE `name`; false
-// when there is none.
+template<class Edit> bool editMemberEntry(AddData &addData, const QString &name, Edit edit)
+{
+    return editNamedElement(addData, name, isMemberEntry, isMemberNode, edit);
+}
+
 template<class Edit> bool editInterfaceEntry(AddData &addData, const QString &name, Edit edit)
 {
-    for (AddDataEntry &e : addData) {
-        if (e.name != QLatin1String(kInterface))
-            continue;
-        pugi::xml_document document;
-        const QByteArray wrapped = "<r>" + e.content.toUtf8() + "</r>";
-        if (!document.load_buffer(wrapped.constData(), std::size_t(wrapped.size()), pugi::parse_default | pugi::parse_ws_pcdata_single))
-            continue;
-        const pugi::xml_node root = document.first_child();
-        for (pugi::xml_node n = root.first_child(); n; n = n.next_sibling()) {
-            if (n.type() == pugi::node_element && hasLocalName(n, "Interface")
-                && QString::fromUtf8(n.attribute("name").value()).compare(name, Qt::CaseInsensitive) == 0) {
-                edit(e, root, n);
-                return true;
-            }
-        }
-    }
-    return false;
+    return editNamedElement(addData, name, isInterfaceEntry, isInterfaceNode, edit);
+}
+
+// `addData` without the element called `name`; an entry left with no element goes too (CODESYS
+// writes one member or interface per entry).
+AddData withoutNamedElement(const AddData &addData, const QString &name, bool (*isEntry)(const AddDataEntry &),
+    bool (*isNode)(pugi::xml_node))
+{
+    AddData result = addData;
+    editNamedElement(result, name, isEntry, isNode, [&](AddDataEntry &e, pugi::xml_node root, pugi::xml_node old) {
+        root.remove_child(old);
+        e.content = contentOf(root);
+    });
+    std::erase_if(result, [&](const AddDataEntry &e) { return isEntry(e) && e.content.trimmed().isEmpty(); });
+    return result;
 }
 
 // An interface's content: its own addData with the interfaces it extends and its prototypes.
@@ -334,14 +347,7 @@ AddData addDataWithMember(const AddData &addData, const QString &name, const Cod
 
 AddData addDataWithoutMember(const AddData &addData, const QString &name)
 {
-    AddData result = addData;
-    editMemberEntry(result, name, [&](AddDataEntry &e, pugi::xml_node root, pugi::xml_node old) {
-        root.remove_child(old);
-        e.content = contentOf(root);
-    });
-    // An entry left with no element goes too (CODESYS writes one member per entry).
-    std::erase_if(result, [](const AddDataEntry &e) { return isMemberEntry(e) && e.content.trimmed().isEmpty(); });
-    return result;
+    return withoutNamedElement(addData, name, isMemberEntry, isMemberNode);
 }
 
 AddData addDataWithInheritance(const AddData &addData, const QString &extends, const QStringList &implements)
@@ -389,13 +395,7 @@ AddData addDataWithInterface(const AddData &addData, const QString &replacing, c
 
 AddData addDataWithoutInterface(const AddData &addData, const QString &name)
 {
-    AddData result = addData;
-    editInterfaceEntry(result, name, [&](AddDataEntry &e, pugi::xml_node root, pugi::xml_node old) {
-        root.remove_child(old);
-        e.content = contentOf(root);
-    });
-    std::erase_if(result, [](const AddDataEntry &e) { return e.name == QLatin1String(kInterface) && e.content.trimmed().isEmpty(); });
-    return result;
+    return withoutNamedElement(addData, name, isInterfaceEntry, isInterfaceNode);
 }
 
 bool keepsInterface(const AddData &addData, const QString &name)

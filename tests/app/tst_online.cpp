@@ -97,6 +97,7 @@ private Q_SLOTS:
     void watchPaneWritesForcesAndReleases();
     void compileErrorBlocksLogin();
     void runtimeFaultLandsInTheMessagesPane();
+    void loggerLinesLandInTheMessagesPane();
     void textEditorShowsValuesAndRefusesEditing();
     void logoutRestoresEditors();
     void addToWatchFromTheEditor();
@@ -472,6 +473,30 @@ void TestOnline::runtimeFaultLandsInTheMessagesPane()
     online.resetCold();
     QVERIFY(!online.latestSnapshot()->fault.has_value());
     QCOMPARE(messages.count(Message::Severity::Error), 0);
+}
+
+// Beremiz's LOGGER: what the program logs is listed in the Messages pane, at its level, each
+// line once; a new login starts a new list.
+void TestOnline::loggerLinesLandInTheMessagesPane()
+{
+    auto window = windowWithProgram("PROGRAM Main\nVAR l : LOGGER; n : INT; END_VAR\nn := n + 1;\n"
+                                    "l(TRIG := n MOD 2 = 0, MSG := CONCAT('tick ', INT_TO_STRING(n)), LEVEL := WARNING);\nEND_PROGRAM\n");
+    OnlineController &online = window->online();
+    const MessageListModel &messages = window->messagesPane().model();
+    for (int cycle = 0; cycle < 4; ++cycle)
+        online.singleCycle();
+    QStringList texts;
+    for (int row = 0; row < messages.rowCount(); ++row)
+        texts << messages.message(row).text;
+    QCOMPARE(texts, QStringList({QStringLiteral("Program log: WARNING: tick 2 (cycle 2)"),
+                                 QStringLiteral("Program log: WARNING: tick 4 (cycle 4)")}));
+    QCOMPARE(messages.count(Message::Severity::Warning), 2);
+    online.logout();
+    QCOMPARE(messages.rowCount(), 2); // kept to be read after logout
+    online.singleCycle();
+    online.singleCycle();
+    QCOMPARE(messages.rowCount(), 1);
+    QCOMPARE(messages.message(0).text, QStringLiteral("Program log: WARNING: tick 2 (cycle 2)"));
 }
 
 void TestOnline::documentOpenedWhileOnlineAsksForItsValues()

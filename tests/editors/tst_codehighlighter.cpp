@@ -68,6 +68,9 @@ void TestCodeHighlighter::formats_data()
     QTest::newRow("METHOD") << "METHOD Add : INT" << 0 << ST << Style::Keyword;
     QTest::newRow("END_PROPERTY") << "END_PROPERTY" << 4 << ST << Style::Keyword;
     QTest::newRow("SUPER") << "SUPER^.Step(1);" << 1 << ST << Style::Keyword;
+    QTest::newRow("GET on its line") << "GET" << 0 << ST << Style::Keyword;
+    QTest::newRow("SET with a comment") << "  set (* write *)" << 3 << ST << Style::Keyword;
+    QTest::newRow("get as a name") << "x := get;" << 6 << ST << Style::Plain;
     QTest::newRow("type name") << "x : INT;" << 5 << ST << Style::TypeName;
     QTest::newRow("integer") << "x := 42;" << 6 << ST << Style::Number;
     QTest::newRow("based integer") << "x := 16#FF;" << 9 << ST << Style::Number;

@@ -131,6 +131,9 @@ void TestDialect::pointers_data()
     expr("compare with 0", "p : POINTER TO INT; x : INT; none : BOOL; set : BOOL;", "none := p = 0; p := ADR(x); set := p <> 0;", "none=TRUE; set=TRUE");
     expr("distance of two pointers", "arr : ARRAY[0..9] OF DINT; a : POINTER TO DINT; b : POINTER TO DINT; n : DINT;",
          "a := ADR(arr[2]); b := ADR(arr[7]); n := b - a;", "n=20");
+    // An element through a pointer to an array: p^[i].
+    expr("element through a pointer to an array", "arr : ARRAY[1..4] OF INT := [1, 2, 3, 4]; p : POINTER TO ARRAY[1..4] OF INT; i : INT := 3; y : INT;",
+         "p := ADR(arr); y := p^[i]; p^[2] := 20;", "y=3; arr[2]=20");
     row("member through a pointer", "TYPE Pair : STRUCT a : INT; b : INT; END_STRUCT; END_TYPE\n"
                                     "PROGRAM Main VAR s : Pair; p : POINTER TO Pair; y : INT; END_VAR\n"
                                     "p := ADR(s); p^.b := 9; y := p^.b + s.b;\nEND_PROGRAM",

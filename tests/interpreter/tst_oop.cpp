@@ -110,6 +110,11 @@ void TestOop::errors_data()
     const QString counters = QString::fromUtf8(kCounters);
     QTest::newRow("private method") << counters + "PROGRAM Main\nVAR c : Counter; r : INT; END_VAR\nr := c.Secret();\nEND_PROGRAM"
                                     << "Main:37:6: error: Counter.Secret is PRIVATE and cannot be called from here.";
+    QTest::newRow("protected method from outside, callable in a derived block")
+        << QStringLiteral("FUNCTION_BLOCK A\nMETHOD PROTECTED P : INT\nP := 1;\nEND_METHOD\nEND_FUNCTION_BLOCK\n"
+                          "FUNCTION_BLOCK B EXTENDS A\nVAR r : INT; END_VAR\nr := THIS^.P();\nEND_FUNCTION_BLOCK\n"
+                          "PROGRAM Main\nVAR a : A; b : B; r : INT; END_VAR\nb();\nr := a.P();\nEND_PROGRAM")
+        << "Main:13:6: error: A.P is PROTECTED and cannot be called from here.";
     QTest::newRow("abstract instance") << "FUNCTION_BLOCK ABSTRACT A\nEND_FUNCTION_BLOCK\nPROGRAM Main\nVAR a : A; END_VAR\nEND_PROGRAM"
                                        << "Main:4:5: error: A is ABSTRACT; declare an instance of a function block that extends it.";
     QTest::newRow("final base") << "FUNCTION_BLOCK FINAL A\nEND_FUNCTION_BLOCK\nFUNCTION_BLOCK B EXTENDS A\nEND_FUNCTION_BLOCK\nPROGRAM Main\nEND_PROGRAM"
@@ -130,6 +135,19 @@ void TestOop::errors_data()
         << shape + "FUNCTION_BLOCK ABSTRACT Base IMPLEMENTS IShape\nMETHOD Area : INT\nArea := 1;\nEND_METHOD\nEND_FUNCTION_BLOCK\n"
                "FUNCTION_BLOCK Sq EXTENDS Base IMPLEMENTS IShape\nEND_FUNCTION_BLOCK\n" + main
         << "Sq:18:1: error: Sq must implement the GET of the property Name of IShape.";
+    QTest::newRow("final method overridden")
+        << "FUNCTION_BLOCK A\nMETHOD FINAL M : INT\nM := 1;\nEND_METHOD\nEND_FUNCTION_BLOCK\n"
+           "FUNCTION_BLOCK B EXTENDS A\nMETHOD M : INT\nM := 2;\nEND_METHOD\nEND_FUNCTION_BLOCK\n" + main
+        << "B:7:1: error: B.M cannot override A.M: it is FINAL.";
+    QTest::newRow("abstract method left without code")
+        << "FUNCTION_BLOCK ABSTRACT A\nMETHOD ABSTRACT M : INT\nEND_METHOD\nEND_FUNCTION_BLOCK\n"
+           "FUNCTION_BLOCK B EXTENDS A\nEND_FUNCTION_BLOCK\n" + main
+        << "B:5:1: error: B must implement the ABSTRACT A.M, or be ABSTRACT itself.";
+    QTest::newRow("abstract method implemented, abstract block may leave it")
+        << "FUNCTION_BLOCK ABSTRACT A\nMETHOD ABSTRACT M : INT\nEND_METHOD\nEND_FUNCTION_BLOCK\n"
+           "FUNCTION_BLOCK ABSTRACT B EXTENDS A\nEND_FUNCTION_BLOCK\n"
+           "FUNCTION_BLOCK C EXTENDS B\nMETHOD M : INT\nM := 3;\nEND_METHOD\nEND_FUNCTION_BLOCK\n" + main
+        << QString();
     QTest::newRow("unknown interface") << "FUNCTION_BLOCK Sq IMPLEMENTS INope\nEND_FUNCTION_BLOCK\n" + main
                                        << "Sq:1:1: error: Sq implements INope, which is no interface of the project.";
 }
