@@ -2,11 +2,13 @@
 
 #include "app/messagespane.h"
 #include "editors/text/codeeditor.h"
+#include "interpreter/compiler/ast.h"
 #include "interpreter/frontend/codesysmembers.h"
 #include "model/plcopen/codesysoop.h"
 #include "model/projectmodel.h"
 
 #include <algorithm>
+#include <initializer_list>
 
 namespace iec::app {
 
@@ -84,24 +86,26 @@ AddDataTextEditor::Reading MemberEditor::read(const QString &text) const
     return reading;
 }
 
+// The compiler names a method's code "Counter.Add" and a property's accessors "Counter.Count.GET"
+// and "Counter.Count.SET" (ast::methodCodeName): which of this member's bodies `codeName` is.
 int MemberEditor::bodyLineOf(const QString &codeName) const
 {
+    using Role = interp::ast::Method::Role;
+    const QString owner = title().section(QLatin1Char('.'), 0, 0);
     const interp::frontend::MemberBodyLines lines = interp::frontend::memberBodyLines(editor()->toPlainText());
-    if (codeName.endsWith(QLatin1String(".GET"), Qt::CaseInsensitive))
+    if (sameName(codeName, interp::ast::methodCodeName(owner, name(), Role::Getter)))
         return lines.getter;
-    if (codeName.endsWith(QLatin1String(".SET"), Qt::CaseInsensitive))
+    if (sameName(codeName, interp::ast::methodCodeName(owner, name(), Role::Setter)))
         return lines.setter;
     return lines.body;
 }
 
 bool MemberEditor::isMine(const QString &codeName) const
 {
-    const QString own = title();
-    if (codeName.compare(own, Qt::CaseInsensitive) == 0)
-        return true;
-    return codeName.size() == own.size() + 4 && codeName.startsWith(own, Qt::CaseInsensitive)
-        && (codeName.endsWith(QLatin1String(".GET"), Qt::CaseInsensitive)
-            || codeName.endsWith(QLatin1String(".SET"), Qt::CaseInsensitive));
+    using Role = interp::ast::Method::Role;
+    const QString owner = title().section(QLatin1Char('.'), 0, 0);
+    return std::ranges::any_of(std::initializer_list<Role> {Role::Method, Role::Getter, Role::Setter},
+        [&](Role role) { return sameName(codeName, interp::ast::methodCodeName(owner, name(), role)); });
 }
 
 Message MemberEditor::atTextLine(Message message) const

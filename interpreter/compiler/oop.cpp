@@ -141,8 +141,10 @@ void Codegen::checkOverrides()
             std::sort(methods.begin(), methods.end());
             for (const int index : methods) {
                 const Method *m = m_pous[size_t(index)].method;
-                const QString k = m_pous[size_t(index)].name.section(QLatin1Char('.'), 1).toUpper();
-                if (!m || seen.contains(k))
+                if (!m)
+                    continue;
+                const QString k = roleKey(m->role, m->name);
+                if (seen.contains(k))
                     continue;
                 seen.insert(k);
                 const int resolved = findMethod(block.index, m->name, m->role);

@@ -255,10 +255,10 @@ bool isInterfaceNode(pugi::xml_node n)
 // Calls `edit(entry, root, element)` for the first entry where `isEntry` holds that has an
 // element called `name` (case-insensitive) where `isNode` holds, its content parsed under `root`;
 // false when there is none.
-template<class Edit> bool editNamedElement(AddData &addData, const QString &name, bool (*isEntry)(const AddDataEntry &),
+template<class Data, class Edit> bool editNamedElement(Data &addData, const QString &name, bool (*isEntry)(const AddDataEntry &),
     bool (*isNode)(pugi::xml_node), Edit edit)
 {
-    for (AddDataEntry &e : addData) {
+    for (auto &e : addData) {
         if (!isEntry(e))
             continue;
         pugi::xml_document document;
@@ -400,8 +400,7 @@ AddData addDataWithoutInterface(const AddData &addData, const QString &name)
 
 bool keepsInterface(const AddData &addData, const QString &name)
 {
-    AddData copy = addData;
-    return editInterfaceEntry(copy, name, [](AddDataEntry &, pugi::xml_node, pugi::xml_node) { });
+    return editNamedElement(addData, name, isInterfaceEntry, isInterfaceNode, [](const AddDataEntry &, pugi::xml_node, pugi::xml_node) { });
 }
 
 CodesysClass readCodesysClass(const Pou &pou)
