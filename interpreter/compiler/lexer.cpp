@@ -312,7 +312,15 @@ private:
     QChar at(qsizetype i) const { return i < m_text.size() ? m_text[i] : QChar(); }
     bool startsWith(qsizetype i, std::u16string_view s) const
     {
-        return m_text.mid(i).startsWith(QStringView(s.data(), static_cast<qsizetype>(s.size())));
+        // Compared in place: a slice per call cost a tenth of the fuzzer's time.
+        const auto length = static_cast<qsizetype>(s.size());
+        if (i < 0 || m_text.size() - i < length)
+            return false;
+        for (qsizetype k = 0; k < length; ++k) {
+            if (m_text[i + k].unicode() != s[std::size_t(k)])
+                return false;
+        }
+        return true;
     }
 
     void push(TokenKind kind, qsizetype start)

@@ -22,8 +22,8 @@ inline constexpr int kMaxNesting = 1000;
 // readable again from the .xml it converts to.
 inline constexpr int kMaxTypeNesting = 40;
 
-// The stack the compiler runs on (compile, compileText, frontend::compileProject start a thread
-// with it when they are not on it already), so that the limits above hold on every platform and
+// The stack the compiler runs on (compile, compileText, frontend::compileProject hand their work
+// to a thread with it when they are not on one already), so that the limits above hold on every platform and
 // in every thread that asks for a compile: a GUI thread on Windows has 1 MB, a worker thread on
 // macOS 512 KB.
 inline constexpr std::size_t kCompilerStackBytes = std::size_t(64) * 1024 * 1024;
