@@ -5514,14 +5514,6 @@ Automatisch gespeichert: %2</translation>
             <translation>Es gibt keine Marke %1, zu der gesprungen werden kann.</translation>
         </message>
         <message>
-            <source>%1 is a Beremiz SVGHMI type, which IEC Studio does not support.</source>
-            <translation>%1 ist ein Beremiz-SVGHMI-Typ, den IEC Studio nicht unterstützt.</translation>
-        </message>
-        <message>
-            <source>declare the variable as %1</source>
-            <translation>deklarieren Sie die Variable als %1</translation>
-        </message>
-        <message>
             <source>This string is not closed on its line.</source>
             <translation>Diese Zeichenkette wird in ihrer Zeile nicht geschlossen.</translation>
         </message>
@@ -6500,6 +6492,14 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>%1 must implement the ABSTRACT %2, or be ABSTRACT itself.</source>
             <translation>%1 muss das ABSTRACT %2 implementieren oder selbst ABSTRACT sein.</translation>
+        </message>
+        <message>
+            <source>%1 is a type of Beremiz's SVGHMI, which IEC Studio does not have: its variables are read as %2 and no HMI is shown.</source>
+            <translation>%1 ist ein Typ von Beremiz' SVGHMI, das IEC Studio nicht hat: seine Variablen werden als %2 gelesen, und keine HMI wird angezeigt.</translation>
+        </message>
+        <message>
+            <source>watch and write them in the watch pane instead</source>
+            <translation>beobachten und schreiben Sie sie stattdessen im Fenster „Beobachtung“</translation>
         </message>
     </context>
     <context>

@@ -5508,14 +5508,6 @@ Autosaved: %2</source>
             <translation>没有可跳转的标号 %1。</translation>
         </message>
         <message>
-            <source>%1 is a Beremiz SVGHMI type, which IEC Studio does not support.</source>
-            <translation>%1 是 Beremiz SVGHMI 类型，IEC Studio 不支持。</translation>
-        </message>
-        <message>
-            <source>declare the variable as %1</source>
-            <translation>将该变量声明为 %1</translation>
-        </message>
-        <message>
             <source>This string is not closed on its line.</source>
             <translation>此字符串在本行内没有闭合。</translation>
         </message>
@@ -6494,6 +6486,14 @@ Autosaved: %2</source>
         <message>
             <source>%1 must implement the ABSTRACT %2, or be ABSTRACT itself.</source>
             <translation>%1 必须实现 ABSTRACT 的 %2，或者自身声明为 ABSTRACT。</translation>
+        </message>
+        <message>
+            <source>%1 is a type of Beremiz's SVGHMI, which IEC Studio does not have: its variables are read as %2 and no HMI is shown.</source>
+            <translation>%1 是 Beremiz SVGHMI 的类型，IEC Studio 没有 SVGHMI：这类变量按 %2 读取，不显示 HMI。</translation>
+        </message>
+        <message>
+            <source>watch and write them in the watch pane instead</source>
+            <translation>请改在监视窗格中查看和写入这些变量</translation>
         </message>
     </context>
     <context>

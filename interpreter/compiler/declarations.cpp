@@ -21,12 +21,17 @@ bool isShortLiteralPrefix(const QString &name)
         || upper == QLatin1String("LD");
 }
 
-// The variable types of Beremiz's SVGHMI extension (`key`: upper case). Worth naming: a student
-// who opens a Beremiz HMI project otherwise sees only "Unknown type".
-bool isSvgHmiType(const QString &key)
+// The variable types of Beremiz's SVGHMI extension (`key`: upper case) and the elementary type each
+// stands for (empty: not one of them). Beremiz's SVGHMI library declares HMI_BOOL as BOOL and so on,
+// and binds such variables to the web HMI; here they are plain variables, so the logic still runs.
+QString svgHmiBaseType(const QString &key)
 {
-    return key == QLatin1String("HMI_BOOL") || key == QLatin1String("HMI_INT") || key == QLatin1String("HMI_REAL")
-        || key == QLatin1String("HMI_STRING") || key == QLatin1String("HMI_NODE");
+    if (key == QLatin1String("HMI_NODE"))
+        return QStringLiteral("BOOL");
+    if (key == QLatin1String("HMI_BOOL") || key == QLatin1String("HMI_INT") || key == QLatin1String("HMI_REAL")
+        || key == QLatin1String("HMI_STRING"))
+        return key.mid(4);
+    return {};
 }
 
 } // namespace
@@ -138,12 +143,16 @@ const Type *Codegen::namedType(const QString &name, SourceLocation at, bool repo
         missingVendorLibrary(name, library, at);
         return nullptr;
     }
-    if (report && isSvgHmiType(k))
-        error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 is a Beremiz SVGHMI type, which IEC Studio does not support.").arg(name),
-            k == QLatin1String("HMI_NODE")
-                ? QString()
-                : QCoreApplication::translate("iec::interp::Compiler", "declare the variable as %1").arg(k.mid(4)));
-    else if (report)
+    if (const QString base = svgHmiBaseType(k); !base.isEmpty()) {
+        // One warning for the whole project, at the first such variable, like a missing library.
+        if (report && !m_reportedLibraries.contains(QStringLiteral("SVGHMI"))) {
+            m_reportedLibraries.insert(QStringLiteral("SVGHMI"));
+            warning(at, QCoreApplication::translate("iec::interp::Compiler", "%1 is a type of Beremiz's SVGHMI, which IEC Studio does not have: its variables are read as %2 and no HMI is shown.").arg(name, base),
+                QCoreApplication::translate("iec::interp::Compiler", "watch and write them in the watch pane instead"));
+        }
+        return namedType(base, at, report);
+    }
+    if (report)
         error(at, QCoreApplication::translate("iec::interp::Compiler", "Unknown type '%1'.").arg(name));
     return nullptr;
 }

@@ -53,6 +53,24 @@ END_METHOD
 END_FUNCTION_BLOCK
 )";
 
+// A block with an INTERNAL method and a property that can only be written.
+const char *const kGate = R"(
+FUNCTION_BLOCK Gate
+VAR lim : INT; END_VAR
+METHOD INTERNAL Twice : INT
+VAR_INPUT x : INT; END_VAR
+Twice := 2 * x;
+END_METHOD
+PROPERTY Limit : INT
+SET lim := Limit; END_SET
+END_PROPERTY
+METHOD Check : BOOL
+VAR_INPUT x : INT; END_VAR
+Check := x > lim;
+END_METHOD
+END_FUNCTION_BLOCK
+)";
+
 } // namespace
 
 class TestOop : public QObject
@@ -101,6 +119,11 @@ void TestOop::runs_data()
         "t := t + 1; hi := x / 10; lo := x MOD 10 + t;\nEND_METHOD\nEND_FUNCTION_BLOCK\n"
         "PROGRAM Main\nVAR m : M; h : INT; l : INT; END_VAR\nm.Split(x := 42, hi => h, lo => l);\nEND_PROGRAM",
         {"=> h=4; l=3", "=> h=4; l=3"});
+    // INTERNAL is callable anywhere in the project (CODESYS: within its namespace); a property
+    // with only a SET is written, and read through the block's own method.
+    row("internal method and a set-only property",
+        QByteArray(kGate) + "PROGRAM Main\nVAR g : Gate; r : INT; o : BOOL; n : INT; END_VAR\nn := n + 1;\ng.Limit := 2;\nr := g.Twice(n);\no := g.Check(r);\nEND_PROGRAM",
+        {"=> n=1; r=2; o=FALSE", "=> n=2; r=4; o=TRUE"});
 }
 
 void TestOop::errors_data()
@@ -115,6 +138,8 @@ void TestOop::errors_data()
                           "FUNCTION_BLOCK B EXTENDS A\nVAR r : INT; END_VAR\nr := THIS^.P();\nEND_FUNCTION_BLOCK\n"
                           "PROGRAM Main\nVAR a : A; b : B; r : INT; END_VAR\nb();\nr := a.P();\nEND_PROGRAM")
         << "Main:13:6: error: A.P is PROTECTED and cannot be called from here.";
+    QTest::newRow("set-only property read") << QString::fromLatin1(kGate) + "PROGRAM Main\nVAR g : Gate; r : INT; END_VAR\nr := g.Limit;\nEND_PROGRAM"
+                                            << "Main:18:6: error: The property Limit has no GET and cannot be read.";
     QTest::newRow("abstract instance") << "FUNCTION_BLOCK ABSTRACT A\nEND_FUNCTION_BLOCK\nPROGRAM Main\nVAR a : A; END_VAR\nEND_PROGRAM"
                                        << "Main:4:5: error: A is ABSTRACT; declare an instance of a function block that extends it.";
     QTest::newRow("final base") << "FUNCTION_BLOCK FINAL A\nEND_FUNCTION_BLOCK\nFUNCTION_BLOCK B EXTENDS A\nEND_FUNCTION_BLOCK\nPROGRAM Main\nEND_PROGRAM"

@@ -59,9 +59,6 @@ void TestSemantics::diagnostics_data()
         "Main:3:6: error: Unknown function 'Foo'.");
     row("unknown type", "PROGRAM Main\nVAR x : Motor; END_VAR\nEND_PROGRAM",
         "Main:2:9: error: Unknown type 'Motor'.");
-    row("Beremiz SVGHMI type", "PROGRAM Main\nVAR x : HMI_BOOL; END_VAR\nEND_PROGRAM",
-        "Main:2:9: error: HMI_BOOL is a Beremiz SVGHMI type, which IEC Studio does not support. "
-        "(hint: declare the variable as BOOL)");
     row("index out of range", "PROGRAM Main\nVAR a : ARRAY[1..10] OF INT; END_VAR\na[11] := 0;\nEND_PROGRAM",
         "Main:3:3: error: The index 11 is outside the range 1..10 of a.");
     row("exit outside a loop", "PROGRAM Main\nVAR x : INT; END_VAR\nEXIT;\nEND_PROGRAM",

@@ -22,7 +22,9 @@ private Q_SLOTS:
     void controllers() { check(); }
     void realTimeClock();
     void logger();
+    void vendorLibraryBlocks_data();
     void vendorLibraryBlocks();
+    void svgHmiVariablesRunAsPlainVariables();
     void unusedLibraryCostsNothing();
 };
 
@@ -128,20 +130,68 @@ void TestUtilLib::logger()
     QVERIFY(runtime.takeLog().empty());
 }
 
+void TestUtilLib::vendorLibraryBlocks_data()
+{
+    QTest::addColumn<QString>("first");  // the block Client uses first
+    QTest::addColumn<QString>("second"); // one more block of the same library
+    QTest::addColumn<QString>("library");
+    const auto row = [](const char *name, const char *first, const char *second, const char *library) {
+        QTest::newRow(name) << QString::fromLatin1(first) << QString::fromLatin1(second) << QString::fromLatin1(library);
+    };
+    row("OpenPLC TCP", "TCP_SEND", "TCP_CONNECT", "the OpenPLC TCP socket library");
+    row("OpenPLC UDP", "UDP_SEND", "UDP_RECEIVE", "the OpenPLC UDP socket library");
+    row("MQTT", "MQTT_PUBLISH", "MQTT_CONNECT", "an MQTT library");
+    row("PLCopen motion", "MC_Power", "MC_MoveAbsolute", "CODESYS SoftMotion (PLCopen motion control)");
+    row("SoftMotion", "SMC_Homing", "SMC_ReadNCFile", "CODESYS SoftMotion");
+    row("Beremiz Python", "PYTHON_EVAL", "PYTHON_POLL", "Beremiz's Python blocks");
+}
+
 void TestUtilLib::vendorLibraryBlocks()
 {
-    // One warning naming the library; Main runs since nothing it runs needs the library.
-    const QString unused = QStringLiteral("FUNCTION_BLOCK Client\nVAR s : TCP_SEND; c : TCP_CONNECT; END_VAR\ns(); c();\nEND_FUNCTION_BLOCK\n"
-                                          "PROGRAM Main\nVAR n : INT; END_VAR\nn := n + 1;\nEND_PROGRAM\n");
+    QFETCH(QString, first);
+    QFETCH(QString, second);
+    QFETCH(QString, library);
+    // One warning naming the library, at the first block only; Main runs since nothing it runs
+    // needs the library.
+    const QString unused = QStringLiteral("FUNCTION_BLOCK Client\nVAR a : %1; b : %2; END_VAR\na(); b();\nEND_FUNCTION_BLOCK\n"
+                                          "PROGRAM Main\nVAR n : INT; END_VAR\nn := n + 1;\nEND_PROGRAM\n").arg(first, second);
     Diagnostics diagnostics;
-    QVERIFY(compileText(unused, diagnostics));
+    const auto module = compileText(unused, diagnostics);
+    QVERIFY2(module, qPrintable(errorsOf(diagnostics)));
     QCOMPARE(diagnosticsText(diagnostics, false),
-             QStringLiteral("Client:2:9: warning: TCP_SEND is a block of the OpenPLC TCP socket library, which IEC Studio does not have; the POUs "
-                            "that use it cannot run. (hint: the rest of the project is still checked and runs)"));
+             QStringLiteral("Client:2:9: warning: %1 is a block of %2, which IEC Studio does not have; the POUs "
+                            "that use it cannot run. (hint: the rest of the project is still checked and runs)").arg(first, library));
+    Runtime runtime(module);
+    QVERIFY(runtime.runCycles(3));
+    QCOMPARE(runtime.read(QStringLiteral("Main.n")).value_or(QStringLiteral("?")), QStringLiteral("3"));
     // Run by a task: the project cannot run, and says why.
     Diagnostics used;
     QVERIFY(!compileText(QString(unused).replace(QStringLiteral("n := n + 1;"), QStringLiteral("n := n + 1;\nc();")).replace(QStringLiteral("n : INT;"), QStringLiteral("n : INT; c : Client;")), used));
-    QCOMPARE(errorsOf(used), QStringLiteral("Main:0:0: error: Main cannot run: Client uses the OpenPLC TCP socket library."));
+    QCOMPARE(errorsOf(used), QStringLiteral("Main:0:0: error: Main cannot run: Client uses %1.").arg(library));
+}
+
+// Beremiz's SVGHMI types are plain variables of the type each stands for: one warning for the
+// project, and the logic runs (HMI_NODE is a BOOL in Beremiz's SVGHMI library too).
+void TestUtilLib::svgHmiVariablesRunAsPlainVariables()
+{
+    Diagnostics diagnostics;
+    const auto module = compileText(QStringLiteral("PROGRAM Main\nVAR go : HMI_BOOL := TRUE; n : HMI_INT; r : HMI_REAL; s : HMI_STRING; root : HMI_NODE; END_VAR\n"
+                                                   "IF go THEN n := n + 1; r := r + 0.5; END_IF\ns := CONCAT('n=', INT_TO_STRING(n)); root := n > 1;\nEND_PROGRAM\n"
+                                                   "FUNCTION_BLOCK Panel\nVAR_INPUT lamp : HMI_BOOL; END_VAR\nEND_FUNCTION_BLOCK\n"),
+                                    diagnostics);
+    QVERIFY2(module, qPrintable(errorsOf(diagnostics)));
+    QCOMPARE(diagnosticsText(diagnostics, false),
+             QStringLiteral("Main:2:10: warning: HMI_BOOL is a type of Beremiz's SVGHMI, which IEC Studio does not have: its variables are read as BOOL "
+                            "and no HMI is shown. (hint: watch and write them in the watch pane instead)"));
+    Runtime runtime(module);
+    QStringList cycles;
+    for (int cycle = 0; cycle < 3; ++cycle) {
+        QVERIFY(runtime.runCycles(1));
+        cycles << QStringList({runtime.read(QStringLiteral("Main.n")).value_or(QStringLiteral("?")), runtime.read(QStringLiteral("Main.r")).value_or(QStringLiteral("?")),
+                               runtime.read(QStringLiteral("Main.s")).value_or(QStringLiteral("?")), runtime.read(QStringLiteral("Main.root")).value_or(QStringLiteral("?"))})
+                      .join(QLatin1Char(' '));
+    }
+    QCOMPARE(cycles, QStringList({"1 0.5 'n=1' FALSE", "2 1.0 'n=2' TRUE", "3 1.5 'n=3' TRUE"}));
 }
 
 void TestUtilLib::unusedLibraryCostsNothing()
