@@ -338,6 +338,12 @@ SearchResult ProjectSearch::find(const model::Project &project, const SearchQuer
             findInText(*pattern, interp::frontend::printCodesysMember(pou, member.name), base, result.hits);
         }
     }
+    for (const QString &name : interp::frontend::codesysInterfaceNames(project)) {
+        SearchHit base;
+        base.place = name;
+        base.interfaceName = name;
+        findInText(*pattern, interp::frontend::printCodesysInterface(project, name), base, result.hits);
+    }
     forEachDeclaration(project, [&](SearchHit base, const model::VarList &, const model::Variable &variable) {
         const QString line = variableLine(variable);
         if (!matches(*pattern, line))

@@ -23,6 +23,7 @@ struct SearchHit {
     std::optional<model::BodyRef> body;        // a body's text or element, or a POU's declarations
     std::optional<editors::GlobalListRef> list; // a global variable list's declaration
     QString member;                            // a method or property of body->pou: a line of its text
+    QString interfaceName;                     // an INTERFACE (no body): a line of its text
     QString variable;                          // declarations: the variable declared there
     int line = 0;                              // text: 1-based line and column, length of the match
     int column = 0;
@@ -53,7 +54,7 @@ class ProjectSearch
 
 public:
     // Every match of `query` in the ST/IL bodies of POUs, actions and transitions, the text of
-    // methods and properties (as their tab shows it, docs/ide.md), the texts of
+    // methods, properties and interfaces (as their tab shows it, docs/ide.md), the texts of
     // graphical elements (variables, expressions, block types and instances, step names,
     // conditions, action names, comments), the POUs' declarations and the global variable lists.
     // In the order of the project tree; a line with several matches gives several hits.

@@ -1,7 +1,7 @@
 #include "app/searchresultspane.h"
 
 #include "app/documentarea.h"
-#include "app/membereditor.h"
+#include "app/adddatatexteditor.h"
 #include "editors/declarations/declarationeditor.h"
 #include "editors/globals/globallisteditor.h"
 #include "editors/text/codeeditor.h"
@@ -145,15 +145,16 @@ bool showSearchHit(DocumentArea &documents, const SearchHit &hit)
         auto *editor = qobject_cast<editors::GlobalListEditor *>(documents.openGlobalList(*hit.list));
         return editor && editor->showVariable(hit.variable);
     }
-    if (!hit.body)
-        return false;
-    if (!hit.member.isEmpty()) {
-        auto *member = qobject_cast<MemberEditor *>(documents.openMember(hit.body->pou, hit.member));
-        if (!member || hit.line < 1 || hit.line > member->editor()->document()->blockCount())
+    if (!hit.interfaceName.isEmpty() || (hit.body && !hit.member.isEmpty())) {
+        auto *text = qobject_cast<AddDataTextEditor *>(hit.interfaceName.isEmpty() ? documents.openMember(hit.body->pou, hit.member)
+                                                                                    : documents.openInterface(hit.interfaceName));
+        if (!text || hit.line < 1 || hit.line > text->editor()->document()->blockCount())
             return false;
-        selectMatch(member->editor(), hit);
+        selectMatch(text->editor(), hit);
         return true;
     }
+    if (!hit.body)
+        return false;
     QWidget *document = documents.openBody(*hit.body);
     if (!document)
         return false;

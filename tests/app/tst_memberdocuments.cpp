@@ -119,6 +119,7 @@ private Q_SLOTS:
     void findInProjectSearchesMembers();
     void interfacesAreEditedAsText();
     void addingAndDeletingInterfacesAreUndoSteps();
+    void findInProjectSearchesInterfaces();
 
 private:
     QTemporaryDir m_configHome;
@@ -498,6 +499,27 @@ void TestMemberDocuments::addingAndDeletingInterfacesAreUndoSteps()
     stack.redo();
     QCOMPARE(interp::frontend::codesysInterfaceNames(window.projectModel().project()),
         (QStringList {QStringLiteral("IShape"), QStringLiteral("IMove")}));
+}
+
+void TestMemberDocuments::findInProjectSearchesInterfaces()
+{
+    MainWindow window;
+    window.projectModel().reset(interp::frontend::readIecText(kShapeSource, QStringLiteral("Shapes")).project);
+    // The prototype is in Square's method and in the interface, in the tree's order.
+    const SearchResult result = ProjectSearch::find(window.projectModel().project(), {QStringLiteral("area : int")});
+    QCOMPARE(result.hits.size(), size_t(2));
+    QCOMPARE(result.hits[0].place, QStringLiteral("Square.Area"));
+    const SearchHit &hit = result.hits[1];
+    QCOMPARE(hit.place, QStringLiteral("IShape"));
+    QCOMPARE(hit.interfaceName, QStringLiteral("IShape"));
+    QCOMPARE(hit.line, 2);
+    QCOMPARE(hit.column, 8);
+    QCOMPARE(hit.text, QStringLiteral("METHOD Area : INT"));
+    QVERIFY(showSearchHit(window.documents(), hit));
+    auto *editor = qobject_cast<InterfaceEditor *>(window.documents().currentWidget());
+    QVERIFY(editor);
+    QCOMPARE(window.documents().tabText(window.documents().currentIndex()), QStringLiteral("IShape"));
+    QCOMPARE(editor->editor()->textCursor().selectedText(), QStringLiteral("Area : INT"));
 }
 
 QTEST_MAIN(TestMemberDocuments)
