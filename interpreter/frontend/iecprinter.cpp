@@ -312,6 +312,21 @@ QString printObjectOrientation(const model::Pou &pou, QString &header)
     return members;
 }
 
+// The POU's body or one of its actions' (`where`: Pou or Pou.Action): text as it is, a chart as
+// textual SFC; a chart the text form cannot say stays a comment.
+QString printPart(const model::Pou &pou, const model::Body &body, const QString &where, std::vector<PrintWarning> *warnings)
+{
+    QStringList dropped;
+    const auto chart = body.language() == model::BodyLanguage::SFC ? sfc::printChart(pou, body, where, nullptr, &dropped) : std::nullopt;
+    if (!chart)
+        return printBody(body, where, warnings);
+    if (warnings && !dropped.isEmpty())
+        warnings->push_back({where,
+            QCoreApplication::translate("iec::interp::Compiler", "The entry, exit and active actions and the times of steps %1 have no IEC text form and were left out.")
+                .arg(dropped.join(QStringLiteral(", ")))});
+    return *chart;
+}
+
 } // namespace
 
 QString printPou(const model::Pou &pou, std::vector<PrintWarning> *warnings)
@@ -319,24 +334,11 @@ QString printPou(const model::Pou &pou, std::vector<PrintWarning> *warnings)
     QString header = pouHeader(pou);
     const QString members = printObjectOrientation(pou, header);
     QString text = header + printInterface(pou) + members;
-    const model::Body *body = pou.body();
-    QString chartProblem;
-    QStringList dropped;
-    const auto chart = body && body->language() == model::BodyLanguage::SFC
-        ? sfc::printChart(pou, &chartProblem, &dropped)
-        : std::nullopt;
-    if (chart) { // textual SFC
-        text += *chart;
-        if (warnings && !dropped.isEmpty())
-            warnings->push_back({pou.name,
-                QCoreApplication::translate("iec::interp::Compiler", "The entry, exit and active actions and the times of steps %1 have no IEC text form and were left out.")
-                    .arg(dropped.join(QStringLiteral(", ")))});
-    } else if (body) { // a chart the text form cannot say (chartProblem) stays a comment
-        text += printBody(*body, pou.name, warnings);
-    }
+    if (const model::Body *body = pou.body())
+        text += printPart(pou, *body, pou.name, warnings);
     for (const model::PouAction &action : pou.actions) {
         text += QStringLiteral("ACTION %1:\n").arg(action.name);
-        text += printBody(action.body, pou.name + QLatin1Char('.') + action.name, warnings);
+        text += printPart(pou, action.body, pou.name + QLatin1Char('.') + action.name, warnings);
         text += QStringLiteral("END_ACTION\n");
     }
     return text + QStringLiteral("END_") + pouKeyword(pou.kind) + QLatin1Char('\n');

@@ -385,6 +385,15 @@ model::Body textBody(ast::Language language, const QString &text)
     return body;
 }
 
+// An action's body: a textual chart becomes a graphical SFC body as the POU's own chart does
+// (`where`: Pou.Action); other text is kept as written.
+model::Body actionBody(const ast::Body &parsed, const QString &text, const QString &where, Diagnostics &diagnostics)
+{
+    if (parsed.language == ast::Language::SFC && parsed.sfc)
+        return sfc::chartToModel(*parsed.sfc, where, diagnostics);
+    return textBody(parsed.language, text);
+}
+
 // Methods, properties, EXTENDS and IMPLEMENTS go where CODESYS keeps them: the POU's addData
 // and its interface's (codesysmembers.h). The parse of the whole text reported their errors.
 void addObjectOrientation(model::Pou &result, const ast::Pou &pou, const PouTexts &texts)
@@ -431,7 +440,7 @@ model::Pou toModel(const ast::Pou &pou, const PouTexts &texts, Diagnostics &diag
         for (size_t i = 0; i < pou.body.sfc->actions.size() && i < texts.actions.size(); ++i) {
             model::PouAction action;
             action.name = texts.actions[i].first;
-            action.body = textBody(pou.body.sfc->actions[i].body.language, texts.actions[i].second);
+            action.body = actionBody(pou.body.sfc->actions[i].body, texts.actions[i].second, pou.name + QLatin1Char('.') + action.name, diagnostics);
             result.actions.push_back(std::move(action));
         }
         return result;
@@ -440,7 +449,7 @@ model::Pou toModel(const ast::Pou &pou, const PouTexts &texts, Diagnostics &diag
     for (size_t i = 0; i < pou.actions.size() && i < texts.actions.size(); ++i) {
         model::PouAction action;
         action.name = texts.actions[i].first;
-        action.body = textBody(pou.actions[i].body.language, texts.actions[i].second);
+        action.body = actionBody(pou.actions[i].body, texts.actions[i].second, pou.name + QLatin1Char('.') + action.name, diagnostics);
         result.actions.push_back(std::move(action));
     }
     return result;

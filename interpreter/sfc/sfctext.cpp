@@ -280,16 +280,27 @@ std::optional<QString> conditionText(const model::Body &body)
 
 std::optional<QString> printChart(const model::Pou &pou, QString *problem, QStringList *dropped)
 {
+    const model::Body *body = pou.body();
+    if (!body) {
+        if (problem)
+            *problem = QStringLiteral("it is not a chart");
+        return std::nullopt;
+    }
+    return printChart(pou, *body, pou.name, problem, dropped);
+}
+
+std::optional<QString> printChart(const model::Pou &pou, const model::Body &body, const QString &where, QString *problem,
+    QStringList *dropped)
+{
     const auto fail = [&](const QString &why) -> std::optional<QString> {
         if (problem)
             *problem = why;
         return std::nullopt;
     };
-    const model::Body *body = pou.body();
-    if (!body || body->language() != model::BodyLanguage::SFC)
+    if (body.language() != model::BodyLanguage::SFC)
         return fail(QStringLiteral("it is not a chart"));
     Diagnostics diagnostics;
-    const Chart chart = buildChart(*body, pou.name, diagnostics);
+    const Chart chart = buildChart(body, where, diagnostics);
     if (diagnostics.hasErrors())
         return fail(diagnostics.all().front().message);
     if (!chart.macros.empty())

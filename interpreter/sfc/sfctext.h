@@ -23,6 +23,9 @@ model::Body chartToModel(const ast::SfcChart &chart, const QString &pou, Diagnos
 // (macro steps, inline action bodies, conditions drawn as networks, structure errors). Step
 // options (entry/exit/active actions, times) have no text form and are dropped (`dropped`).
 std::optional<QString> printChart(const model::Pou &pou, QString *problem, QStringList *dropped = nullptr);
+// The same for a chart that is `pou`'s body or one of its actions' (`where`: Pou.Action).
+std::optional<QString> printChart(const model::Pou &pou, const model::Body &chart, const QString &where, QString *problem,
+    QStringList *dropped = nullptr);
 
 // IEC text of an expression (ast::sourceText).
 QString expressionText(const ast::Expr &expr);

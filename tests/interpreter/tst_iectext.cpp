@@ -75,6 +75,14 @@ void TestIecText::printsWhatItRead_data()
                           "VAR RETAIN\n    q AT %QX0.1 : BOOL;\n    arr : ARRAY[0..3] OF INT := [2(1), 3, 4];\n    s : "
                           "P := (x := 2);\nEND_VAR\n"
                           "F := a + b;\nEND_FUNCTION\n");
+    // The action's chart is read into a graphical SFC body and printed back as textual SFC.
+    QTest::newRow("chart in an action")
+        << QStringLiteral("PROGRAM Main\nSeq();\nACTION Seq:\nINITIAL_STEP A: Beep(N); END_STEP\n"
+                          "TRANSITION FROM A TO B := TRUE; END_TRANSITION\nSTEP B: END_STEP\nTRANSITION FROM B TO A := TRUE; END_TRANSITION\n"
+                          "END_ACTION\nACTION Beep:\n;\nEND_ACTION\nEND_PROGRAM\n")
+        << QStringLiteral("PROGRAM Main\nSeq();\nACTION Seq:\nINITIAL_STEP A:\n    Beep(N);\nEND_STEP\nSTEP B:\nEND_STEP\n"
+                          "TRANSITION FROM A TO B := TRUE; END_TRANSITION\nTRANSITION FROM B TO A := TRUE; END_TRANSITION\n"
+                          "END_ACTION\nACTION Beep:\n;\nEND_ACTION\nEND_PROGRAM\n");
     QTest::newRow("configuration with tasks and instances")
         << QStringLiteral(
                "PROGRAM Main\nEND_PROGRAM\nCONFIGURATION Cfg\nVAR_GLOBAL g : INT; END_VAR\nRESOURCE R ON PLC\n"

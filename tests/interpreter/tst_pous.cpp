@@ -4,10 +4,14 @@
 #include "tracerunner.h"
 
 #include "interpreter/compiler/parser.h"
+#include "interpreter/frontend/iecreader.h"
 #include "interpreter/frontend/projectsource.h"
+#include "model/plcopen/reader.h"
+#include "model/plcopen/writer.h"
 
 #include <QTest>
 
+using namespace iec;
 using namespace iec::interp;
 using namespace iec::interp::testing;
 using namespace iec::interp::testing::table;
@@ -22,6 +26,31 @@ QString runChart(const QString &source, const QStringList &steps)
     if (diagnostics.hasErrors())
         return QStringLiteral("does not parse: ") + errorsOf(diagnostics);
     const auto module = frontend::compileUnit(unit, diagnostics);
+    if (!module)
+        return QStringLiteral("does not compile: ") + errorsOf(diagnostics);
+    Runtime runtime(module);
+    return runSteps(runtime, steps);
+}
+
+// The same program as a PLCopen file: the text read into the model (each textual chart becomes a
+// graphical SFC body), written as TC6 XML, read back and compiled from the model.
+QString runChartThroughPlcopen(const QString &source, const QStringList &steps)
+{
+    const frontend::TextReadResult text = frontend::readIecText(source, QStringLiteral("Charts"));
+    if (text.diagnostics.hasErrors())
+        return QStringLiteral("does not read: ") + errorsOf(text.diagnostics);
+    int charts = 0;
+    for (const model::Pou &pou : text.project.types.pous) {
+        for (const model::PouAction &action : pou.actions)
+            charts += action.body.language() == model::BodyLanguage::SFC ? 1 : 0;
+    }
+    if (charts != 1)
+        return QStringLiteral("%1 actions are charts").arg(charts);
+    const auto read = model::plcopen::readProject(model::plcopen::writeProject(text.project));
+    if (!read.isProject)
+        return QStringLiteral("the written file does not read back");
+    Diagnostics diagnostics;
+    const auto module = frontend::compileProject(read.project, diagnostics);
     if (!module)
         return QStringLiteral("does not compile: ") + errorsOf(diagnostics);
     Runtime runtime(module);
@@ -100,6 +129,7 @@ void TestPous::chartsInActions()
     QFETCH(QString, source);
     QFETCH(QStringList, steps);
     QCOMPARE(runChart(source, steps), QString());
+    QCOMPARE(runChartThroughPlcopen(source, steps), QString());
 }
 
 void TestPous::processImage_data()
