@@ -10,6 +10,7 @@
 #include "editors/text/foldingregions.h"
 #include "editors/text/inputassistant.h"
 #include "editors/text/linenumberarea.h"
+#include "model/filetext.h"
 
 #include <QAbstractItemView>
 #include <QCompleter>
@@ -622,13 +623,18 @@ bool CodeEditor::canInsertFromMimeData(const QMimeData *source) const
 
 void CodeEditor::insertFromMimeData(const QMimeData *source)
 {
+    if (isReadOnly())
+        return;
     const QString callType = mimeCallMimeType(m_language);
-    if (!source->hasFormat(callType) || isReadOnly()) {
+    const QString text = source->hasFormat(callType) ? QString::fromUtf8(source->data(callType)) : source->text();
+    if (!source->hasFormat(callType) && !source->hasText()) {
         QPlainTextEdit::insertFromMimeData(source);
         return;
     }
+    // Only what the project file can keep: a control character copied from elsewhere would be
+    // lost or make the file unreadable when it is saved (model/filetext.h).
     QTextCursor cursor = textCursor();
-    cursor.insertText(QString::fromUtf8(source->data(callType)));
+    cursor.insertText(model::withoutCharactersAFileCannotKeep(text));
     setTextCursor(cursor);
 }
 

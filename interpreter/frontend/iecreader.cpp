@@ -2,6 +2,7 @@
 
 #include "interpreter/compiler/astdump.h"
 #include "interpreter/compiler/compilerstack.h"
+#include "model/filetext.h"
 #include "interpreter/compiler/lexer.h"
 #include "interpreter/compiler/parser.h"
 #include "interpreter/frontend/codesysmembers.h"
@@ -486,7 +487,7 @@ void reportUnstorableCharacters(QStringView text, Diagnostics &diagnostics)
     int column = 1;
     for (const QChar c : text) {
         const char16_t u = c.unicode();
-        if ((u < 0x20 && u != u'\t' && u != u'\n' && u != u'\r') || u == 0xFFFE || u == 0xFFFF) {
+        if (!model::fileCanKeep(u)) {
             diagnostics.error({}, {line, column},
                 QCoreApplication::translate("iec::interp::Compiler",
                     "The text holds the control character U+%1, which a project file cannot keep; remove it.")

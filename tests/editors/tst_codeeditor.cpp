@@ -7,6 +7,7 @@
 
 #include <QAbstractItemView>
 #include <QApplication>
+#include <QClipboard>
 #include <QCompleter>
 #include <QDialogButtonBox>
 #include <QPushButton>
@@ -101,6 +102,7 @@ private Q_SLOTS:
     void inputAssistantInsertsAnIlOperator();
     void inputAssistantCategories();
     void goToDefinitionSignal();
+    void pasteDropsCharactersAFileCannotKeep();
     void textEditedIsDebouncedAndSkipsSetBodyText();
 };
 
@@ -608,6 +610,22 @@ void TestCodeEditor::inputAssistantCategories()
     InputAssistantDialog st(TextLanguage::ST, nullptr);
     QCOMPARE(st.itemTexts().first(), QStringLiteral(":="));
     QVERIFY(!st.itemTexts().contains(QStringLiteral("LD")));
+}
+
+// Ctrl+V of text with control characters (a NUL once cut a saved body short): they are dropped,
+// tabs and line breaks stay, and the paste is one undo step.
+void TestCodeEditor::pasteDropsCharactersAFileCannotKeep()
+{
+    CodeEditor editor;
+    editor.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&editor));
+    editor.setBodyText(QStringLiteral("x := 1;"));
+    placeCursor(editor, 7);
+    QApplication::clipboard()->setText(QStringLiteral("\n\ty := 2;\x01 (* a") + QChar(0) + QStringLiteral("b\x1b *)") + QChar(0xFFFF));
+    QTest::keyClick(&editor, Qt::Key_V, Qt::ControlModifier);
+    QCOMPARE(editor.toPlainText(), QStringLiteral("x := 1;\n\ty := 2; (* ab *)"));
+    editor.undo();
+    QCOMPARE(editor.toPlainText(), QStringLiteral("x := 1;"));
 }
 
 void TestCodeEditor::goToDefinitionSignal()
