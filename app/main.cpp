@@ -15,7 +15,7 @@ int main(int argc, char *argv[])
     parser.setApplicationDescription(QStringLiteral("IEC 61131-3 development environment"));
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addPositionalArgument(QStringLiteral("project"), QStringLiteral("PLCopen XML project to open."));
+    parser.addPositionalArgument(QStringLiteral("project"), QStringLiteral("PLCopen XML project (or IEC 61131-3 text, .st) to open."));
     parser.process(application);
 
     iec::app::MainWindow window;

@@ -9,6 +9,7 @@
 #include "app/searchactions.h"
 #include "app/searchresultspane.h"
 #include "app/globallistcommands.h"
+#include "app/importexport.h"
 #include "app/importexportactions.h"
 #include "app/listmenus.h"
 #include "app/messagespane.h"
@@ -458,13 +459,41 @@ bool MainWindow::loadProject(const QString &path, QString *error)
                                                 : result.diagnostics.front().message;
         return false;
     }
+    adoptProject(std::move(result.project));
+    return true;
+}
+
+bool MainWindow::loadIecText(const QString &path, QString *error)
+{
+    ImportExport::Read read = ImportExport::read(path);
+    m_messages->model().clear();
+    m_messages->model().setMessages(QStringLiteral("import"), read.messages);
+    const auto firstError = std::find_if(read.messages.cbegin(), read.messages.cend(),
+        [](const Message &message) { return message.severity == Message::Severity::Error; });
+    if (read.project && firstError == read.messages.cend()) {
+        adoptProject(std::move(*read.project));
+        return true;
+    }
+    if (error) {
+        const QString fileName = QFileInfo(path).fileName();
+        if (firstError == read.messages.cend())
+            *error = tr("%1 cannot be read.").arg(fileName);
+        else if (firstError->line > 0)
+            *error = tr("%1, line %2: %3").arg(fileName).arg(firstError->line).arg(firstError->text);
+        else
+            *error = firstError->text;
+    }
+    return false;
+}
+
+void MainWindow::adoptProject(model::Project project)
+{
     // The project shown so far is replaced on purpose (maybeSave asked), so its recovery file goes.
     m_recovery->discardCurrent();
-    m_projectModel->reset(std::move(result.project));
+    m_projectModel->reset(std::move(project));
     m_undoStacks->clear();
     m_documents->markTypingSaved();
     m_recoveredUnsaved = false;
-    return true;
 }
 
 void MainWindow::setCurrentFile(const QString &path)
@@ -480,9 +509,10 @@ void MainWindow::setCurrentFile(const QString &path)
 
 bool MainWindow::openProject(const QString &path, QString *error)
 {
-    if (!loadProject(path, error))
+    const bool text = ImportExport::formatOf(path) == ImportExport::Format::IecText;
+    if (!(text ? loadIecText(path, error) : loadProject(path, error)))
         return false;
-    setCurrentFile(path);
+    setCurrentFile(text ? QString() : path);
     openMainProgram();
     return true;
 }
@@ -635,7 +665,7 @@ void MainWindow::openProjectInteractive()
     if (!maybeSave())
         return;
     const QString path = QFileDialog::getOpenFileName(
-        this, tr("Open Project"), QFileInfo(m_currentFile).path(), tr("PLCopen XML projects (*.xml);;All files (*)"));
+        this, tr("Open Project"), QFileInfo(m_currentFile).path(), tr("PLCopen XML projects (*.xml);;IEC 61131-3 text (*.st *.iec *.txt);;All files (*)"));
     if (path.isEmpty())
         return;
     QString error;

@@ -90,7 +90,9 @@ public:
     [[nodiscard]] bool hasUnsavedChanges() const;
 
     // Non-interactive file operations (the menu commands wrap them with dialogs). On failure they
-    // return false and say why in `error`; the open project stays as it was.
+    // return false and say why in `error`; the open project stays as it was. An IEC text file
+    // (.st, .iec, .txt) opens as a new untitled project: Save asks where its PLCopen file goes, so
+    // the text is never overwritten.
     bool openProject(const QString &path, QString *error = nullptr);
     bool saveProject(const QString &path, QString *error = nullptr);
     void newProject();
@@ -160,6 +162,10 @@ private:
     void updateActiveUndoStack();
     // Reads a project file and shows it (no history, nothing unsaved); the caller says whose it is.
     bool loadProject(const QString &path, QString *error);
+    // Reads IEC text into a project and shows it, refused with the first error when it has one.
+    bool loadIecText(const QString &path, QString *error);
+    // Shows `project` in place of the one shown so far.
+    void adoptProject(model::Project project);
     void setCurrentFile(const QString &path);
     // Asks whether to save unsaved changes; false when the user cancels.
     bool maybeSave();

@@ -750,10 +750,6 @@
             <translation>Projekt öffnen</translation>
         </message>
         <message>
-            <source>PLCopen XML projects (*.xml);;All files (*)</source>
-            <translation>PLCopen-XML-Projekte (*.xml);;Alle Dateien (*)</translation>
-        </message>
-        <message>
             <source>The project could not be opened: %1</source>
             <translation>Das Projekt konnte nicht geöffnet werden: %1</translation>
         </message>
@@ -886,6 +882,18 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>Trace</source>
             <translation>Trace</translation>
+        </message>
+        <message>
+            <source>%1 cannot be read.</source>
+            <translation>%1 kann nicht gelesen werden.</translation>
+        </message>
+        <message>
+            <source>%1, line %2: %3</source>
+            <translation>%1, Zeile %2: %3</translation>
+        </message>
+        <message>
+            <source>PLCopen XML projects (*.xml);;IEC 61131-3 text (*.st *.iec *.txt);;All files (*)</source>
+            <translation>PLCopen-XML-Projekte (*.xml);;IEC 61131-3-Text (*.st *.iec *.txt);;Alle Dateien (*)</translation>
         </message>
     </context>
     <context>

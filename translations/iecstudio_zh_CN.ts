@@ -749,10 +749,6 @@
             <translation>打开项目</translation>
         </message>
         <message>
-            <source>PLCopen XML projects (*.xml);;All files (*)</source>
-            <translation>PLCopen XML 项目 (*.xml);;所有文件 (*)</translation>
-        </message>
-        <message>
             <source>The project could not be opened: %1</source>
             <translation>无法打开项目：%1</translation>
         </message>
@@ -885,6 +881,18 @@ Autosaved: %2</source>
         <message>
             <source>Trace</source>
             <translation>跟踪</translation>
+        </message>
+        <message>
+            <source>%1 cannot be read.</source>
+            <translation>无法读取 %1。</translation>
+        </message>
+        <message>
+            <source>%1, line %2: %3</source>
+            <translation>%1，第 %2 行：%3</translation>
+        </message>
+        <message>
+            <source>PLCopen XML projects (*.xml);;IEC 61131-3 text (*.st *.iec *.txt);;All files (*)</source>
+            <translation>PLCopen XML 项目 (*.xml);;IEC 61131-3 文本 (*.st *.iec *.txt);;所有文件 (*)</translation>
         </message>
     </context>
     <context>

@@ -478,8 +478,12 @@ OnlineController::Wanted OnlineController::wanted(const QList<DocumentArea::Onli
             addName(name);
         // Chart editors get their chart through chartState (the SFC engine's view of the instance).
         const QString instance = document.view->onlineInstance();
-        if (document.view->wantsChartState() && !instance.isEmpty() && document.body.part == model::BodyRef::Part::Pou)
-            wanted.charts.emplace_back(instance, document.body.pou);
+        if (!document.view->wantsChartState() || instance.isEmpty())
+            continue;
+        if (document.body.part == model::BodyRef::Part::Pou)
+            wanted.charts.push_back({instance, document.body.pou, {}});
+        else if (document.body.part == model::BodyRef::Part::Action) // a chart in an action
+            wanted.charts.push_back({instance, document.body.pou, document.body.name});
     }
     return wanted;
 }
@@ -489,9 +493,9 @@ WatchRequest OnlineController::requestFor(const Wanted &wanted) const
     WatchRequest request;
     request.names = wanted.names;
     const model::Project &project = m_projectModel.project();
-    for (const auto &[instance, id] : wanted.charts) {
-        if (const model::Pou *pou = project.findPou(id))
-            request.charts.push_back({instance, *pou});
+    for (const Wanted::Chart &chart : wanted.charts) {
+        if (const model::Pou *pou = project.findPou(chart.pou))
+            request.charts.push_back({chart.instance, *pou, chart.action});
     }
     return request;
 }

@@ -114,7 +114,13 @@ private:
     // cheap to build and compare on every snapshot; the POUs are copied only when it changed.
     struct Wanted {
         QStringList names;
-        std::vector<std::pair<QString, model::PouId>> charts;
+        struct Chart {
+            QString instance;
+            model::PouId pou;
+            QString action; // empty: the POU's own chart
+            bool operator==(const Chart &) const = default;
+        };
+        std::vector<Chart> charts;
         bool operator==(const Wanted &) const = default;
     };
     void updateWatchRequest();

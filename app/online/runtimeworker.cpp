@@ -365,7 +365,7 @@ void RuntimeWorker::fillValues(interp::RuntimeSnapshot &snapshot, const interp::
             snapshot.values.insert(watched.name, runtime.read(*watched.ref));
     }
     for (const ChartRequest &chart : m_request.charts) {
-        if (std::optional<interp::sfc::ChartState> state = interp::sfc::chartState(runtime, chart.pou, chart.instance))
+        if (std::optional<interp::sfc::ChartState> state = interp::sfc::chartState(runtime, chart.pou, chart.instance, chart.action))
             snapshot.charts.push_back(std::move(*state));
     }
 }

@@ -22,10 +22,11 @@ namespace iec::app {
 enum class RunSpeed { RealTime, Times10, AsFastAsPossible };
 
 // A chart an open SFC editor shows: the POU (as it was at login; online mode never changes the
-// model) and the instance whose state it wants.
+// model), the instance whose state it wants, and the action when the chart is an action's body.
 struct ChartRequest {
     QString instance;
     model::Pou pou;
+    QString action;
 };
 
 // What the open views want in each snapshot.

@@ -63,7 +63,8 @@ Body newChartBody()
 SfcEditor::SfcEditor(ProjectModel &model, BodyRef ref, QUndoStack *undoStack, QWidget *parent)
     : DiagramEditor(model, std::move(ref), undoStack, std::make_unique<SfcPolicy>(), parent)
 {
-    setOverlayMapper(std::make_unique<SfcOverlayMapper>(sfcPolicy()));
+    setOverlayMapper(std::make_unique<SfcOverlayMapper>(sfcPolicy(),
+        bodyRef().part == model::BodyRef::Part::Action ? bodyRef().name : QString()));
     m_levelLabel = new QLabel;
     m_levelLabel->setObjectName(QStringLiteral("sfcLevelLabel"));
     addHeaderWidget(m_levelLabel);

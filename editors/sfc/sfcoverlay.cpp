@@ -81,7 +81,7 @@ QString stepNameOf(const Element &e)
 
 void SfcOverlayMapper::apply(DiagramScene &scene, const interp::RuntimeSnapshot &snapshot, const QString &instance)
 {
-    const ChartLookup chart(snapshot.chart(instance), m_policy.macroPath().empty());
+    const ChartLookup chart(snapshot.chart(instance, m_action), m_policy.macroPath().empty());
     const auto stepActive = [&](quint64 localId, const Element &e) {
         const interp::sfc::StepState *state = chart.step(localId, stepNameOf(e));
         return state && state->active ? state : nullptr;

@@ -15,8 +15,10 @@ class SfcPolicy;
 class SfcOverlayMapper : public OverlayMapper
 {
 public:
-    explicit SfcOverlayMapper(const SfcPolicy &policy)
+    // `action`: the action whose body the chart is (empty: the POU's own chart).
+    SfcOverlayMapper(const SfcPolicy &policy, QString action)
         : m_policy(policy)
+        , m_action(std::move(action))
     { }
 
     [[nodiscard]] bool wantsChartState() const override { return true; }
@@ -25,6 +27,7 @@ public:
 
 private:
     const SfcPolicy &m_policy;
+    QString m_action;
 };
 
 // "T#1m3s200ms": a step's elapsed time as an IEC literal.

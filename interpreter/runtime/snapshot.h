@@ -61,10 +61,11 @@ struct RuntimeSnapshot {
     {
         return forced.contains(name.toUpper());
     }
-    [[nodiscard]] const sfc::ChartState *chart(const QString &instance) const
+    // The chart of `instance`'s POU, or with `action` the chart of that action.
+    [[nodiscard]] const sfc::ChartState *chart(const QString &instance, const QString &action = {}) const
     {
         for (const sfc::ChartState &state : charts)
-            if (state.instance.compare(instance, Qt::CaseInsensitive) == 0)
+            if (state.instance.compare(instance, Qt::CaseInsensitive) == 0 && state.action.compare(action, Qt::CaseInsensitive) == 0)
                 return &state;
         return nullptr;
     }

@@ -22,17 +22,38 @@ std::int64_t readTime(const Runtime &runtime, const QString &name)
     return frontend::parseDuration(*text).value_or(0);
 }
 
+// The POU's body, or with `action` that action's.
+const model::Body *chartBody(const model::Pou &pou, const QString &action)
+{
+    if (action.isEmpty())
+        return pou.body();
+    for (const model::PouAction &a : pou.actions) {
+        if (a.name.compare(action, Qt::CaseInsensitive) == 0)
+            return &a.body;
+    }
+    return nullptr;
+}
+
+// A hidden variable's name in the chart's own namespace (hidden() names it for a POU's chart).
+QString hiddenName(const ChartLayout &layout, const QString &name)
+{
+    return layout.hiddenPrefix + name.mid(int(qstrlen("__sfc_")));
+}
+
 } // namespace
 
-std::optional<ChartLayout> chartLayout(const model::Pou &pou)
+std::optional<ChartLayout> chartLayout(const model::Pou &pou, const QString &action)
 {
-    const model::Body *body = pou.body();
+    const model::Body *body = chartBody(pou, action);
     if (!body || body->language() != model::BodyLanguage::SFC)
         return std::nullopt;
     Diagnostics ignored; // the compiler reported them
     const Chart chart = buildChart(*body, pou.name, ignored);
     ChartLayout layout;
     layout.pou = pou.name;
+    layout.action = action;
+    if (!action.isEmpty()) // lowered as a nested chart (sfclowering.cpp, lowerNestedChart)
+        layout.hiddenPrefix = QStringLiteral("__sfc_") + action + QLatin1Char('_');
     for (const ChartStep &step : chart.steps)
         layout.steps.push_back({step.name, step.localId, stepActive(step), stepTime(step)});
     layout.actions = chartActions(chart);
@@ -41,23 +62,25 @@ std::optional<ChartLayout> chartLayout(const model::Pou &pou)
     return layout;
 }
 
-std::optional<ChartState> chartState(const Runtime &runtime, const model::Pou &pou, const QString &instancePath)
+std::optional<ChartState> chartState(const Runtime &runtime, const model::Pou &pou, const QString &instancePath,
+    const QString &action)
 {
-    const model::Body *body = pou.body();
-    if (!body || body->language() != model::BodyLanguage::SFC
-        || !runtime.find(instancePath + QStringLiteral(".__sfc_now")))
+    const model::Body *body = chartBody(pou, action);
+    const QString now = action.isEmpty() ? QStringLiteral("__sfc_now") : QStringLiteral("__sfc_%1_now").arg(action);
+    if (!body || body->language() != model::BodyLanguage::SFC || !runtime.find(instancePath + QLatin1Char('.') + now))
         return std::nullopt; // cheap checks first: no chart to build
-    return chartState(runtime, *chartLayout(pou), instancePath);
+    return chartState(runtime, *chartLayout(pou, action), instancePath);
 }
 
 std::optional<ChartState> chartState(const Runtime &runtime, const ChartLayout &layout, const QString &instancePath)
 {
     const QString prefix = instancePath + QLatin1Char('.');
-    if (!runtime.find(prefix + QStringLiteral("__sfc_now")))
+    if (!runtime.find(prefix + layout.hiddenPrefix + QStringLiteral("now")))
         return std::nullopt; // no such instance, or the chart did not compile
     ChartState state;
     state.instance = instancePath;
     state.pou = layout.pou;
+    state.action = layout.action;
     for (const ChartLayout::Step &step : layout.steps) {
         StepState s;
         s.name = step.name;
@@ -67,9 +90,9 @@ std::optional<ChartState> chartState(const Runtime &runtime, const ChartLayout &
         state.steps.push_back(s);
     }
     for (int j = 0; j < layout.actions.size(); ++j)
-        state.actions.push_back({layout.actions[j], readBool(runtime, prefix + hidden("a", j, "q"))});
+        state.actions.push_back({layout.actions[j], readBool(runtime, prefix + hiddenName(layout, hidden("a", j, "q")))});
     for (int k = 0; k < int(layout.transitions.size()); ++k)
-        state.transitions.push_back({layout.transitions[size_t(k)], readBool(runtime, prefix + hidden("t", k, "c"))});
+        state.transitions.push_back({layout.transitions[size_t(k)], readBool(runtime, prefix + hiddenName(layout, hidden("t", k, "c")))});
     return state;
 }
 

@@ -38,6 +38,7 @@ struct TransitionState {
 struct ChartState {
     QString instance; // "Main", "Main.Filler" (the instance path of the POU that holds the chart)
     QString pou;      // the POU type
+    QString action;   // the action whose body the chart is; empty: the POU's own body
     std::vector<StepState> steps;
     std::vector<ActionState> actions;
     std::vector<TransitionState> transitions;
@@ -54,17 +55,20 @@ struct ChartLayout {
         QString time;   // the step's t
     };
     QString pou;
+    QString action;                     // as in ChartState
+    QString hiddenPrefix = QStringLiteral("__sfc_"); // an action's chart: __sfc_ACTION_ (sfclowering)
     std::vector<Step> steps;
     QStringList actions;                // chartActions(): hidden variable a<j>_q
     std::vector<quint64> transitions;   // localIds: hidden variable t<k>_c
 };
 
-// nullopt when `pou` has no SFC body.
-std::optional<ChartLayout> chartLayout(const model::Pou &pou);
+// nullopt when `pou` has no SFC body (with `action`: when that action's body is not a chart).
+std::optional<ChartLayout> chartLayout(const model::Pou &pou, const QString &action = {});
 
-// The state of the chart of SFC POU `pou` in instance `instancePath`; nullopt when the runtime
-// has no such instance or the POU is not SFC.
-std::optional<ChartState> chartState(const Runtime &runtime, const model::Pou &pou, const QString &instancePath);
+// The state of the chart of SFC POU `pou` (or of its action `action`) in instance `instancePath`;
+// nullopt when the runtime has no such instance or that body is not SFC.
+std::optional<ChartState> chartState(const Runtime &runtime, const model::Pou &pou, const QString &instancePath,
+    const QString &action = {});
 std::optional<ChartState> chartState(const Runtime &runtime, const ChartLayout &layout, const QString &instancePath);
 
 // Every SFC program instance the runtime runs (FB instances are reached by path with chartState).

@@ -58,6 +58,7 @@ private Q_SLOTS:
     void windowLayoutIsRestored();
     void openEditSaveReopen();
     void openingAMissingFileKeepsTheProject();
+    void iecTextOpensAsAnUntitledProject();
     void treeOperationsUndoOnTheProjectStack();
     void activeUndoStackFollowsTheDocuments();
     void undoingTypingBackToTheSavedTextIsClean();
@@ -289,6 +290,38 @@ void TestMainWindow::openingAMissingFileKeepsTheProject()
     QVERIFY(!error.isEmpty());
     QVERIFY(window.projectModel().project() == before);
     QVERIFY(window.currentFile().endsWith(QStringLiteral("first_steps.xml")));
+}
+
+// `iecstudio prog.st`: the text is read into a new untitled project whose main program opens;
+// text with an error is refused with it and the project shown stays.
+void TestMainWindow::iecTextOpensAsAnUntitledProject()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("lamp.st"));
+    const QByteArray text = "PROGRAM Main\nVAR\n    Lamp : BOOL;\nEND_VAR\nLamp := NOT Lamp;\nEND_PROGRAM\n";
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly) && file.write(text) == text.size());
+    file.close();
+    MainWindow window;
+    QString error;
+    QVERIFY2(window.openProject(path, &error), qPrintable(error));
+    QCOMPARE(window.currentFile(), QString());
+    QCOMPARE(window.windowTitle(), QStringLiteral("lamp[*] - IEC Studio"));
+    QVERIFY(!window.hasUnsavedChanges());
+    const iec::model::Pou *main = window.projectModel().project().findPou(QStringLiteral("Main"));
+    QVERIFY(main && main->body());
+    QCOMPARE(main->body()->text(), QStringLiteral("Lamp := NOT Lamp;"));
+    QCOMPARE(window.documents().tabText(window.documents().currentIndex()), QStringLiteral("Main"));
+
+    const QString broken = dir.filePath(QStringLiteral("broken.st"));
+    QFile bad(broken);
+    QVERIFY(bad.open(QIODevice::WriteOnly) && bad.write("PROGRAM P\nx := ;\nEND_PROGRAM\n") > 0);
+    bad.close();
+    const iec::model::Project before = window.projectModel().project();
+    QVERIFY(!window.openProject(broken, &error));
+    QVERIFY2(error.startsWith(QStringLiteral("broken.st, line 2: ")), qPrintable(error));
+    QVERIFY(window.projectModel().project() == before);
+    QVERIFY(window.messagesPane().model().rowCount() >= 1);
 }
 
 namespace {

@@ -21,6 +21,7 @@
 #include "editors/text/codeeditor.h"
 #include "editors/sfc/sfceditor.h"
 #include "editors/sfc/sfcitems.h"
+#include "interpreter/frontend/iecreader.h"
 #include "interpreter/runtime/snapshot.h"
 #include "model/body.h"
 #include "model/projectmodel.h"
@@ -130,6 +131,7 @@ private Q_SLOTS:
     void everyEditingKeySaysWhyOnline_data();
     void everyEditingKeySaysWhyOnline();
     void insertMenuFollowsTheCurrentEditor();
+    void chartInAnActionRunsOnline();
 
 private:
     // A window with the empty chart open in its SFC editor, the controller synchronous.
@@ -433,6 +435,39 @@ void TestSfcOnline::insertMenuFollowsTheCurrentEditor()
     for (QAction *action : insertMenu->actions())
         QVERIFY2(!chartCommands.contains(action->objectName()), qPrintable(action->objectName()));
     QVERIFY(!insertMenu->actions().isEmpty());
+}
+
+// A chart that is an action's body (here of an ST program, read from .st text) is animated like
+// the POU's own: its active step in blue with its time, cycle by cycle.
+void TestSfcOnline::chartInAnActionRunsOnline()
+{
+    MainWindow window;
+    window.online().setThreaded(false);
+    const interp::frontend::TextReadResult text = interp::frontend::readIecText(
+        QStringLiteral("PROGRAM Main\nVAR go : BOOL := TRUE; n : INT; END_VAR\nSeq();\n"
+                       "ACTION Seq:\nINITIAL_STEP Idle: END_STEP\nTRANSITION FROM Idle TO Fill := go; END_TRANSITION\n"
+                       "STEP Fill: Count(N); END_STEP\nTRANSITION FROM Fill TO Idle := n >= 2; END_TRANSITION\nEND_ACTION\n"
+                       "ACTION Count:\nn := n + 1;\nEND_ACTION\nEND_PROGRAM\n"),
+        QStringLiteral("Charts"));
+    QVERIFY(!text.diagnostics.hasErrors());
+    window.projectModel().reset(text.project);
+    const model::Pou *main = window.projectModel().project().findPou(QStringLiteral("Main"));
+    QVERIFY(main);
+    QWidget *document = window.documents().openBody({main->id, BodyRef::Part::Action, QStringLiteral("Seq")});
+    auto *editor = qobject_cast<SfcEditor *>(document);
+    if (!editor && document)
+        editor = document->findChild<SfcEditor *>();
+    QVERIFY(editor);
+    QVERIFY(window.online().login());
+    QStringList cycles;
+    for (int cycle = 0; cycle < 5; ++cycle) {
+        window.online().singleCycle();
+        cycles << activeSteps(*editor).join(QLatin1Char(',')) + QLatin1Char(' ') + stepTimeText(*editor, QStringLiteral("Fill"));
+    }
+    // Idle's transition fires in cycle 1; Fill counts n to 2 over two cycles, then Idle again.
+    QCOMPARE(cycles.join(QLatin1Char('|')), QStringLiteral("Idle |Fill T#0s|Fill T#10ms|Idle |Fill T#0s"));
+    window.online().logout();
+    QVERIFY(activeSteps(*editor).isEmpty());
 }
 
 QTEST_MAIN(TestSfcOnline)

@@ -34,6 +34,7 @@ private Q_SLOTS:
     void tipMode();
     void chartInFunctionBlockHasOneStatePerInstance();
     void chartState();
+    void chartStateOfAnAction();
     void ilCondition();
     void ilActionRunsAsCalledAction();
 };
@@ -422,6 +423,36 @@ void TestSfcEngine::chartInFunctionBlockHasOneStatePerInstance()
                      QStringLiteral("ga=FALSE => a.S1.x=TRUE; b.S1.x=TRUE; a.n=3; b.n=1"),
                      QStringLiteral("=> a.S1.x=FALSE; a.Init.x=TRUE; b.S1.x=TRUE; a.n=4; b.n=2")}),
         QString());
+}
+
+// A chart in an action keeps its hidden variables under __sfc_ACTION_ (sfclowering.cpp); its state
+// is read from there, and the POU's own body (ST) has none.
+void TestSfcEngine::chartStateOfAnAction()
+{
+    const model::Project project = readText(QStringLiteral(
+        "PROGRAM Main\nVAR n : INT; END_VAR\nSeq();\nACTION Seq:\nINITIAL_STEP Idle: END_STEP\nTRANSITION FROM Idle TO Fill := TRUE; END_TRANSITION\n"
+        "STEP Fill: Count(N); END_STEP\nTRANSITION FROM Fill TO Idle := n >= 2; END_TRANSITION\nEND_ACTION\n"
+        "ACTION Count:\nn := n + 1;\nEND_ACTION\nEND_PROGRAM\n"));
+    Diagnostics diagnostics;
+    const auto module = frontend::compileProject(project, diagnostics);
+    QVERIFY2(module, qPrintable(errorsOf(diagnostics)));
+    Runtime runtime(module);
+    QVERIFY(runtime.runCycles(2));
+    const model::Pou &main = project.types.pous.front();
+    QVERIFY(!sfc::chartState(runtime, main, QStringLiteral("Main")));
+    QVERIFY(!sfc::chartState(runtime, main, QStringLiteral("Main"), QStringLiteral("Count")));
+    const auto state = sfc::chartState(runtime, main, QStringLiteral("Main"), QStringLiteral("seq"));
+    QVERIFY(state);
+    QCOMPARE(state->action, QStringLiteral("seq"));
+    QCOMPARE(state->steps.size(), size_t(2));
+    QCOMPARE(state->steps[0].active, false);
+    QCOMPARE(state->steps[1].active, true);
+    QCOMPARE(state->steps[1].elapsedNs, std::int64_t(0)); // active since this cycle
+    QCOMPARE(state->actions.size(), size_t(1));
+    QCOMPARE(state->actions[0].name, QStringLiteral("Count"));
+    QCOMPARE(state->actions[0].active, true);
+    QCOMPARE(state->transitions.size(), size_t(2));
+    QCOMPARE(state->transitions[1].condition, false); // n = 1
 }
 
 void TestSfcEngine::chartState()
