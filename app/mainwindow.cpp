@@ -479,9 +479,9 @@ bool MainWindow::loadIecText(const QString &path, QString *error)
         if (firstError == read.messages.cend())
             *error = tr("%1 cannot be read.").arg(fileName);
         else if (firstError->line > 0)
-            *error = tr("%1, line %2: %3").arg(fileName).arg(firstError->line).arg(firstError->text);
+            *error = tr("%1, line %2: %3").arg(fileName, QString::number(firstError->line), firstError->text);
         else
-            *error = firstError->text;
+            *error = tr("%1: %2").arg(fileName, firstError->text);
     }
     return false;
 }

@@ -895,6 +895,10 @@ Automatisch gespeichert: %2</translation>
             <source>PLCopen XML projects (*.xml);;IEC 61131-3 text (*.st *.iec *.txt);;All files (*)</source>
             <translation>PLCopen-XML-Projekte (*.xml);;IEC 61131-3-Text (*.st *.iec *.txt);;Alle Dateien (*)</translation>
         </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1: %2</translation>
+        </message>
     </context>
     <context>
         <name>iec::app::MemberEditor</name>
@@ -6508,6 +6512,10 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>watch and write them in the watch pane instead</source>
             <translation>beobachten und schreiben Sie sie stattdessen im Fenster „Beobachtung“</translation>
+        </message>
+        <message>
+            <source>The chart of %1 cannot be written as textual SFC (it is incomplete, or has macro steps, actions written in a step or conditions drawn as networks); it was left out.</source>
+            <translation>Das Diagramm von %1 lässt sich nicht als textuelle AS schreiben (es ist unvollständig oder hat Makroschritte, in einem Schritt geschriebene Aktionen oder als Netzwerk gezeichnete Bedingungen); es wurde weggelassen.</translation>
         </message>
     </context>
     <context>

@@ -894,6 +894,10 @@ Autosaved: %2</source>
             <source>PLCopen XML projects (*.xml);;IEC 61131-3 text (*.st *.iec *.txt);;All files (*)</source>
             <translation>PLCopen XML 项目 (*.xml);;IEC 61131-3 文本 (*.st *.iec *.txt);;所有文件 (*)</translation>
         </message>
+        <message>
+            <source>%1: %2</source>
+            <translation>%1：%2</translation>
+        </message>
     </context>
     <context>
         <name>iec::app::MemberEditor</name>
@@ -1491,7 +1495,7 @@ Autosaved: %2</source>
         </message>
         <message>
             <source>%1: %2</source>
-            <translation>%1:%2</translation>
+            <translation>%1：%2</translation>
         </message>
     </context>
     <context>
@@ -6502,6 +6506,10 @@ Autosaved: %2</source>
         <message>
             <source>watch and write them in the watch pane instead</source>
             <translation>请改在监视窗格中查看和写入这些变量</translation>
+        </message>
+        <message>
+            <source>The chart of %1 cannot be written as textual SFC (it is incomplete, or has macro steps, actions written in a step or conditions drawn as networks); it was left out.</source>
+            <translation>%1 的图无法写成文本 SFC（图不完整，或含有宏步、写在步中的动作或画成网络的条件），已省略。</translation>
         </message>
     </context>
     <context>

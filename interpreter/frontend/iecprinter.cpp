@@ -316,10 +316,18 @@ QString printObjectOrientation(const model::Pou &pou, QString &header)
 // textual SFC; a chart the text form cannot say stays a comment.
 QString printPart(const model::Pou &pou, const model::Body &body, const QString &where, std::vector<PrintWarning> *warnings)
 {
-    QStringList dropped;
-    const auto chart = body.language() == model::BodyLanguage::SFC ? sfc::printChart(pou, body, where, nullptr, &dropped) : std::nullopt;
-    if (!chart)
+    if (body.language() != model::BodyLanguage::SFC)
         return printBody(body, where, warnings);
+    QStringList dropped;
+    const auto chart = sfc::printChart(pou, body, where, nullptr, &dropped);
+    if (!chart) {
+        if (warnings) {
+            warnings->push_back({where,
+                QCoreApplication::translate("iec::interp::Compiler", "The chart of %1 cannot be written as textual SFC (it is incomplete, or has macro steps, actions written in a step or conditions drawn as networks); it was left out.")
+                    .arg(where)});
+        }
+        return printBody(body, where, nullptr);
+    }
     if (warnings && !dropped.isEmpty())
         warnings->push_back({where,
             QCoreApplication::translate("iec::interp::Compiler", "The entry, exit and active actions and the times of steps %1 have no IEC text form and were left out.")

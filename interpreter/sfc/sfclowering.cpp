@@ -390,7 +390,7 @@ std::optional<std::vector<ast::Stmt>> Lowering::actionBody(const model::Body &bo
         if (m_calledActions.contains(key(name)))
             return code(name + QStringLiteral("();\n"), localId); // lowered already, or by the POU's own list
         const model::PouAction *action = m_pouActions.value(key(name));
-        if (!action || owner == m_pou.name || m_hiddenPrefix.contains(QLatin1Char('_') + name + QLatin1Char('_'))) {
+        if (!action || owner == m_pou.name || m_chartChain.contains(key(name))) {
             error(localId, QCoreApplication::translate("iec::interp::Compiler", "%1 is an SFC chart that contains itself.").arg(owner));
             return std::nullopt;
         }
@@ -409,11 +409,15 @@ bool Lowering::lowerNestedChart(const model::PouAction &action, std::vector<ast:
     model::Pou chartPou = m_pou;
     chartPou.bodies.clear();
     chartPou.bodies.push_back(action.body);
-    if (m_hiddenPrefix.contains(QLatin1Char('_') + action.name + QLatin1Char('_'))) {
+    if (m_chartChain.contains(key(action.name))) {
         error(kNoElement, QCoreApplication::translate("iec::interp::Compiler", "%1 is an SFC chart that contains itself.").arg(m_pou.name + QLatin1Char('.') + action.name));
         return false;
     }
-    Lowering nested(chartPou, m_result, m_diagnostics, m_parsed, m_hiddenPrefix + action.name + QLatin1Char('_'), &out);
+    // Each action chart is lowered once per POU (m_calledActions), so its action's name alone
+    // keeps its hidden variables apart.
+    Lowering nested(chartPou, m_result, m_diagnostics, m_parsed, QStringLiteral("__sfc_") + action.name + QLatin1Char('_'), &out);
+    nested.m_chartChain = m_chartChain;
+    nested.m_chartChain << key(action.name);
     nested.m_calledActions = m_calledActions;
     nested.run();
     m_calledActions.unite(nested.m_calledActions);

@@ -34,9 +34,9 @@ inline QString key(const QString &name)
 class Lowering
 {
 public:
-    // `hiddenPrefix` starts the names of the hidden variables ("__sfc_"; a chart in an action has
-    // its own, so that it runs beside the POU's chart). The statements go to `output`, by default
-    // the POU's body.
+    // `hiddenPrefix` starts the names of the hidden variables ("__sfc_"; a chart in action A has
+    // "__sfc_A_", however deep it is lowered, so that it runs beside the POU's chart and the online
+    // view finds it, sfcstatus.h). The statements go to `output`, by default the POU's body.
     Lowering(const model::Pou &pou, ast::Pou &result, Diagnostics &diagnostics, const std::vector<ast::SfcAction> *parsed,
         QString hiddenPrefix = QStringLiteral("__sfc_"), std::vector<ast::Stmt> *output = nullptr)
         : m_pou(pou), m_result(result), m_diagnostics(diagnostics), m_parsed(parsed), m_hiddenPrefix(std::move(hiddenPrefix)),
@@ -197,6 +197,8 @@ private:
     std::map<const model::Body *, std::unique_ptr<graphical::InputLowering>> m_wiredInputs;
     const std::vector<ast::SfcAction> *m_parsed = nullptr;
     QString m_hiddenPrefix;
+    // The action charts being lowered around this one (keys): a chart that runs itself is refused.
+    QStringList m_chartChain;
     std::vector<ast::Stmt> *m_output;
     QSet<QString> m_calledActions; // keys of the actions already in m_result.actions
     bool m_failed = false;

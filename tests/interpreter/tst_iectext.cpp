@@ -83,6 +83,16 @@ void TestIecText::printsWhatItRead_data()
         << QStringLiteral("PROGRAM Main\nSeq();\nACTION Seq:\nINITIAL_STEP A:\n    Beep(N);\nEND_STEP\nSTEP B:\nEND_STEP\n"
                           "TRANSITION FROM A TO B := TRUE; END_TRANSITION\nTRANSITION FROM B TO A := TRUE; END_TRANSITION\n"
                           "END_ACTION\nACTION Beep:\n;\nEND_ACTION\nEND_PROGRAM\n");
+    QTest::newRow("chart in an action of a chart")
+        << QStringLiteral("PROGRAM Main\nINITIAL_STEP Run: Inner(N); END_STEP\nTRANSITION FROM Run TO Run2 := TRUE; END_TRANSITION\n"
+                          "STEP Run2: END_STEP\nTRANSITION FROM Run2 TO Run := TRUE; END_TRANSITION\n"
+                          "ACTION Inner:\nINITIAL_STEP A: END_STEP\nTRANSITION FROM A TO B := TRUE; END_TRANSITION\nSTEP B: END_STEP\n"
+                          "TRANSITION FROM B TO A := TRUE; END_TRANSITION\nEND_ACTION\nEND_PROGRAM\n")
+        << QStringLiteral("PROGRAM Main\nINITIAL_STEP Run:\n    Inner(N);\nEND_STEP\nSTEP Run2:\nEND_STEP\n"
+                          "TRANSITION FROM Run TO Run2 := TRUE; END_TRANSITION\nTRANSITION FROM Run2 TO Run := TRUE; END_TRANSITION\n"
+                          "ACTION Inner:\nINITIAL_STEP A:\nEND_STEP\nSTEP B:\nEND_STEP\n"
+                          "TRANSITION FROM A TO B := TRUE; END_TRANSITION\nTRANSITION FROM B TO A := TRUE; END_TRANSITION\n"
+                          "END_ACTION\nEND_PROGRAM\n");
     QTest::newRow("configuration with tasks and instances")
         << QStringLiteral(
                "PROGRAM Main\nEND_PROGRAM\nCONFIGURATION Cfg\nVAR_GLOBAL g : INT; END_VAR\nRESOURCE R ON PLC\n"
@@ -209,7 +219,8 @@ void TestIecText::graphicalBodiesBecomeAComment()
     QCOMPARE(warnings.size(), size_t(1));
     QCOMPARE(warnings.front().pou, QStringLiteral("Chart"));
     QCOMPARE(warnings.front().message,
-        QStringLiteral("Chart is written in SFC, which has no IEC text form; its body was left out."));
+        QStringLiteral("The chart of Chart cannot be written as textual SFC (it is incomplete, or has macro steps, actions written "
+                       "in a step or conditions drawn as networks); it was left out."));
 }
 
 void TestIecText::reportsParseErrorsWithFileLines()

@@ -192,6 +192,15 @@ void TestUtilLib::svgHmiVariablesRunAsPlainVariables()
                       .join(QLatin1Char(' '));
     }
     QCOMPARE(cycles, QStringList({"1 0.5 'n=1' FALSE", "2 1.0 'n=2' TRUE", "3 1.5 'n=3' TRUE"}));
+
+    // A project that declares the type itself uses its own declaration, without the warning.
+    Diagnostics own;
+    const auto ownModule = compileText(QStringLiteral("TYPE HMI_BOOL : INT; END_TYPE\nPROGRAM Main\nVAR x : HMI_BOOL; END_VAR\nx := x + 2;\nEND_PROGRAM\n"), own);
+    QVERIFY2(ownModule, qPrintable(errorsOf(own)));
+    QCOMPARE(diagnosticsText(own, false), QString());
+    Runtime ownRuntime(ownModule);
+    QVERIFY(ownRuntime.runCycles(2));
+    QCOMPARE(ownRuntime.read(QStringLiteral("Main.x")).value_or(QStringLiteral("?")), QStringLiteral("4"));
 }
 
 void TestUtilLib::unusedLibraryCostsNothing()

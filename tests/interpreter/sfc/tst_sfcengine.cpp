@@ -35,6 +35,7 @@ private Q_SLOTS:
     void chartInFunctionBlockHasOneStatePerInstance();
     void chartState();
     void chartStateOfAnAction();
+    void chartInAChartInAnAction();
     void ilCondition();
     void ilActionRunsAsCalledAction();
 };
@@ -453,6 +454,45 @@ void TestSfcEngine::chartStateOfAnAction()
     QCOMPARE(state->actions[0].active, true);
     QCOMPARE(state->transitions.size(), size_t(2));
     QCOMPARE(state->transitions[1].condition, false); // n = 1
+}
+
+// A chart POU whose step runs action Outer, a chart whose step runs Inner, a chart too: each
+// action chart's state is read under its own name however deep it runs; a chart that runs itself
+// is refused.
+void TestSfcEngine::chartInAChartInAnAction()
+{
+    const QString source = QStringLiteral(
+        "PROGRAM Main\nVAR go : BOOL; END_VAR\nINITIAL_STEP Run: Outer(N); END_STEP\nTRANSITION FROM Run TO Halt := go; END_TRANSITION\n"
+        "STEP Halt: END_STEP\nTRANSITION FROM Halt TO Run := NOT go; END_TRANSITION\n"
+        "ACTION Outer:\nINITIAL_STEP O1: Inner(N); END_STEP\nTRANSITION FROM O1 TO O2 := go; END_TRANSITION\n"
+        "STEP O2: END_STEP\nTRANSITION FROM O2 TO O1 := TRUE; END_TRANSITION\nEND_ACTION\n"
+        "ACTION Inner:\nINITIAL_STEP I1: END_STEP\nTRANSITION FROM I1 TO I2 := TRUE; END_TRANSITION\n"
+        "STEP I2: END_STEP\nTRANSITION FROM I2 TO I1 := TRUE; END_TRANSITION\nEND_ACTION\nEND_PROGRAM\n");
+    const model::Project project = readText(source);
+    Diagnostics diagnostics;
+    const auto module = frontend::compileProject(project, diagnostics);
+    QVERIFY2(module, qPrintable(errorsOf(diagnostics)));
+    Runtime runtime(module);
+    const model::Pou &main = project.types.pous.front();
+    QStringList cycles;
+    for (int cycle = 0; cycle < 3; ++cycle) {
+        QVERIFY(runtime.runCycles(1));
+        QString active;
+        for (const char *action : {"", "Outer", "Inner"}) {
+            const auto state = sfc::chartState(runtime, main, QStringLiteral("Main"), QLatin1String(action));
+            QVERIFY2(state, action);
+            for (const sfc::StepState &step : state->steps)
+                active += step.active ? step.name : QString();
+        }
+        cycles << active;
+    }
+    QCOMPARE(cycles, QStringList({"RunO1I1", "RunO1I2", "RunO1I1"}));
+
+    Diagnostics looping;
+    QVERIFY(!frontend::compileProject(readText(QString(source).replace(QStringLiteral("INITIAL_STEP I1: END_STEP"),
+                                                                 QStringLiteral("INITIAL_STEP I1: Outer(N); END_STEP"))),
+        looping));
+    QVERIFY2(errorsOf(looping).contains(QStringLiteral("is an SFC chart that contains itself.")), qPrintable(errorsOf(looping)));
 }
 
 void TestSfcEngine::chartState()
