@@ -1,12 +1,15 @@
 #include "app/online/debugcontroller.h"
 
 #include "app/online/breakpointdialog.h"
+#include "app/online/breakpointlines.h"
 #include "app/messagespane.h"
 #include "app/online/onlinecontroller.h"
 #include "model/projectmodel.h"
 #include "model/savedbreakpoints.h"
 
 #include <QAction>
+
+#include <algorithm>
 #include <QMenu>
 #include <QStatusBar>
 #include <QToolBar>
@@ -60,6 +63,7 @@ DebugController::DebugController(model::ProjectModel &projectModel, DocumentArea
     connect(&m_documents, &QTabWidget::currentChanged, this, &DebugController::refreshMarks);
     // Another project: its own breakpoints, as it saved them.
     connect(&m_projectModel, &model::ProjectModel::projectReset, this, &DebugController::loadFromProject);
+    connect(&m_projectModel, &model::ProjectModel::bodyTextChanged, this, &DebugController::followTextEdit);
     retranslate();
     updateActions();
 }
@@ -181,10 +185,52 @@ void DebugController::toggleBreakpoint(const model::BodyRef &body, const editors
 // After any change of the breakpoints: the runtime, the marks and the actions follow.
 void DebugController::breakpointsEdited()
 {
+    rememberTexts();
     sendBreakpoints();
     refreshMarks();
     updateActions();
     Q_EMIT breakpointsChanged();
+}
+
+void DebugController::rememberTexts()
+{
+    std::vector<std::pair<model::BodyRef, QString>> texts;
+    for (const StoredBreakpoint &breakpoint : m_breakpoints) {
+        const model::Body *body = m_projectModel.body(breakpoint.body);
+        const bool known = std::any_of(texts.begin(), texts.end(), [&](const auto &t) { return t.first == breakpoint.body; });
+        if (breakpoint.place.line > 0 && body && !body->isGraphical() && !known)
+            texts.emplace_back(breakpoint.body, body->text());
+    }
+    m_textsUnderBreakpoints = std::move(texts);
+}
+
+void DebugController::followTextEdit(const model::BodyRef &body)
+{
+    const auto known = std::find_if(m_textsUnderBreakpoints.begin(), m_textsUnderBreakpoints.end(),
+        [&](const auto &t) { return t.first == body; });
+    const model::Body *now = m_projectModel.body(body);
+    if (known == m_textsUnderBreakpoints.end() || !now || now->isGraphical())
+        return;
+    const QStringList before = known->second.split(QLatin1Char('\n'));
+    const QStringList after = now->text().split(QLatin1Char('\n'));
+    bool moved = false;
+    for (auto it = m_breakpoints.begin(); it != m_breakpoints.end();) {
+        const int line = it->body == body ? it->place.line : 0;
+        const int followed = line > 0 ? lineAfterEdit(line, before, after) : line;
+        moved = moved || followed != line;
+        const bool takenTwice = followed > 0 && std::any_of(m_breakpoints.begin(), it, [&](const StoredBreakpoint &b) {
+            return b.body == body && b.place.line == followed;
+        });
+        if (line > 0 && (followed == 0 || takenTwice)) { // its line was deleted, or joined another's
+            it = m_breakpoints.erase(it);
+            continue;
+        }
+        it->place.line = followed;
+        ++it;
+    }
+    known->second = now->text();
+    if (moved)
+        breakpointsEdited();
 }
 
 void DebugController::removeAllBreakpoints()

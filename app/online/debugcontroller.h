@@ -79,6 +79,10 @@ private:
     void loadFromProject();
     void sendBreakpoints();
     void breakpointsEdited();
+    // A text body changed: its breakpoints move with their lines (breakpointlines.h).
+    void followTextEdit(const model::BodyRef &body);
+    // The texts of the bodies that have line breakpoints, to compare the next edit with.
+    void rememberTexts();
     void refreshMarks();
     void showHalt(const interp::RuntimeSnapshot &snapshot);
     void listCallStack();
@@ -93,6 +97,7 @@ private:
     MessagesPane &m_messages;
     QStatusBar &m_statusBar;
     std::vector<StoredBreakpoint> m_breakpoints;
+    std::vector<std::pair<model::BodyRef, QString>> m_textsUnderBreakpoints;
     std::optional<interp::HaltInfo> m_halt;
     QString m_haltMessage; // the status bar's "Halted in …", cleared when the program goes on
     QAction *m_toggle = nullptr;

@@ -5,6 +5,7 @@
 #include "app/mainwindow.h"
 #include "app/messagespane.h"
 #include "app/online/breakpointdialog.h"
+#include "app/online/breakpointlines.h"
 #include "app/online/debugcontroller.h"
 #include "app/online/onlinecontroller.h"
 #include "editors/common/diagramview.h"
@@ -71,6 +72,9 @@ private Q_SLOTS:
     void hitCountFromTheWindow();
     void callStackInTheMessages();
     void runToCursor();
+    void linesFollowEdits_data();
+    void linesFollowEdits();
+    void breakpointsFollowTheirLines();
 };
 
 void TestDebugging::shortcuts()
@@ -409,6 +413,85 @@ void TestDebugging::runToCursor()
     window.online().singleCycle(); // cycle 2 runs through
     QVERIFY(!window.online().latestSnapshot()->halt);
     QCOMPARE(window.online().latestSnapshot()->cycle, 2);
+}
+
+void TestDebugging::linesFollowEdits_data()
+{
+    QTest::addColumn<QString>("before");
+    QTest::addColumn<QString>("after");
+    QTest::addColumn<QList<int>>("lines"); // where lines 1..n of `before` go (0: deleted)
+    QTest::newRow("nothing changed") << "a|b|c" << "a|b|c" << QList<int>{1, 2, 3};
+    QTest::newRow("line inserted above") << "a|b|c" << "a|x|b|c" << QList<int>{1, 3, 4};
+    QTest::newRow("line inserted at the top") << "a|b" << "x|a|b" << QList<int>{2, 3};
+    QTest::newRow("line deleted") << "a|b|c|d" << "a|b|d" << QList<int>{1, 2, 0, 3};
+    QTest::newRow("line edited") << "a|b|c" << "a|b2|c" << QList<int>{1, 2, 3};
+    QTest::newRow("two lines become one") << "a|b|c|d" << "a|bc|d" << QList<int>{1, 2, 2, 3};
+    QTest::newRow("line split") << "a|bc|d" << "a|b|c|d" << QList<int>{1, 2, 4};
+    QTest::newRow("all replaced by an empty line") << "a|b" << "" << QList<int>{1, 1};
+    QTest::newRow("same lines repeated") << "x|x|x" << "x|x" << QList<int>{1, 2, 0};
+}
+
+void TestDebugging::linesFollowEdits()
+{
+    QFETCH(QString, before);
+    QFETCH(QString, after);
+    QFETCH(QList<int>, lines);
+    const QStringList from = before.split(QLatin1Char('|'));
+    const QStringList to = after.split(QLatin1Char('|'));
+    QList<int> got;
+    for (int line = 1; line <= from.size(); ++line)
+        got << lineAfterEdit(line, from, to);
+    QCOMPARE(got, lines);
+}
+
+// A breakpoint stays on its statement while the text is edited, and goes with its line; undo
+// brings it back where it was (the model's text is what it follows).
+void TestDebugging::breakpointsFollowTheirLines()
+{
+    MainWindow window;
+    window.projectModel().reset(interp::frontend::readIecText(QString::fromUtf8(kProgram), QStringLiteral("Test")).project);
+    const model::Pou *main = window.projectModel().project().findPou(QStringLiteral("Main"));
+    QVERIFY(main);
+    const model::BodyRef body {main->id, model::BodyRef::Part::Pou, {}};
+    QWidget *document = window.documents().openBody(body);
+    auto *widget = document->findChild<editors::TextEditorWidget *>();
+    QVERIFY(widget);
+    editors::CodeEditor *editor = widget->editor();
+    editor->goToLine(3);
+    window.debugger().toggleBreakpointAction()->trigger();
+    editor->goToLine(5);
+    window.debugger().toggleBreakpointAction()->trigger();
+    QCOMPARE(editor->breakpointLines(), (QList<int>{3, 5}));
+
+    // A line typed at the top: both move down.
+    editor->goToLine(1);
+    editor->moveCursor(QTextCursor::StartOfLine);
+    QTest::keyClicks(editor, QStringLiteral("Count := 0;"));
+    QTest::keyClick(editor, Qt::Key_Return);
+    editor->flushPendingEdit();
+    QCOMPARE(editor->breakpointLines(), (QList<int>{4, 6}));
+    QCOMPARE(window.debugger().breakpoints().front().place.line, 4);
+    QCOMPARE(editor->document()->findBlockByNumber(3).text().trimmed(), QStringLiteral("Level := Level + 10;"));
+
+    // The line with the first breakpoint deleted: that breakpoint goes, the other moves up.
+    editor->goToLine(4);
+    editor->moveCursor(QTextCursor::StartOfLine);
+    editor->moveCursor(QTextCursor::Down, QTextCursor::KeepAnchor);
+    QTest::keyClick(editor, Qt::Key_Delete);
+    editor->flushPendingEdit();
+    QCOMPARE(editor->breakpointLines(), QList<int>{5});
+    QCOMPARE(window.debugger().breakpoints().size(), size_t(1));
+
+    // Undo brings the lines back, and the remaining breakpoint stays on its statement (the
+    // deleted one is gone: breakpoints are no edit of the program).
+    editor->undo();
+    editor->flushPendingEdit();
+    QCOMPARE(window.debugger().breakpoints().front().place.line, 6);
+    editor->undo(); // the line break typed at the top
+    editor->flushPendingEdit();
+    QCOMPARE(window.debugger().breakpoints().front().place.line, 5);
+    QCOMPARE(editor->breakpointLines(), QList<int>{5});
+    QCOMPARE(editor->document()->findBlockByNumber(4).text().trimmed(), QStringLiteral("Total := Count + Level;"));
 }
 
 QTEST_MAIN(TestDebugging)
