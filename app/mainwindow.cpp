@@ -474,14 +474,11 @@ bool MainWindow::loadIecText(const QString &path, QString *error)
         adoptProject(std::move(*read.project));
         return true;
     }
-    if (error) {
+    // A text without a project always comes with an error (ImportExport::read).
+    if (error && firstError != read.messages.cend()) {
         const QString fileName = QFileInfo(path).fileName();
-        if (firstError == read.messages.cend())
-            *error = tr("%1 cannot be read.").arg(fileName);
-        else if (firstError->line > 0)
-            *error = tr("%1, line %2: %3").arg(fileName, QString::number(firstError->line), firstError->text);
-        else
-            *error = tr("%1: %2").arg(fileName, firstError->text);
+        *error = firstError->line > 0 ? tr("%1, line %2: %3").arg(fileName, QString::number(firstError->line), firstError->text)
+                                      : tr("%1: %2").arg(fileName, firstError->text);
     }
     return false;
 }

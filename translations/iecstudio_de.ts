@@ -884,10 +884,6 @@ Automatisch gespeichert: %2</translation>
             <translation>Trace</translation>
         </message>
         <message>
-            <source>%1 cannot be read.</source>
-            <translation>%1 kann nicht gelesen werden.</translation>
-        </message>
-        <message>
             <source>%1, line %2: %3</source>
             <translation>%1, Zeile %2: %3</translation>
         </message>

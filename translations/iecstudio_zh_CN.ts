@@ -883,10 +883,6 @@ Autosaved: %2</source>
             <translation>跟踪</translation>
         </message>
         <message>
-            <source>%1 cannot be read.</source>
-            <translation>无法读取 %1。</translation>
-        </message>
-        <message>
             <source>%1, line %2: %3</source>
             <translation>%1，第 %2 行：%3</translation>
         </message>

@@ -626,11 +626,12 @@ void CodeEditor::insertFromMimeData(const QMimeData *source)
     if (isReadOnly())
         return;
     const QString callType = mimeCallMimeType(m_language);
-    const QString text = source->hasFormat(callType) ? QString::fromUtf8(source->data(callType)) : source->text();
-    if (!source->hasFormat(callType) && !source->hasText()) {
+    const bool call = source->hasFormat(callType);
+    if (!call && !source->hasText()) {
         QPlainTextEdit::insertFromMimeData(source);
         return;
     }
+    const QString text = call ? QString::fromUtf8(source->data(callType)) : source->text();
     // Only what the project file can keep: a control character copied from elsewhere would be
     // lost or make the file unreadable when it is saved (model/filetext.h).
     QTextCursor cursor = textCursor();

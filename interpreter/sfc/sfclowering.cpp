@@ -414,8 +414,8 @@ bool Lowering::lowerNestedChart(const model::PouAction &action, std::vector<ast:
         return false;
     }
     // Each action chart is lowered once per POU (m_calledActions), so its action's name alone
-    // keeps its hidden variables apart.
-    Lowering nested(chartPou, m_result, m_diagnostics, m_parsed, QStringLiteral("__sfc_") + action.name + QLatin1Char('_'), &out);
+    // keeps its hidden variables apart; the online view reads them by the same rule.
+    Lowering nested(chartPou, m_result, m_diagnostics, m_parsed, hiddenPrefix(action.name), &out);
     nested.m_chartChain = m_chartChain;
     nested.m_chartChain << key(action.name);
     nested.m_calledActions = m_calledActions;

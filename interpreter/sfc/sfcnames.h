@@ -23,6 +23,13 @@ inline QString stepTime(const ChartStep &step)
     return step.options.simplified ? QString(QStringLiteral("_time") + step.name) : QString(step.name + QStringLiteral(".t"));
 }
 
+// Where a chart's hidden variables start: "__sfc_" for the POU's own chart, "__sfc_A_" for the
+// chart that is action A's body, however deep the lowering reached it (each is lowered once).
+inline QString hiddenPrefix(const QString &action = {})
+{
+    return action.isEmpty() ? QStringLiteral("__sfc_") : QStringLiteral("__sfc_") + action + QLatin1Char('_');
+}
+
 // Hidden per-element variables are numbered by their index in the Chart (steps, transitions) or in
 // chartActions() (actions), so the chart state finds them again by building the same Chart.
 inline QString hidden(const char *kind, int index, const char *what)

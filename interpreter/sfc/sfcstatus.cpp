@@ -37,7 +37,7 @@ const model::Body *chartBody(const model::Pou &pou, const QString &action)
 // A hidden variable's name in the chart's own namespace (hidden() names it for a POU's chart).
 QString hiddenName(const ChartLayout &layout, const QString &name)
 {
-    return layout.hiddenPrefix + name.mid(int(qstrlen("__sfc_")));
+    return layout.hiddenPrefix + name.mid(hiddenPrefix().size());
 }
 
 } // namespace
@@ -52,8 +52,7 @@ std::optional<ChartLayout> chartLayout(const model::Pou &pou, const QString &act
     ChartLayout layout;
     layout.pou = pou.name;
     layout.action = action;
-    if (!action.isEmpty()) // lowered as a nested chart (sfclowering.cpp, lowerNestedChart)
-        layout.hiddenPrefix = QStringLiteral("__sfc_") + action + QLatin1Char('_');
+    layout.hiddenPrefix = hiddenPrefix(action);
     for (const ChartStep &step : chart.steps)
         layout.steps.push_back({step.name, step.localId, stepActive(step), stepTime(step)});
     layout.actions = chartActions(chart);
@@ -66,8 +65,8 @@ std::optional<ChartState> chartState(const Runtime &runtime, const model::Pou &p
     const QString &action)
 {
     const model::Body *body = chartBody(pou, action);
-    const QString now = action.isEmpty() ? QStringLiteral("__sfc_now") : QStringLiteral("__sfc_%1_now").arg(action);
-    if (!body || body->language() != model::BodyLanguage::SFC || !runtime.find(instancePath + QLatin1Char('.') + now))
+    if (!body || body->language() != model::BodyLanguage::SFC
+        || !runtime.find(instancePath + QLatin1Char('.') + hiddenPrefix(action) + QStringLiteral("now")))
         return std::nullopt; // cheap checks first: no chart to build
     return chartState(runtime, *chartLayout(pou, action), instancePath);
 }
