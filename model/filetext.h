@@ -1,7 +1,10 @@
 #pragma once
 
+#include <QByteArray>
 #include <QString>
 #include <QStringView>
+
+#include <algorithm>
 
 // What text a project file can keep. XML 1.0 has no way to hold NUL and the other control
 // characters but tab and line breaks, nor U+FFFE and U+FFFF, not even as character references: a
@@ -24,6 +27,15 @@ namespace iec::model {
             kept.append(c);
     }
     return kept;
+}
+
+// The UTF-8 the PLCopen writer hands to the XML: what a model text would make invalid (or, for a
+// NUL, cut short) is left out, whichever way it entered the model.
+[[nodiscard]] inline QByteArray toFileUtf8(QStringView text)
+{
+    if (std::ranges::all_of(text, [](QChar c) { return fileCanKeep(c.unicode()); }))
+        return text.toUtf8();
+    return withoutCharactersAFileCannotKeep(text).toUtf8();
 }
 
 } // namespace iec::model

@@ -6947,6 +6947,10 @@ Automatisch gespeichert: %2</translation>
             <source>creationDateTime '%1' has a space where XML wants a 'T'; it is written as '%2'.</source>
             <translation>creationDateTime '%1' hat ein Leerzeichen, wo XML ein 'T' verlangt; es wird als '%2' geschrieben.</translation>
         </message>
+        <message>
+            <source>Characters XML does not allow (control characters, U+FFFE or U+FFFF) were left out of the file, %1 in all, so that the project is saved as valid XML.</source>
+            <translation>Zeichen, die XML nicht erlaubt (Steuerzeichen, U+FFFE oder U+FFFF), wurden aus der Datei weggelassen, insgesamt %1, damit das Projekt als gültiges XML gespeichert wird.</translation>
+        </message>
     </context>
     <context>
         <name>main</name>

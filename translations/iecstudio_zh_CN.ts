@@ -6940,6 +6940,10 @@ Autosaved: %2</source>
             <source>creationDateTime '%1' has a space where XML wants a 'T'; it is written as '%2'.</source>
             <translation>creationDateTime '%1' 中应为 'T' 的位置是空格，保存时将写为 '%2'。</translation>
         </message>
+        <message>
+            <source>Characters XML does not allow (control characters, U+FFFE or U+FFFF) were left out of the file, %1 in all, so that the project is saved as valid XML.</source>
+            <translation>文件中含有 XML 不允许的字符（控制字符、U+FFFE 或 U+FFFF），共 %1 个，已被略去，以便项目保存为有效的 XML。</translation>
+        </message>
     </context>
     <context>
         <name>main</name>

@@ -147,7 +147,7 @@ bool isMemberNode(pugi::xml_node n)
 void appendText(pugi::xml_node node, const QString &text)
 {
     if (!text.isEmpty())
-        node.append_child(pugi::node_pcdata).set_value(text.toUtf8().constData());
+        node.append_child(pugi::node_pcdata).set_value(toFileUtf8(text).constData());
 }
 
 // CODESYS's form of program text: <ST><xhtml xmlns="...">text</xhtml></ST>.
@@ -204,7 +204,7 @@ void insertMember(pugi::xml_node parent, pugi::xml_node before, const CodesysMem
 {
     pugi::xml_node node = before ? parent.insert_child_before(member.property ? "Property" : "Method", before)
                                  : parent.append_child(member.property ? "Property" : "Method");
-    node.append_attribute("name").set_value(member.name.toUtf8().constData());
+    node.append_attribute("name").set_value(toFileUtf8(member.name).constData());
     for (pugi::xml_attribute a = before.first_attribute(); a; a = a.next_attribute()) {
         if (std::strcmp(a.name(), "name") != 0)
             node.append_attribute(a.name()).set_value(a.value()); // ObjectId and what else CODESYS wrote
@@ -371,7 +371,7 @@ AddData addDataWithInterface(const AddData &addData, const QString &replacing, c
     AddData result = addData;
     const auto build = [&](pugi::xml_node parent, pugi::xml_node before) {
         pugi::xml_node itf = before ? parent.insert_child_before("Interface", before) : parent.append_child("Interface");
-        itf.append_attribute("name").set_value(definition.name.toUtf8().constData());
+        itf.append_attribute("name").set_value(toFileUtf8(definition.name).constData());
         for (pugi::xml_attribute a = before.first_attribute(); a; a = a.next_attribute()) {
             if (std::strcmp(a.name(), "name") != 0)
                 itf.append_attribute(a.name()).set_value(a.value()); // ObjectId and what else CODESYS wrote

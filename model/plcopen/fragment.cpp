@@ -26,7 +26,7 @@ QByteArray writeElementsFragment(const QString &language, const std::vector<Elem
     pugi::xml_node root = document.append_child(kFragmentElement);
     root.append_attribute("xmlns").set_value(kTc6Namespace);
     root.append_attribute("xmlns:xhtml").set_value(kXhtmlNamespace);
-    root.append_attribute("language").set_value(language.toUtf8().constData());
+    root.append_attribute("language").set_value(toFileUtf8(language).constData());
     WriteContext context;
     XmlOut out(root, context);
     out.choiceList(elements);

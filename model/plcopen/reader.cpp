@@ -64,8 +64,9 @@ ReadResult readProject(const QByteArray &bytes)
     context.indexLines(bytes.constData(), bytes.size());
 
     pugi::xml_document document;
+    const QByteArray mended = withNulAsAnotherControlCharacter(bytes);
     const pugi::xml_parse_result parsed
-        = document.load_buffer(bytes.constData(), std::size_t(bytes.size()), kParseOptions, pugi::encoding_auto);
+        = document.load_buffer(mended.constData(), std::size_t(mended.size()), kParseOptions, pugi::encoding_auto);
     if (!parsed) {
         context.reportAtOffset(Diagnostic::Severity::Error, qsizetype(parsed.offset),
             QCoreApplication::translate("iec::model::plcopen::Reader", "The file is not well-formed XML: %1.")
@@ -83,6 +84,7 @@ ReadResult readProject(const QByteArray &bytes)
         return result;
     }
     checkNamespace(root, context);
+    dropCharactersXmlDoesNotAllow(document, context);
     repairOldForms(root, context);
     result.isProject = true;
 

@@ -1,8 +1,11 @@
 #include "model/plcopen/repair.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
+#include <cstring>
 #include <string>
+#include <utility>
 
 namespace iec::model::plcopen {
 
@@ -71,7 +74,136 @@ void repairDateTime(pugi::xml_node header, ReadContext &context)
             .arg(QString::fromStdString(value), QString::fromStdString(mended)));
 }
 
+// UTF-16 and UTF-32 (with or without a byte order mark) have NUL bytes in every character; pugixml
+// converts them, and their NULs are not looked for.
+bool isWideEncoding(const QByteArray &bytes)
+{
+    return bytes.size() >= 2
+        && (bytes.startsWith("\xFE\xFF") || bytes.startsWith("\xFF\xFE") || bytes[0] == '\0' || bytes[1] == '\0');
+}
+
+// The end of the markup that starts at `at` and holds no character references (a CDATA section,
+// a comment, a processing instruction), or -1.
+qsizetype endOfLiteralMarkup(const QByteArray &bytes, qsizetype at)
+{
+    const auto skipTo = [&](const char *open, const char *close) -> qsizetype {
+        if (!QByteArrayView(bytes).sliced(at).startsWith(open))
+            return -1;
+        const qsizetype end = bytes.indexOf(close, at + qsizetype(std::strlen(open)));
+        return end < 0 ? bytes.size() : end + qsizetype(std::strlen(close));
+    };
+    for (const auto &[open, close] : {std::pair("<![CDATA[", "]]>"), std::pair("<!--", "-->"), std::pair("<?", "?>")}) {
+        if (const qsizetype end = skipTo(open, close); end >= 0)
+            return end;
+    }
+    return -1;
+}
+
+// If a character reference to NUL (&#0;, &#x000;, ...) starts at `at`, turns it into one to U+0001.
+// Returns where the scan goes on.
+qsizetype mendNulReference(QByteArray &bytes, qsizetype at)
+{
+    qsizetype digits = at + 2;
+    const bool hex = digits < bytes.size() && bytes[digits] == 'x';
+    if (hex)
+        ++digits;
+    qsizetype end = digits;
+    bool zero = true;
+    while (end < bytes.size() && (hex ? std::isxdigit(uchar(bytes[end])) : std::isdigit(uchar(bytes[end])))) {
+        zero = zero && bytes[end] == '0';
+        ++end;
+    }
+    if (end > digits && end < bytes.size() && bytes[end] == ';' && zero)
+        bytes[end - 1] = '1';
+    return end;
+}
+
+// How many bytes of the UTF-8 at `text` form a character XML does not allow (0 if it is allowed).
+int disallowedLength(const unsigned char *text)
+{
+    if (text[0] < 0x20 && text[0] != '\t' && text[0] != '\n' && text[0] != '\r')
+        return 1;
+    if (text[0] == 0xEF && text[1] == 0xBF && (text[2] == 0xBE || text[2] == 0xBF)) // U+FFFE, U+FFFF
+        return 3;
+    return 0;
+}
+
+// Leaves the characters XML does not allow out of `value`, counting them; false when it has none.
+bool dropDisallowed(const char *value, std::string &kept, qsizetype &dropped)
+{
+    const auto *text = reinterpret_cast<const unsigned char *>(value);
+    std::size_t at = 0;
+    for (; text[at]; ++at) {
+        if (disallowedLength(text + at))
+            break;
+    }
+    if (!text[at])
+        return false;
+    kept.assign(value, at);
+    while (text[at]) {
+        if (const int length = disallowedLength(text + at)) {
+            ++dropped;
+            at += std::size_t(length);
+        } else {
+            kept.push_back(char(text[at++]));
+        }
+    }
+    return true;
+}
+
 } // namespace
+
+QByteArray withNulAsAnotherControlCharacter(const QByteArray &bytes)
+{
+    if (isWideEncoding(bytes) || (!bytes.contains('\0') && !bytes.contains("&#")))
+        return bytes;
+    QByteArray mended = bytes;
+    mended.replace('\0', '\x01');
+    // One pass, linear in the size of the file (a CDATA section's end is looked for once).
+    for (qsizetype at = 0; at < mended.size();) {
+        if (mended[at] == '<') {
+            if (const qsizetype end = endOfLiteralMarkup(mended, at); end >= 0) {
+                at = end;
+                continue;
+            }
+        } else if (mended[at] == '&' && at + 1 < mended.size() && mended[at + 1] == '#') {
+            at = mendNulReference(mended, at);
+            continue;
+        }
+        ++at;
+    }
+    return mended;
+}
+
+void dropCharactersXmlDoesNotAllow(pugi::xml_document &document, ReadContext &context)
+{
+    qsizetype dropped = 0;
+    std::string kept;
+    const auto mend = [&](auto item) {
+        if (dropDisallowed(item.value(), kept, dropped))
+            item.set_value(kept.c_str());
+    };
+    pugi::xml_node firstPlace;
+    walkDescendants(document, [&](pugi::xml_node node) {
+        const qsizetype before = dropped;
+        if (node.type() == pugi::node_element) {
+            for (pugi::xml_attribute attribute : node.attributes())
+                mend(attribute);
+        } else {
+            mend(node);
+        }
+        if (before == 0 && dropped > 0) // an element's name still points into the file, to locate it
+            firstPlace = node.type() == pugi::node_element ? node : node.parent();
+        return node.type() == pugi::node_element;
+    });
+    // The characters are not named: a NUL was read as U+0001.
+    if (dropped > 0)
+        context.report(Diagnostic::Severity::Warning, firstPlace,
+            QCoreApplication::translate("iec::model::plcopen::Reader",
+                "Characters XML does not allow (control characters, U+FFFE or U+FFFF) were left out of the "
+                "file, %1 in all, so that the project is saved as valid XML.")
+                .arg(dropped));
+}
 
 void repairOldForms(pugi::xml_node root, ReadContext &context)
 {

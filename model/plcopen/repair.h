@@ -11,4 +11,15 @@ namespace iec::model::plcopen {
 
 void repairOldForms(pugi::xml_node root, ReadContext &context);
 
+// XML 1.0 allows no control character but tab and line breaks, nor U+FFFE or U+FFFF, not even
+// written as a character reference; some tools write them all the same. pugixml reads most of
+// them, but a NUL ends its text there, cutting off the rest.
+//
+// Before the parse: each NUL of a UTF-8 file (a raw byte, or &#0; outside CDATA sections, comments
+// and processing instructions) becomes U+0001, in as many bytes, so lines and columns stay right.
+[[nodiscard]] QByteArray withNulAsAnotherControlCharacter(const QByteArray &bytes);
+// After the parse: such characters are left out of every text and attribute value, with one
+// warning at the first, so that what is read can be written back as valid XML.
+void dropCharactersXmlDoesNotAllow(pugi::xml_document &document, ReadContext &context);
+
 } // namespace iec::model::plcopen

@@ -84,11 +84,11 @@ void appendFragment(pugi::xml_node parent, const QString &xml)
     if (xml.trimmed().isEmpty()) {
         // Only white space (an addData entry holding nothing else): a fragment parse drops it, so
         // it is written as text, which the reader keeps (found by fuzz_plcopen).
-        parent.append_child(pugi::node_pcdata).set_value(xml.toUtf8().constData());
+        parent.append_child(pugi::node_pcdata).set_value(toFileUtf8(xml).constData());
         return;
     }
     pugi::xml_document fragment;
-    const QByteArray bytes = xml.toUtf8();
+    const QByteArray bytes = toFileUtf8(xml);
     if (!fragment.load_buffer(bytes.constData(), bytes.size(),
             pugi::parse_default | pugi::parse_fragment | pugi::parse_ws_pcdata_single, pugi::encoding_utf8))
         return; // the model only holds text we serialized ourselves; nothing to salvage otherwise
@@ -120,12 +120,8 @@ void readFormattedText(pugi::xml_node node, FormattedText &text)
 void writeProgramText(pugi::xml_node node, const QString &text)
 {
     pugi::xml_node paragraph = node.append_child("xhtml:p");
-    // A NUL (pasted into an editor) would end the text there: the rest of the body would be lost
-    // from the file. XML cannot hold it at all, so it is written as U+FFFD, the replacement character.
-    QString storable = text;
-    storable.replace(QChar(u'\0'), QChar(0xFFFD));
     // CDATA cannot contain "]]>": end the section between "]]" and ">" and start a new one.
-    const std::string utf8 = storable.toStdString();
+    const std::string utf8 = toFileUtf8(text).toStdString();
     std::size_t start = 0;
     for (std::size_t found = utf8.find("]]>"); found != std::string::npos; found = utf8.find("]]>", start)) {
         paragraph.append_child(pugi::node_cdata).set_value(utf8.substr(start, found + 2 - start).c_str());

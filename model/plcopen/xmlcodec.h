@@ -2,6 +2,7 @@
 
 // Conversions between attribute text and model values, shared by the reader and the writer.
 
+#include "model/filetext.h"
 #include "model/graphics.h"
 #include "model/pou.h"
 #include "model/variables.h"
@@ -26,7 +27,7 @@ template<> struct Codec<QString> {
         value = QString::fromUtf8(text);
         return true;
     }
-    static std::string format(const QString &value) { return value.toStdString(); }
+    static std::string format(const QString &value) { return toFileUtf8(value).toStdString(); }
 };
 
 template<> struct Codec<bool> {

@@ -8,7 +8,7 @@ namespace iec::model::plcopen {
 
 void XmlOut::text(const char *name, const QString &value)
 {
-    m_node.append_child(name).text().set(value.toStdString().c_str());
+    m_node.append_child(name).text().set(toFileUtf8(value).constData());
 }
 
 void XmlOut::text(const char *name, const std::optional<QString> &value)
@@ -25,13 +25,13 @@ void XmlOut::finish(const Extras &extras)
         pugi::xml_attribute existing = m_node.attribute(name.c_str());
         if (!existing)
             existing = m_node.append_attribute(name.c_str());
-        existing.set_value(attribute.value.toStdString().c_str());
+        existing.set_value(toFileUtf8(attribute.value).constData());
     }
     // Each unknown element goes after the last known sibling it followed in the file.
     std::map<QString, pugi::xml_node> lastInserted;
     for (const UnknownElement &unknown : extras.elements) {
         pugi::xml_document fragment;
-        const QByteArray bytes = unknown.xml.toUtf8();
+        const QByteArray bytes = toFileUtf8(unknown.xml);
         if (!fragment.load_buffer(
                 bytes.constData(), bytes.size(),
                 // As the reader parses (reader.cpp): an element holding only whitespace keeps it.
@@ -64,8 +64,8 @@ void XmlOut::addData(const AddData &entries, bool required)
     pugi::xml_node addData = m_node.append_child("addData");
     for (const AddDataEntry &entry : entries) {
         pugi::xml_node data = addData.append_child("data");
-        data.append_attribute("name").set_value(entry.name.toStdString().c_str());
-        data.append_attribute("handleUnknown").set_value(entry.handleUnknown.toStdString().c_str());
+        data.append_attribute("name").set_value(toFileUtf8(entry.name).constData());
+        data.append_attribute("handleUnknown").set_value(toFileUtf8(entry.handleUnknown).constData());
         appendFragment(data, entry.content);
         replaceSlots(data);
     }

@@ -73,7 +73,9 @@ private Q_SLOTS:
     void hostileInput();
     void missingFileIsAFileError();
     void oldFormsLoadWithWarningsAndAreWrittenValid();
-    void nulInABodyDoesNotCutItShort();
+    void charactersXmlDoesNotAllowAreLeftOutWhenRead_data();
+    void charactersXmlDoesNotAllowAreLeftOutWhenRead();
+    void charactersXmlDoesNotAllowAreNeverWritten();
 };
 
 void TestPlcopenRobustness::truncatedInputIsAnErrorWithALine()
@@ -320,20 +322,101 @@ void TestPlcopenRobustness::oldFormsLoadWithWarningsAndAreWrittenValid()
     QVERIFY(again.diagnostics.empty());
 }
 
-void TestPlcopenRobustness::nulInABodyDoesNotCutItShort()
+void TestPlcopenRobustness::charactersXmlDoesNotAllowAreLeftOutWhenRead_data()
 {
-    // XML cannot hold a NUL; written as U+FFFD, the text after it stays in the file.
+    QTest::addColumn<QByteArray>("name");      // the contentHeader's name attribute, as written in the file
+    QTest::addColumn<QByteArray>("paragraph"); // the content of the ST body's <xhtml:p>
+    QTest::addColumn<QString>("expectedName");
+    QTest::addColumn<QString>("expectedText");
+    QTest::addColumn<int>("dropped"); // 0: no warning
+    QTest::addColumn<int>("line");    // of the warning
+
+    const QString text = QStringLiteral("a := 1; b := 2;");
+    QTest::newRow("reference to U+0001") << QByteArray("n") << QByteArray("a := 1;&#1; b := 2;") << "n" << text << 1 << 2;
+    QTest::newRow("reference to NUL") << QByteArray("n") << QByteArray("a := 1;&#0; b := 2;") << "n" << text << 1 << 2;
+    QTest::newRow("hexadecimal reference to NUL")
+        << QByteArray("n") << QByteArray("a := 1;&#x0000; b := 2;") << "n" << text << 1 << 2;
+    QTest::newRow("raw NUL") << QByteArray("n") << QByteArray("a := 1;\0 b := 2;", 16) << "n" << text << 1 << 2;
+    QTest::newRow("raw escape") << QByteArray("n") << QByteArray("a := 1;\x1b b := 2;") << "n" << text << 1 << 2;
+    QTest::newRow("U+FFFF and U+FFFE")
+        << QByteArray("n") << QByteArray("a := 1;&#xFFFF; b\xEF\xBF\xBE := 2;") << "n" << QStringLiteral("a := 1; b := 2;")
+        << 2 << 2;
+    QTest::newRow("in an attribute")
+        << QByteArray("n&#2;&#0;m") << QByteArray("a := 1; b := 2;") << "nm" << text << 2 << 1;
+    QTest::newRow("in an attribute and a body")
+        << QByteArray("n\x01") << QByteArray("a := 1;&#3;&#4; b := 2;") << "n" << text << 3 << 1;
+    QTest::newRow("tab and line breaks are allowed")
+        << QByteArray("n&#9;") << QByteArray("a := 1;&#9;&#10; b := 2;") << "n\t"
+        << QStringLiteral("a := 1;\t\n b := 2;") << 0 << 0;
+    QTest::newRow("in a CDATA section a reference is text")
+        << QByteArray("n") << QByteArray("<![CDATA[a := 1;&#0; b := 2;]]>") << "n" << QStringLiteral("a := 1;&#0; b := 2;")
+        << 0 << 0;
+    QTest::newRow("a comment hides a reference")
+        << QByteArray("n") << QByteArray("a := 1;<!-- &#0; --> b := 2;") << "n" << text << 0 << 0;
+}
+
+void TestPlcopenRobustness::charactersXmlDoesNotAllowAreLeftOutWhenRead()
+{
+    QFETCH(QByteArray, name);
+    QFETCH(QByteArray, paragraph);
+    QFETCH(QString, expectedName);
+    QFETCH(QString, expectedText);
+    QFETCH(int, dropped);
+    QFETCH(int, line);
+    const QByteArray file = "<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\" xmlns:xhtml=\"http://www.w3.org/1999/xhtml\">"
+                            "<fileHeader companyName=\"c\" productName=\"p\" productVersion=\"1\" "
+                            "creationDateTime=\"2020-01-01T00:00:00\"/><contentHeader name=\""
+        + name
+        + "\"><coordinateInfo><fbd><scaling x=\"1\" y=\"1\"/></fbd><ld><scaling x=\"1\" y=\"1\"/></ld><sfc><scaling "
+          "x=\"1\" y=\"1\"/></sfc></coordinateInfo></contentHeader>\n<types><dataTypes/><pous><pou name=\"P\" "
+          "pouType=\"program\"><body><ST><xhtml:p>"
+        + paragraph + "</xhtml:p></ST></body></pou></pous></types><instances><configurations/></instances></project>";
+
+    const plcopen::ReadResult read = plcopen::readProject(file);
+    QVERIFY2(read.ok, qPrintable(diagnosticsText(read.diagnostics)));
+    QCOMPARE(read.project.contentHeader.name, expectedName);
+    QCOMPARE(read.project.types.pous.front().body()->text(), expectedText);
+    if (dropped == 0) {
+        QCOMPARE(diagnosticsText(read.diagnostics), QString());
+    } else {
+        QCOMPARE(read.diagnostics.size(), std::size_t(1));
+        QCOMPARE(read.diagnostics.front().severity, Diagnostic::Severity::Warning);
+        QCOMPARE(read.diagnostics.front().message,
+            QStringLiteral("Characters XML does not allow (control characters, U+FFFE or U+FFFF) were left out of the "
+                           "file, %1 in all, so that the project is saved as valid XML.")
+                .arg(dropped));
+        QCOMPARE(read.diagnostics.front().line, line);
+    }
+
+    const QByteArray written = plcopen::writeProject(read.project);
+    QCOMPARE(schemaErrors(written), QString());
+    const plcopen::ReadResult again = plcopen::readProject(written);
+    QCOMPARE(diagnosticsText(again.diagnostics), QString());
+    QCOMPARE(firstDifference(read.project, again.project), QString());
+}
+
+void TestPlcopenRobustness::charactersXmlDoesNotAllowAreNeverWritten()
+{
+    // However such characters entered the model, the file stays valid XML and nothing after them is
+    // lost (a NUL handed to pugixml would end the text there).
+    const QString controls = QStringLiteral("\x01") + QChar(u'\0') + QChar(0xFFFF) + QStringLiteral("\x1b");
     Project project;
+    project.contentHeader.name = QStringLiteral("Plant") + controls + QStringLiteral(" 2");
     Pou pou;
     pou.name = QStringLiteral("Main");
+    pou.documentation = FormattedText {.text = QStringLiteral("Pasted") + controls + QStringLiteral(" text")};
     Body body = Body::withLanguage(BodyLanguage::ST);
-    body.setText(QStringLiteral("a := 1; (* pasted ") + QChar(u'\0') + QStringLiteral(" *)\nb := 2;"));
+    body.setText(QStringLiteral("a := 1; (* pasted ") + controls + QStringLiteral(" *)\nb := 2;"));
     pou.bodies.push_back(body);
     project.types.pous.push_back(pou);
-    const auto read = plcopen::readProject(plcopen::writeProject(project));
-    QVERIFY(read.ok);
-    QCOMPARE(read.project.types.pous.front().body()->text(),
-        QStringLiteral("a := 1; (* pasted ") + QChar(0xFFFD) + QStringLiteral(" *)\nb := 2;"));
+
+    const QByteArray written = plcopen::writeProject(project);
+    QCOMPARE(savedSchemaErrors(project), QString());
+    const auto read = plcopen::readProject(written);
+    QCOMPARE(diagnosticsText(read.diagnostics), QString());
+    QCOMPARE(read.project.contentHeader.name, QStringLiteral("Plant 2"));
+    QCOMPARE(read.project.types.pous.front().documentation->text, QStringLiteral("Pasted text"));
+    QCOMPARE(read.project.types.pous.front().body()->text(), QStringLiteral("a := 1; (* pasted  *)\nb := 2;"));
 }
 
 QTEST_GUILESS_MAIN(TestPlcopenRobustness)
