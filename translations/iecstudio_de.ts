@@ -3155,12 +3155,132 @@ Automatisch gespeichert: %2</translation>
             <translation>Ausschaltverzögerung: Q bleibt für PT TRUE, nachdem IN fällt.</translation>
         </message>
         <message>
-            <source>Real-time clock: CDT runs from PDT while EN is TRUE.</source>
-            <translation>Echtzeituhr: CDT läuft ab PDT, solange EN TRUE ist.</translation>
-        </message>
-        <message>
             <source>Converts %1 to %2.</source>
             <translation>Wandelt %1 in %2 um.</translation>
+        </message>
+        <message>
+            <source>BCD conversion</source>
+            <translation>BCD-Konvertierung</translation>
+        </message>
+        <message>
+            <source>Bit and byte functions</source>
+            <translation>Bit-/Byte-Funktionen</translation>
+        </message>
+        <message>
+            <source>Mathematical helpers</source>
+            <translation>Mathematische Hilfsfunktionen</translation>
+        </message>
+        <message>
+            <source>Controllers</source>
+            <translation>Regler</translation>
+        </message>
+        <message>
+            <source>Signal generators</source>
+            <translation>Signalgeneratoren</translation>
+        </message>
+        <message>
+            <source>Function manipulators</source>
+            <translation>Funktionsmanipulatoren</translation>
+        </message>
+        <message>
+            <source>Analog values</source>
+            <translation>Analogwertverarbeitung</translation>
+        </message>
+        <message>
+            <source>Messages</source>
+            <translation>Meldungen</translation>
+        </message>
+        <message>
+            <source>The two BCD digits of B as a number; -1 when a digit is not 0 to 9.</source>
+            <translation>Die zwei BCD-Ziffern von B als Zahl; -1, wenn eine Ziffer nicht 0 bis 9 ist.</translation>
+        </message>
+        <message>
+            <source>I as two BCD digits; 255 when I is not 0 to 99.</source>
+            <translation>I als zwei BCD-Ziffern; 255, wenn I nicht 0 bis 99 ist.</translation>
+        </message>
+        <message>
+            <source>Bit N of X (bit 0 first).</source>
+            <translation>Bit N von X (Bit 0 zuerst).</translation>
+        </message>
+        <message>
+            <source>The eight inputs as the bits of a byte, B0 lowest.</source>
+            <translation>Die acht Eingänge als Bits eines Bytes, B0 als niedrigstes.</translation>
+        </message>
+        <message>
+            <source>X with bit N set to B.</source>
+            <translation>X, mit Bit N auf B gesetzt.</translation>
+        </message>
+        <message>
+            <source>The eight bits of B as outputs B0 to B7.</source>
+            <translation>Die acht Bits von B als Ausgänge B0 bis B7.</translation>
+        </message>
+        <message>
+            <source>The slope of IN per second; TM is the time since the last call in ms.</source>
+            <translation>Die Steigung von IN pro Sekunde; TM ist die Zeit seit dem letzten Aufruf in ms.</translation>
+        </message>
+        <message>
+            <source>Sums IN over time; TM is the time since the last call in ms.</source>
+            <translation>Summiert IN über die Zeit; TM ist die Zeit seit dem letzten Aufruf in ms.</translation>
+        </message>
+        <message>
+            <source>Maps IN linearly from IN_MIN..IN_MAX to OUT_MIN..OUT_MAX.</source>
+            <translation>Bildet IN linear von IN_MIN..IN_MAX auf OUT_MIN..OUT_MAX ab.</translation>
+        </message>
+        <message>
+            <source>Minimum, maximum and average of the INT values since RESET.</source>
+            <translation>Minimum, Maximum und Mittelwert der INT-Werte seit RESET.</translation>
+        </message>
+        <message>
+            <source>Minimum, maximum and average of the REAL values since RESET.</source>
+            <translation>Minimum, Maximum und Mittelwert der REAL-Werte seit RESET.</translation>
+        </message>
+        <message>
+            <source>The variance of the values since RESET.</source>
+            <translation>Die Varianz der Werte seit RESET.</translation>
+        </message>
+        <message>
+            <source>PD controller: Y from the error SET_POINT - ACTUAL.</source>
+            <translation>PD-Regler: Y aus der Regelabweichung SET_POINT - ACTUAL.</translation>
+        </message>
+        <message>
+            <source>PID controller: Y from the error SET_POINT - ACTUAL.</source>
+            <translation>PID-Regler: Y aus der Regelabweichung SET_POINT - ACTUAL.</translation>
+        </message>
+        <message>
+            <source>PID controller for a fixed cycle of CYCLE seconds.</source>
+            <translation>PID-Regler für einen festen Zyklus von CYCLE Sekunden.</translation>
+        </message>
+        <message>
+            <source>While ENABLE, OUT is TRUE for TIMEHIGH, then FALSE for TIMELOW, and so on.</source>
+            <translation>Solange ENABLE, ist OUT für TIMEHIGH TRUE, dann für TIMELOW FALSE, und so fort.</translation>
+        </message>
+        <message>
+            <source>A periodic signal of the shape MODE (triangle, sawtooth, rectangle, sine).</source>
+            <translation>Ein periodisches Signal der Form MODE (Dreieck, Sägezahn, Rechteck, Sinus).</translation>
+        </message>
+        <message>
+            <source>OUT on the characteristic curve through the points P.</source>
+            <translation>OUT auf der Kennlinie durch die Punkte P.</translation>
+        </message>
+        <message>
+            <source>OUT follows IN, rising by ASCEND and falling by DESCEND at most per TIMEBASE.</source>
+            <translation>OUT folgt IN und steigt um höchstens ASCEND bzw. fällt um höchstens DESCEND pro TIMEBASE.</translation>
+        </message>
+        <message>
+            <source>OUT becomes TRUE below LOW and FALSE above HIGH.</source>
+            <translation>OUT wird unterhalb von LOW TRUE und oberhalb von HIGH FALSE.</translation>
+        </message>
+        <message>
+            <source>O when IN is above HIGH, U when below LOW, IL when in between.</source>
+            <translation>O, wenn IN über HIGH liegt, U, wenn unter LOW, IL dazwischen.</translation>
+        </message>
+        <message>
+            <source>Real-time clock: CDT runs on from PDT while IN is TRUE.</source>
+            <translation>Echtzeituhr: CDT läuft ab PDT weiter, solange IN TRUE ist.</translation>
+        </message>
+        <message>
+            <source>On a rising edge of TRIG, writes MSG to the messages pane.</source>
+            <translation>Schreibt bei einer steigenden Flanke von TRIG MSG in das Meldungsfenster.</translation>
         </message>
     </context>
     <context>

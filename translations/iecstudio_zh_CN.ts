@@ -3149,12 +3149,132 @@ Autosaved: %2</source>
             <translation>断开延时：IN 下降后 Q 在 PT 时间内保持 TRUE。</translation>
         </message>
         <message>
-            <source>Real-time clock: CDT runs from PDT while EN is TRUE.</source>
-            <translation>实时时钟：EN 为 TRUE 时，CDT 从 PDT 开始计时。</translation>
-        </message>
-        <message>
             <source>Converts %1 to %2.</source>
             <translation>将 %1 转换为 %2。</translation>
+        </message>
+        <message>
+            <source>BCD conversion</source>
+            <translation>BCD 转换</translation>
+        </message>
+        <message>
+            <source>Bit and byte functions</source>
+            <translation>位/字节函数</translation>
+        </message>
+        <message>
+            <source>Mathematical helpers</source>
+            <translation>数学辅助函数</translation>
+        </message>
+        <message>
+            <source>Controllers</source>
+            <translation>控制器</translation>
+        </message>
+        <message>
+            <source>Signal generators</source>
+            <translation>信号发生器</translation>
+        </message>
+        <message>
+            <source>Function manipulators</source>
+            <translation>函数处理器</translation>
+        </message>
+        <message>
+            <source>Analog values</source>
+            <translation>模拟量处理</translation>
+        </message>
+        <message>
+            <source>Messages</source>
+            <translation>消息</translation>
+        </message>
+        <message>
+            <source>The two BCD digits of B as a number; -1 when a digit is not 0 to 9.</source>
+            <translation>B 的两位 BCD 数字所表示的数；某位不在 0 到 9 之间时为 -1。</translation>
+        </message>
+        <message>
+            <source>I as two BCD digits; 255 when I is not 0 to 99.</source>
+            <translation>I 表示为两位 BCD 数字；I 不在 0 到 99 之间时为 255。</translation>
+        </message>
+        <message>
+            <source>Bit N of X (bit 0 first).</source>
+            <translation>X 的第 N 位（从第 0 位起）。</translation>
+        </message>
+        <message>
+            <source>The eight inputs as the bits of a byte, B0 lowest.</source>
+            <translation>把八个输入作为一个字节的各位，B0 为最低位。</translation>
+        </message>
+        <message>
+            <source>X with bit N set to B.</source>
+            <translation>把 X 的第 N 位设为 B。</translation>
+        </message>
+        <message>
+            <source>The eight bits of B as outputs B0 to B7.</source>
+            <translation>把 B 的八位作为输出 B0 到 B7。</translation>
+        </message>
+        <message>
+            <source>The slope of IN per second; TM is the time since the last call in ms.</source>
+            <translation>IN 每秒的变化率；TM 为距上次调用的时间（毫秒）。</translation>
+        </message>
+        <message>
+            <source>Sums IN over time; TM is the time since the last call in ms.</source>
+            <translation>对 IN 随时间积分；TM 为距上次调用的时间（毫秒）。</translation>
+        </message>
+        <message>
+            <source>Maps IN linearly from IN_MIN..IN_MAX to OUT_MIN..OUT_MAX.</source>
+            <translation>把 IN 从 IN_MIN..IN_MAX 线性映射到 OUT_MIN..OUT_MAX。</translation>
+        </message>
+        <message>
+            <source>Minimum, maximum and average of the INT values since RESET.</source>
+            <translation>自 RESET 以来 INT 值的最小值、最大值和平均值。</translation>
+        </message>
+        <message>
+            <source>Minimum, maximum and average of the REAL values since RESET.</source>
+            <translation>自 RESET 以来 REAL 值的最小值、最大值和平均值。</translation>
+        </message>
+        <message>
+            <source>The variance of the values since RESET.</source>
+            <translation>自 RESET 以来各值的方差。</translation>
+        </message>
+        <message>
+            <source>PD controller: Y from the error SET_POINT - ACTUAL.</source>
+            <translation>PD 控制器：由偏差 SET_POINT - ACTUAL 计算 Y。</translation>
+        </message>
+        <message>
+            <source>PID controller: Y from the error SET_POINT - ACTUAL.</source>
+            <translation>PID 控制器：由偏差 SET_POINT - ACTUAL 计算 Y。</translation>
+        </message>
+        <message>
+            <source>PID controller for a fixed cycle of CYCLE seconds.</source>
+            <translation>用于固定周期（CYCLE 秒）的 PID 控制器。</translation>
+        </message>
+        <message>
+            <source>While ENABLE, OUT is TRUE for TIMEHIGH, then FALSE for TIMELOW, and so on.</source>
+            <translation>ENABLE 为真时，OUT 先在 TIMEHIGH 内为 TRUE，再在 TIMELOW 内为 FALSE，如此往复。</translation>
+        </message>
+        <message>
+            <source>A periodic signal of the shape MODE (triangle, sawtooth, rectangle, sine).</source>
+            <translation>形状由 MODE 决定的周期信号（三角波、锯齿波、方波、正弦波）。</translation>
+        </message>
+        <message>
+            <source>OUT on the characteristic curve through the points P.</source>
+            <translation>通过各点 P 的特性曲线上的 OUT 值。</translation>
+        </message>
+        <message>
+            <source>OUT follows IN, rising by ASCEND and falling by DESCEND at most per TIMEBASE.</source>
+            <translation>OUT 跟随 IN，每个 TIMEBASE 最多上升 ASCEND、下降 DESCEND。</translation>
+        </message>
+        <message>
+            <source>OUT becomes TRUE below LOW and FALSE above HIGH.</source>
+            <translation>低于 LOW 时 OUT 变为 TRUE，高于 HIGH 时变为 FALSE。</translation>
+        </message>
+        <message>
+            <source>O when IN is above HIGH, U when below LOW, IL when in between.</source>
+            <translation>IN 高于 HIGH 时 O，低于 LOW 时 U，介于两者之间时 IL。</translation>
+        </message>
+        <message>
+            <source>Real-time clock: CDT runs on from PDT while IN is TRUE.</source>
+            <translation>实时时钟：IN 为 TRUE 时 CDT 从 PDT 开始走时。</translation>
+        </message>
+        <message>
+            <source>On a rising edge of TRIG, writes MSG to the messages pane.</source>
+            <translation>在 TRIG 的上升沿把 MSG 写入消息窗格。</translation>
         </message>
     </context>
     <context>

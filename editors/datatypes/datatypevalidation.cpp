@@ -1,10 +1,14 @@
 #include "editors/datatypes/datatypevalidation.h"
 
 #include "editors/datatypes/typetext.h"
+#include "interpreter/compiler/ast.h"
+#include "interpreter/compiler/compiler.h"
 #include "interpreter/compiler/lexer.h"
+#include "interpreter/compiler/svghmi.h"
 #include "model/project.h"
 
 #include <QRegularExpression>
+#include <QSet>
 
 #include <algorithm>
 
@@ -39,6 +43,27 @@ void collectNames(const model::DataType &type, QStringList &names)
             }
         },
         type.kind);
+}
+
+// Types the compiler knows without the project declaring them: the standard function blocks
+// (CTU_DINT too), the Util library's blocks and types (BLINK, GEN_MODE, ...) and Beremiz's SVGHMI
+// types. Read from the compiler's own definitions, so the editor accepts what it compiles.
+bool isLibraryType(const QString &name)
+{
+    static const QSet<QString> names = [] {
+        QSet<QString> all;
+        for (const interp::ast::CompilationUnit *unit : {&interp::standardLibrary(), &interp::utilLibrary()}) {
+            for (const interp::ast::Pou &pou : unit->pous) {
+                if (pou.kind == interp::ast::PouKind::FunctionBlock)
+                    all.insert(pou.name.toUpper());
+            }
+            for (const interp::ast::TypeDecl &type : unit->types)
+                all.insert(type.name.toUpper());
+        }
+        return all;
+    }();
+    const QString upper = name.toUpper();
+    return names.contains(upper) || !interp::svgHmiBaseType(upper).isEmpty();
 }
 
 // Collects the messages of one form; each check adds at most one message per field.
@@ -207,7 +232,7 @@ private:
                 add(field, row, DataTypeValidator::tr("A type cannot contain itself."));
                 return;
             }
-            if (!m_context.typeNames.contains(name, Qt::CaseInsensitive)) {
+            if (!m_context.typeNames.contains(name, Qt::CaseInsensitive) && !isLibraryType(name)) {
                 add(field, row, DataTypeValidator::tr("Unknown type \"%1\".").arg(name));
                 return;
             }

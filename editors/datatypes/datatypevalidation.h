@@ -47,7 +47,7 @@ struct FormError {
 // What the form is checked against: the names the type may not take and the type names it may use.
 struct TypeContext {
     QStringList takenNames; // other data types and every POU (one namespace)
-    QStringList typeNames; // other data types and function blocks
+    QStringList typeNames; // the project's other data types and function blocks (library ones are known anyway)
     model::DataTypeDecl original;
 };
 

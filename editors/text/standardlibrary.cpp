@@ -1,5 +1,7 @@
 #include "editors/text/standardlibrary.h"
 
+#include "editors/text/utillibrary.h"
+
 #include <QCoreApplication>
 #include <QHash>
 
@@ -146,8 +148,6 @@ QList<StdPou> buildStandardPous()
             QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "On delay: Q follows IN after it was TRUE for PT.")),
         fb("TOF", C::Timer, {{"IN", "BOOL"}, {"PT", "TIME"}}, {{"Q", "BOOL"}, {"ET", "TIME"}},
             QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Off delay: Q stays TRUE for PT after IN falls.")),
-        fb("RTC", C::Timer, {{"EN", "BOOL"}, {"PDT", "DT"}}, {{"Q", "BOOL"}, {"CDT", "DT"}},
-            QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Real-time clock: CDT runs from PDT while EN is TRUE.")),
     };
     // The conversion operators X_TO_Y between the elementary types, as CODESYS V2.3 offers them.
     static const char *const convertible[] = {"BOOL", "BYTE", "WORD", "DWORD", "SINT", "USINT", "INT", "UINT", "DINT",
@@ -162,6 +162,7 @@ QList<StdPou> buildStandardPous()
                 QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Converts %1 to %2.")});
         }
     }
+    pous.append(utilLibraryPous());
     return pous;
 }
 
@@ -180,7 +181,7 @@ QString StdPou::signature() const
     QString text = name + QLatin1Char('(') + joinParams(inputs) + QLatin1Char(')');
     if (kind == Kind::Function)
         return text + QLatin1String(" : ") + returnType;
-    return text + QLatin1String(" => ") + joinParams(outputs);
+    return outputs.isEmpty() ? text : text + QLatin1String(" => ") + joinParams(outputs);
 }
 
 QString StdPou::translatedDescription() const
@@ -217,6 +218,22 @@ QString stdCategoryName(StdPou::Category category)
         return trLib(QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Counters"));
     case C::Timer:
         return trLib(QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Timers"));
+    case C::BcdConversion:
+        return trLib(QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "BCD conversion"));
+    case C::BitByte:
+        return trLib(QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Bit and byte functions"));
+    case C::MathAuxiliary:
+        return trLib(QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Mathematical helpers"));
+    case C::Controller:
+        return trLib(QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Controllers"));
+    case C::SignalGenerator:
+        return trLib(QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Signal generators"));
+    case C::FunctionManipulator:
+        return trLib(QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Function manipulators"));
+    case C::AnalogValue:
+        return trLib(QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Analog values"));
+    case C::Messages:
+        return trLib(QT_TRANSLATE_NOOP("iec::editors::StandardLibrary", "Messages"));
     }
     return {};
 }

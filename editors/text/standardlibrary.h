@@ -28,7 +28,16 @@ struct StdPou {
         Bistable,
         Edge,
         Counter,
-        Timer
+        Timer,
+        // CODESYS's Util library (and Beremiz's LOGGER)
+        BcdConversion,
+        BitByte,
+        MathAuxiliary,
+        Controller,
+        SignalGenerator,
+        FunctionManipulator,
+        AnalogValue,
+        Messages
     };
 
     QString name;

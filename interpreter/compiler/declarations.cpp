@@ -1,6 +1,7 @@
 // Types, layouts, memory allocation and initial values.
 #include "interpreter/compiler/codegen.h"
 #include "interpreter/compiler/literals.h"
+#include "interpreter/compiler/svghmi.h"
 
 #include <QCoreApplication>
 #include <QSet>
@@ -19,19 +20,6 @@ bool isShortLiteralPrefix(const QString &name)
     const QString upper = name.toUpper();
     return upper == QLatin1String("T") || upper == QLatin1String("LT") || upper == QLatin1String("D")
         || upper == QLatin1String("LD");
-}
-
-// The variable types of Beremiz's SVGHMI extension (`key`: upper case) and the elementary type each
-// stands for (empty: not one of them). Beremiz's SVGHMI library declares HMI_BOOL as BOOL and so on,
-// and binds such variables to the web HMI; here they are plain variables, so the logic still runs.
-QString svgHmiBaseType(const QString &key)
-{
-    if (key == QLatin1String("HMI_NODE"))
-        return QStringLiteral("BOOL");
-    if (key == QLatin1String("HMI_BOOL") || key == QLatin1String("HMI_INT") || key == QLatin1String("HMI_REAL")
-        || key == QLatin1String("HMI_STRING"))
-        return key.mid(4);
-    return {};
 }
 
 } // namespace

@@ -302,11 +302,12 @@ END_FUNCTION_BLOCK
 // E = SET_POINT - ACTUAL and t in seconds, limited to Y_MIN..Y_MAX (when Y_MIN < Y_MAX; the
 // integral then stops growing, LIMITS_ACTIVE is TRUE). MANUAL: Y := Y_MANUAL. RESET clears the
 // integral. %1: name, %2: extra inputs, %3: how dt is found, %4: the integral part, %5 and %6:
-// where OVERFLOW is declared (an output of PID and PID_FIXCYCLE; PD has no such pin).
+// where OVERFLOW is declared (an output of PID and PID_FIXCYCLE; PD has no such pin), %7: inputs
+// after RESET (PID_FIXCYCLE's CYCLE is its last pin, as in CODESYS).
 const char *const kController = R"(
 FUNCTION_BLOCK %1
 VAR_INPUT ACTUAL : REAL; SET_POINT : REAL; KP : REAL; %2 TV : REAL; Y_MANUAL : REAL; Y_OFFSET : REAL;
-    Y_MIN : REAL; Y_MAX : REAL; MANUAL : BOOL; RESET : BOOL; END_VAR
+    Y_MIN : REAL; Y_MAX : REAL; MANUAL : BOOL; RESET : BOOL; %7 END_VAR
 VAR_OUTPUT Y : REAL; LIMITS_ACTIVE : BOOL := FALSE; %5 END_VAR
 VAR %6 I : LREAL; NEXT_I : LREAL; LAST_E : LREAL; E : LREAL; DTS : LREAL; DPART : LREAL; OUTV : LREAL; LAST : TIME; STARTED : BOOL; END_VAR
 E := REAL_TO_LREAL(SET_POINT) - REAL_TO_LREAL(ACTUAL);
@@ -393,10 +394,12 @@ QString utilSource()
     const QString measured = QStringLiteral("DTS := TIME_TO_LREAL(__SYSTIME() - LAST) / 1000.0;");
     const QString integral = QStringLiteral("IF TN > 0.0 THEN NEXT_I := I + E * DTS / REAL_TO_LREAL(TN); END_IF;");
     const QString overflow = QStringLiteral("OVERFLOW : BOOL := FALSE;");
-    text += QString::fromLatin1(kController).arg(QStringLiteral("PD"), QString(), measured, QString(), QString(), overflow);
-    text += QString::fromLatin1(kController).arg(QStringLiteral("PID"), QStringLiteral("TN : REAL;"), measured, integral, overflow, QString());
-    text += QString::fromLatin1(kController).arg(QStringLiteral("PID_FIXCYCLE"), QStringLiteral("TN : REAL; CYCLE : REAL;"),
-        QStringLiteral("DTS := REAL_TO_LREAL(CYCLE);"), integral, overflow, QString());
+    text += QString::fromLatin1(kController).arg(QStringLiteral("PD"), QString(), measured, QString(), QString(), overflow, QString());
+    text += QString::fromLatin1(kController)
+                .arg(QStringLiteral("PID"), QStringLiteral("TN : REAL;"), measured, integral, overflow, QString(), QString());
+    text += QString::fromLatin1(kController)
+                .arg(QStringLiteral("PID_FIXCYCLE"), QStringLiteral("TN : REAL;"), QStringLiteral("DTS := REAL_TO_LREAL(CYCLE);"),
+                    integral, overflow, QString(), QStringLiteral("CYCLE : REAL;"));
     return text + QLatin1String(kBeremiz);
 }
 

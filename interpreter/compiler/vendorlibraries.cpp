@@ -1,7 +1,9 @@
 // Blocks of vendor libraries IEC Studio does not have (OpenPLC's TCP sockets, MQTT, CODESYS
 // SoftMotion). A POU that declares one gets one warning naming the library, at its first use in
 // the project; the rest is still checked, and the project runs unless a task reaches such a POU.
+// Beremiz's SVGHMI types are read as the elementary types they stand for.
 #include "interpreter/compiler/codegen.h"
+#include "interpreter/compiler/svghmi.h"
 
 #include <QCoreApplication>
 
@@ -29,6 +31,24 @@ QString vendorLibraryOf(const QString &upperName)
     }
     return {};
 }
+
+} // namespace iec::interp::detail
+
+namespace iec::interp {
+
+QString svgHmiBaseType(const QString &upperName)
+{
+    if (upperName == QLatin1String("HMI_NODE"))
+        return QStringLiteral("BOOL");
+    if (upperName == QLatin1String("HMI_BOOL") || upperName == QLatin1String("HMI_INT")
+        || upperName == QLatin1String("HMI_REAL") || upperName == QLatin1String("HMI_STRING"))
+        return upperName.mid(4);
+    return {};
+}
+
+} // namespace iec::interp
+
+namespace iec::interp::detail {
 
 void Codegen::missingVendorLibrary(const QString &block, const QString &library, SourceLocation at)
 {

@@ -539,10 +539,10 @@ void TestCodeEditor::completionInsertsASingleCandidateDirectly()
     FakeProvider provider;
     CodeEditor editor;
     editor.setCompletionProvider(&provider);
-    editor.setBodyText(QStringLiteral("y := LIMI"));
+    editor.setBodyText(QStringLiteral("y := SQR"));
     placeAtEndOfLine(editor, 0);
     QTest::keyClick(&editor, Qt::Key_Space, Qt::ControlModifier);
-    QCOMPARE(editor.toPlainText(), QStringLiteral("y := LIMIT"));
+    QCOMPARE(editor.toPlainText(), QStringLiteral("y := SQRT"));
     editor.setBodyText(QStringLiteral("gAl"));
     placeAtEndOfLine(editor, 0);
     editor.showCompletion();
@@ -603,7 +603,10 @@ void TestCodeEditor::inputAssistantCategories()
     il.setCategory(InputAssistantDialog::Category::FunctionBlocks);
     QCOMPARE(il.itemTexts(),
         (QStringList {
-            "SR", "RS", "R_TRIG", "F_TRIG", "CTU", "CTD", "CTUD", "TP", "TON", "TOF", "RTC", "TankCtl", "Main"}));
+            "SR", "RS", "R_TRIG", "F_TRIG", "CTU", "CTD", "CTUD", "TP", "TON", "TOF", "RTC", "UNPACK", "HYSTERESIS",
+            "LIMITALARM", "BLINK", "GEN", "LIN_TRAFO", "DERIVATIVE", "INTEGRAL", "STATISTICS_INT", "STATISTICS_REAL",
+            "VARIANCE", "CHARCURVE", "RAMP_INT", "RAMP_REAL", "PD", "PID", "PID_FIXCYCLE", "LOGGER", "TankCtl",
+            "Main"}));
     il.setFilter(QStringLiteral("ct"));
     QCOMPARE(il.itemTexts(), (QStringList {"CTU", "CTD", "CTUD", "TankCtl"}));
 

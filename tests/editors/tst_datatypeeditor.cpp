@@ -520,6 +520,14 @@ void TestDataTypeEditor::validate_data()
                                                                                           QStringLiteral(
                                                                                               "\":=\" is not a valid "
                                                                                               "initial value."))};
+    QTest::newRow("library blocks and types are known, in any case") << changed(pointForm(), [](DataTypeForm &f) {
+        for (const char *type : {"TON", "ctu_dint", "BLINK", "PID", "ARRAY[0..10] OF GEN_MODE", "LOGLEVEL",
+                 "HMI_BOOL", "hmi_real", "RTC"})
+            f.members.push_back({QStringLiteral("m%1").arg(f.members.size()), QLatin1String(type), {}, {}, -1});
+    }) << Errors {};
+    QTest::newRow("a library function is not a type") << changed(pointForm(), [](DataTypeForm &f) {
+        f.members[1].type = QStringLiteral("EXTRACT");
+    }) << Errors {error(FormField::MemberType, 1, QStringLiteral("Unknown type \"EXTRACT\"."))};
     QTest::newRow("duplicate enum value, bad explicit value, bad base")
         << changed(colorForm(),
                [](DataTypeForm &f) {

@@ -5,7 +5,11 @@
 #include "editors/text/commenttoggle.h"
 #include "editors/text/completion.h"
 #include "editors/text/foldingregions.h"
+#include "editors/common/boxspec.h"
 #include "editors/text/standardlibrary.h"
+#include "interpreter/compiler/ast.h"
+#include "interpreter/compiler/compiler.h"
+#include "model/project.h"
 
 #include <QTest>
 
@@ -73,6 +77,9 @@ private Q_SLOTS:
     void completionItems_data();
     void completionItems();
     void completionDetailsCarryParameters();
+    void utilLibraryIsOffered_data();
+    void utilLibraryIsOffered();
+    void everyUtilBlockIsOffered();
     void ilOperatorsHaveTheirModifiers();
 };
 
@@ -321,7 +328,7 @@ void TestTextRules::completionItems_data()
     const auto ST = TextLanguage::ST;
     QTest::newRow("variable") << "x := Te" << ST << QStringList {"Temp"};
     QTest::newRow("variable and function") << "Ta" << ST << QStringList {"TAN", "Tank"};
-    QTest::newRow("standard function") << "LIM" << ST << QStringList {"LIMIT"};
+    QTest::newRow("standard and Util functions") << "LIM" << ST << QStringList {"LIMIT", "LIMITALARM"};
     QTest::newRow("standard FB and variable") << "TO" << ST << QStringList {"TO", "TOD"} + [] {
         QStringList conversions;
         for (const char *to : {"BOOL", "BYTE", "DATE", "DINT", "DT", "DWORD", "INT", "LREAL", "REAL", "SINT", "STRING",
@@ -356,12 +363,75 @@ void TestTextRules::completionDetailsCarryParameters()
 {
     const QList<CompletionItem> items
         = iec::editors::completionItems({QStringLiteral("LIMIT"), {}, 0}, nullptr, TextLanguage::ST);
-    QCOMPARE(items.size(), 1);
+    QCOMPARE(items.size(), 2);
     QCOMPARE(items[0].kind, CompletionItem::Kind::Function);
     QCOMPARE(items[0].detail, QStringLiteral("LIMIT(MN: ANY, IN: ANY, MX: ANY) : ANY"));
+    QCOMPARE(items[1].kind, CompletionItem::Kind::FunctionBlock);
+    QCOMPARE(items[1].detail, QStringLiteral("LIMITALARM(IN: INT, HIGH: INT, LOW: INT) => O: BOOL, U: BOOL, IL: BOOL"));
     const StdPou *ton = findStandardPou(u"ton");
     QVERIFY(ton);
     QCOMPARE(ton->signature(), QStringLiteral("TON(IN: BOOL, PT: TIME) => Q: BOOL, ET: TIME"));
+}
+
+void TestTextRules::utilLibraryIsOffered_data()
+{
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QString>("signature");
+    QTest::addColumn<QString>("library");
+    QTest::addColumn<QString>("category");
+    QTest::addColumn<QStringList>("boxInputs");
+    QTest::addColumn<QStringList>("boxOutputs");
+    QTest::newRow("BLINK") << "blink" << "BLINK(ENABLE: BOOL, TIMELOW: TIME, TIMEHIGH: TIME) => OUT: BOOL" << "Util"
+                           << "Signal generators" << QStringList {"ENABLE", "TIMELOW", "TIMEHIGH"} << QStringList {"OUT"};
+    QTest::newRow("CHARCURVE") << "CHARCURVE"
+                               << "CHARCURVE(IN: INT, N: BYTE, P: ARRAY[0..10] OF POINT) => OUT: INT, ERR: BYTE" << "Util"
+                               << "Function manipulators" << QStringList {"IN", "N", "P"} << QStringList {"OUT", "ERR"};
+    QTest::newRow("PID_FIXCYCLE") << "PID_FIXCYCLE"
+                                  << "PID_FIXCYCLE(ACTUAL: REAL, SET_POINT: REAL, KP: REAL, TN: REAL, TV: REAL, Y_MANUAL: "
+                                     "REAL, Y_OFFSET: REAL, Y_MIN: REAL, Y_MAX: REAL, MANUAL: BOOL, RESET: BOOL, CYCLE: "
+                                     "REAL) => Y: REAL, LIMITS_ACTIVE: BOOL, OVERFLOW: BOOL"
+                                  << "Util" << "Controllers"
+                                  << QStringList {"ACTUAL", "SET_POINT", "KP", "TN", "TV", "Y_MANUAL", "Y_OFFSET", "Y_MIN",
+                                         "Y_MAX", "MANUAL", "RESET", "CYCLE"}
+                                  << QStringList {"Y", "LIMITS_ACTIVE", "OVERFLOW"};
+    QTest::newRow("EXTRACT") << "EXTRACT" << "EXTRACT(X: DWORD, N: BYTE) : BOOL" << "Util" << "Bit and byte functions"
+                             << QStringList {"X", "N"} << QStringList {"OUT"};
+    QTest::newRow("BCD_TO_INT") << "BCD_TO_INT" << "BCD_TO_INT(B: BYTE) : INT" << "Util" << "BCD conversion"
+                                << QStringList {"B"} << QStringList {"OUT"};
+    QTest::newRow("RTC") << "RTC" << "RTC(IN: BOOL, PDT: DT) => Q: BOOL, CDT: DT" << "Beremiz" << "Timers"
+                         << QStringList {"IN", "PDT"} << QStringList {"Q", "CDT"};
+    QTest::newRow("LOGGER") << "LOGGER" << "LOGGER(TRIG: BOOL, MSG: STRING, LEVEL: LOGLEVEL)" << "Beremiz" << "Messages"
+                            << QStringList {"TRIG", "MSG", "LEVEL"} << QStringList {};
+}
+
+// The Util library's blocks are offered with the pins the compiler defines (library pane, F2,
+// completion, and the box a diagram editor inserts).
+void TestTextRules::utilLibraryIsOffered()
+{
+    QFETCH(QString, name);
+    QFETCH(QString, signature);
+    QFETCH(QString, library);
+    QFETCH(QString, category);
+    QFETCH(QStringList, boxInputs);
+    QFETCH(QStringList, boxOutputs);
+    const StdPou *pou = findStandardPou(name);
+    QVERIFY(pou);
+    QCOMPARE(pou->signature(), signature);
+    QCOMPARE(pou->library, library);
+    QCOMPARE(stdCategoryName(pou->category), category);
+    QVERIFY(!pou->translatedDescription().isEmpty());
+    const std::optional<BoxSpec> box = boxSpecFor(iec::model::Project {}, name, true, nullptr);
+    QVERIFY(box);
+    QCOMPARE(box->inputs, boxInputs);
+    QCOMPARE(box->outputs, boxOutputs);
+}
+
+void TestTextRules::everyUtilBlockIsOffered()
+{
+    for (const iec::interp::ast::Pou &pou : iec::interp::utilLibrary().pous) {
+        const StdPou *offered = findStandardPou(pou.name);
+        QVERIFY2(offered && offered->library != QLatin1String("Standard"), qPrintable(pou.name));
+    }
 }
 
 void TestTextRules::ilOperatorsHaveTheirModifiers()
