@@ -5,6 +5,7 @@
 
 #include "interpreter/frontend/iecprinter.h"
 #include "interpreter/frontend/iecreader.h"
+#include "interpreter/frontend/sourcefile.h"
 #include "model/plcopen/reader.h"
 #include "model/plcopen/writer.h"
 #include "model/projectmodel.h"
@@ -103,8 +104,14 @@ ImportExport::Read ImportExport::read(const QString &path)
         result.messages.append({.text = tr("%1 cannot be read: %2").arg(fileName, file.errorString())});
         return result;
     }
-    const QString text = QString::fromUtf8(file.readAll());
-    interp::frontend::TextReadResult iec = interp::frontend::readIecText(text, QFileInfo(path).completeBaseName());
+    const interp::frontend::SourceText source = interp::frontend::decodeSourceFile(file.readAll());
+    if (source.windows1252Line > 0)
+        result.messages.append({.severity = Message::Severity::Warning,
+            .text = interp::frontend::windows1252Note(),
+            .pouName = fileName,
+            .line = source.windows1252Line,
+            .column = 1});
+    interp::frontend::TextReadResult iec = interp::frontend::readIecText(source.text, QFileInfo(path).completeBaseName());
     for (const interp::Diagnostic &diagnostic : iec.diagnostics.all()) {
         result.messages.append({.severity = diagnostic.severity == interp::Diagnostic::Severity::Error
                                     ? Message::Severity::Error

@@ -107,7 +107,7 @@ std::vector<model::PouId> ImportExportActions::selectedPous() const
 void ImportExportActions::importInteractive()
 {
     const QString path = QFileDialog::getOpenFileName(m_window, tr("Import"), QString(),
-        tr("PLCopen XML or IEC text (*.xml *.st *.iec *.txt);;PLCopen XML (*.xml);;IEC 61131-3 text (*.st *.iec *.txt)"));
+        tr("PLCopen XML or IEC text (*.xml *.st *.exp *.iec *.txt);;PLCopen XML (*.xml);;IEC 61131-3 text (*.st *.exp *.iec *.txt)"));
     if (path.isEmpty())
         return;
     QString error;

@@ -662,7 +662,7 @@ void MainWindow::openProjectInteractive()
     if (!maybeSave())
         return;
     const QString path = QFileDialog::getOpenFileName(
-        this, tr("Open Project"), QFileInfo(m_currentFile).path(), tr("PLCopen XML projects (*.xml);;IEC 61131-3 text (*.st *.iec *.txt);;All files (*)"));
+        this, tr("Open Project"), QFileInfo(m_currentFile).path(), tr("PLCopen XML projects (*.xml);;IEC 61131-3 text (*.st *.exp *.iec *.txt);;All files (*)"));
     if (path.isEmpty())
         return;
     QString error;

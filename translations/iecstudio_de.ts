@@ -560,10 +560,6 @@
             <translation>Importieren</translation>
         </message>
         <message>
-            <source>PLCopen XML or IEC text (*.xml *.st *.iec *.txt);;PLCopen XML (*.xml);;IEC 61131-3 text (*.st *.iec *.txt)</source>
-            <translation>PLCopen XML oder IEC-Text (*.xml *.st *.iec *.txt);;PLCopen XML (*.xml);;IEC 61131-3-Text (*.st *.iec *.txt)</translation>
-        </message>
-        <message>
             <source>PLCopen XML (*.xml)</source>
             <translation>PLCopen XML (*.xml)</translation>
         </message>
@@ -574,6 +570,10 @@
         <message>
             <source>Export</source>
             <translation>Exportieren</translation>
+        </message>
+        <message>
+            <source>PLCopen XML or IEC text (*.xml *.st *.exp *.iec *.txt);;PLCopen XML (*.xml);;IEC 61131-3 text (*.st *.exp *.iec *.txt)</source>
+            <translation>PLCopen XML oder IEC-Text (*.xml *.st *.exp *.iec *.txt);;PLCopen XML (*.xml);;IEC 61131-3-Text (*.st *.exp *.iec *.txt)</translation>
         </message>
     </context>
     <context>
@@ -888,12 +888,12 @@ Automatisch gespeichert: %2</translation>
             <translation>%1, Zeile %2: %3</translation>
         </message>
         <message>
-            <source>PLCopen XML projects (*.xml);;IEC 61131-3 text (*.st *.iec *.txt);;All files (*)</source>
-            <translation>PLCopen-XML-Projekte (*.xml);;IEC 61131-3-Text (*.st *.iec *.txt);;Alle Dateien (*)</translation>
-        </message>
-        <message>
             <source>%1: %2</source>
             <translation>%1: %2</translation>
+        </message>
+        <message>
+            <source>PLCopen XML projects (*.xml);;IEC 61131-3 text (*.st *.exp *.iec *.txt);;All files (*)</source>
+            <translation>PLCopen-XML-Projekte (*.xml);;IEC 61131-3-Text (*.st *.exp *.iec *.txt);;Alle Dateien (*)</translation>
         </message>
     </context>
     <context>
@@ -6633,6 +6633,14 @@ Automatisch gespeichert: %2</translation>
             <source>The chart of %1 cannot be written as textual SFC (it is incomplete, or has macro steps, actions written in a step or conditions drawn as networks); it was left out.</source>
             <translation>Das Diagramm von %1 lässt sich nicht als textuelle AS schreiben (es ist unvollständig oder hat Makroschritte, in einem Schritt geschriebene Aktionen oder als Netzwerk gezeichnete Bedingungen); es wurde weggelassen.</translation>
         </message>
+        <message>
+            <source>%1 of %2: IEC 61131-3 shifts bit strings only; as in CODESYS, its bits are shifted as those of a %3.</source>
+            <translation>%1 von %2: IEC 61131-3 schiebt nur Bitfolgen; wie in CODESYS werden seine Bits wie die eines %3 geschoben.</translation>
+        </message>
+        <message>
+            <source>The file is not UTF-8: it was read as Windows-1252, the code page CoDeSys 2.3 writes, so that its umlauts and other special characters are kept.</source>
+            <translation>Die Datei ist nicht in UTF-8: Sie wurde als Windows-1252 gelesen, die Codepage, in der CoDeSys 2.3 schreibt, damit ihre Umlaute und anderen Sonderzeichen erhalten bleiben.</translation>
+        </message>
     </context>
     <context>
         <name>iec::interp::Condition</name>
@@ -6746,6 +6754,10 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>The program halted.</source>
             <translation>Das Programm ist angehalten.</translation>
+        </message>
+        <message>
+            <source>A STRING cannot hold %1 (it holds the characters of Windows-1252); use a WSTRING.</source>
+            <translation>Ein STRING kann %1 nicht aufnehmen (er enthält die Zeichen von Windows-1252); verwenden Sie einen WSTRING.</translation>
         </message>
     </context>
     <context>
@@ -7070,6 +7082,10 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>Characters XML does not allow (control characters, U+FFFE or U+FFFF) were left out of the file, %1 in all, so that the project is saved as valid XML.</source>
             <translation>Zeichen, die XML nicht erlaubt (Steuerzeichen, U+FFFE oder U+FFFF), wurden aus der Datei weggelassen, insgesamt %1, damit das Projekt als gültiges XML gespeichert wird.</translation>
+        </message>
+        <message>
+            <source>&lt;%1&gt; has the attribute %2 more than once; the first is kept.</source>
+            <translation>&lt;%1&gt; hat das Attribut %2 mehrmals; das erste wird behalten.</translation>
         </message>
     </context>
     <context>

@@ -559,10 +559,6 @@
             <translation>导入</translation>
         </message>
         <message>
-            <source>PLCopen XML or IEC text (*.xml *.st *.iec *.txt);;PLCopen XML (*.xml);;IEC 61131-3 text (*.st *.iec *.txt)</source>
-            <translation>PLCopen XML 或 IEC 文本 (*.xml *.st *.iec *.txt);;PLCopen XML (*.xml);;IEC 61131-3 文本 (*.st *.iec *.txt)</translation>
-        </message>
-        <message>
             <source>PLCopen XML (*.xml)</source>
             <translation>PLCopen XML (*.xml)</translation>
         </message>
@@ -573,6 +569,10 @@
         <message>
             <source>Export</source>
             <translation>导出</translation>
+        </message>
+        <message>
+            <source>PLCopen XML or IEC text (*.xml *.st *.exp *.iec *.txt);;PLCopen XML (*.xml);;IEC 61131-3 text (*.st *.exp *.iec *.txt)</source>
+            <translation>PLCopen XML 或 IEC 文本 (*.xml *.st *.exp *.iec *.txt);;PLCopen XML (*.xml);;IEC 61131-3 文本 (*.st *.exp *.iec *.txt)</translation>
         </message>
     </context>
     <context>
@@ -887,12 +887,12 @@ Autosaved: %2</source>
             <translation>%1，第 %2 行：%3</translation>
         </message>
         <message>
-            <source>PLCopen XML projects (*.xml);;IEC 61131-3 text (*.st *.iec *.txt);;All files (*)</source>
-            <translation>PLCopen XML 项目 (*.xml);;IEC 61131-3 文本 (*.st *.iec *.txt);;所有文件 (*)</translation>
-        </message>
-        <message>
             <source>%1: %2</source>
             <translation>%1：%2</translation>
+        </message>
+        <message>
+            <source>PLCopen XML projects (*.xml);;IEC 61131-3 text (*.st *.exp *.iec *.txt);;All files (*)</source>
+            <translation>PLCopen XML 项目 (*.xml);;IEC 61131-3 文本 (*.st *.exp *.iec *.txt);;所有文件 (*)</translation>
         </message>
     </context>
     <context>
@@ -6627,6 +6627,14 @@ Autosaved: %2</source>
             <source>The chart of %1 cannot be written as textual SFC (it is incomplete, or has macro steps, actions written in a step or conditions drawn as networks); it was left out.</source>
             <translation>%1 的图无法写成文本 SFC（图不完整，或含有宏步、写在步中的动作或画成网络的条件），已省略。</translation>
         </message>
+        <message>
+            <source>%1 of %2: IEC 61131-3 shifts bit strings only; as in CODESYS, its bits are shifted as those of a %3.</source>
+            <translation>对 %2 使用 %1：IEC 61131-3 只允许移位位串；与 CODESYS 一样，按 %3 的位进行移位。</translation>
+        </message>
+        <message>
+            <source>The file is not UTF-8: it was read as Windows-1252, the code page CoDeSys 2.3 writes, so that its umlauts and other special characters are kept.</source>
+            <translation>该文件不是 UTF-8 编码：已按 Windows-1252（CoDeSys 2.3 使用的代码页）读取，以保留其中的变音字母和其他特殊字符。</translation>
+        </message>
     </context>
     <context>
         <name>iec::interp::Condition</name>
@@ -6740,6 +6748,10 @@ Autosaved: %2</source>
         <message>
             <source>The program halted.</source>
             <translation>程序已暂停。</translation>
+        </message>
+        <message>
+            <source>A STRING cannot hold %1 (it holds the characters of Windows-1252); use a WSTRING.</source>
+            <translation>STRING 无法容纳 %1（它只能容纳 Windows-1252 的字符）；请使用 WSTRING。</translation>
         </message>
     </context>
     <context>
@@ -7063,6 +7075,10 @@ Autosaved: %2</source>
         <message>
             <source>Characters XML does not allow (control characters, U+FFFE or U+FFFF) were left out of the file, %1 in all, so that the project is saved as valid XML.</source>
             <translation>文件中含有 XML 不允许的字符（控制字符、U+FFFE 或 U+FFFF），共 %1 个，已被略去，以便项目保存为有效的 XML。</translation>
+        </message>
+        <message>
+            <source>&lt;%1&gt; has the attribute %2 more than once; the first is kept.</source>
+            <translation>&lt;%1&gt; 多次出现属性 %2；保留第一个。</translation>
         </message>
     </context>
     <context>

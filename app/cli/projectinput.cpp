@@ -4,6 +4,7 @@
 
 #include "interpreter/compiler/parser.h"
 #include "interpreter/frontend/iecreader.h"
+#include "interpreter/frontend/sourcefile.h"
 
 #include "model/plcopen/reader.h"
 
@@ -40,7 +41,8 @@ FileFormat formatOf(const QString &path)
 {
     if (path.endsWith(QLatin1String(".xml"), Qt::CaseInsensitive))
         return FileFormat::Xml;
-    if (path.endsWith(QLatin1String(".st"), Qt::CaseInsensitive))
+    // .exp: CoDeSys 2.3's export, IEC text with its own comments (ST and IL POUs read).
+    if (path.endsWith(QLatin1String(".st"), Qt::CaseInsensitive) || path.endsWith(QLatin1String(".exp"), Qt::CaseInsensitive))
         return FileFormat::St;
     return FileFormat::Other;
 }
@@ -52,7 +54,10 @@ std::optional<QString> readTextFile(const QString &path, QTextStream &stream)
         stream << path << ": error: The file cannot be read: " << file.errorString() << ".\n";
         return std::nullopt;
     }
-    return QString::fromUtf8(file.readAll());
+    interp::frontend::SourceText source = interp::frontend::decodeSourceFile(file.readAll());
+    if (source.windows1252Line > 0)
+        stream << path << ':' << source.windows1252Line << ":1: warning: " << interp::frontend::windows1252Note() << '\n';
+    return std::move(source.text);
 }
 
 LoadedProject loadProject(const QString &path, QTextStream &stream)

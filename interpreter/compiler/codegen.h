@@ -237,6 +237,7 @@ public:
     std::optional<NativeBlock> nativeBlock(const Type *fbType) const;
 
     // ---- pointers.cpp ----
+    std::uint32_t offsetAddress(std::uint32_t address, std::int64_t bytes);
     Place checkedTarget(std::uint32_t address, const Type *type, const QString &text);
     Place dereferenced(const Place &slot);
     Place pointee(const ast::Expr &expr, bool reportUnknown);

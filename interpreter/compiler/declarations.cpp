@@ -14,6 +14,20 @@ using namespace ast;
 
 namespace {
 
+// The pointer-sized integers CODESYS 3.5 (__XINT, ...) and TwinCAT (XINT, ...) build in, as the
+// elementary types they are on a 64-bit target (`key`: upper case; empty: not one of them).
+QString pointerSizedType(const QString &key)
+{
+    const QStringView name = key.startsWith(QLatin1String("__")) ? QStringView(key).mid(2) : QStringView(key);
+    if (name == QLatin1String("XINT"))
+        return QStringLiteral("LINT");
+    if (name == QLatin1String("UXINT"))
+        return QStringLiteral("ULINT");
+    if (name == QLatin1String("XWORD"))
+        return QStringLiteral("LWORD");
+    return {};
+}
+
 bool isShortLiteralPrefix(const QString &name)
 {
     // T#, LT#, D#, LD# are literal prefixes, not type names a declaration may use.
@@ -127,6 +141,10 @@ const Type *Codegen::namedType(const QString &name, SourceLocation at, bool repo
                           .arg(name));
         return nullptr;
     }
+    if (k == QLatin1String("T_MAXSTRING")) // TwinCAT's Tc2_System
+        return m_types->string(false, 255);
+    if (const QString base = pointerSizedType(k); !base.isEmpty())
+        return namedType(base, at, report);
     if (const QString library = vendorLibraryOf(k); report && !library.isEmpty()) {
         missingVendorLibrary(name, library, at);
         return nullptr;

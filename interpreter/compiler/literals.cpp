@@ -62,14 +62,30 @@ std::optional<std::uint64_t> decodeDigits(QStringView text, unsigned base)
     return value;
 }
 
-// A decimal number with optional fraction as a double ("3", "3.5", "1_000.25").
+// Decimal digits with single underscores between them, however many (a REAL may have more digits
+// than 64 bits hold: OSCAT writes PI with 36).
+bool isDecimalDigits(QStringView text)
+{
+    if (text.isEmpty() || text.front() == QLatin1Char('_') || text.back() == QLatin1Char('_'))
+        return false;
+    QChar previous;
+    for (const QChar c : text) {
+        if (c == QLatin1Char('_') ? previous == QLatin1Char('_') : !c.isDigit() || c.unicode() > u'9')
+            return false;
+        previous = c;
+    }
+    return true;
+}
+
+// A decimal number with optional fraction as a double ("3", "3.5", "1_000.25"), rounded to the
+// nearest double whatever its number of digits.
 std::optional<double> decodeDecimal(QStringView text)
 {
     const qsizetype dot = text.indexOf(QLatin1Char('.'));
     const QStringView whole = dot < 0 ? text : text.left(dot);
-    if (!decodeDigits(whole, 10))
+    if (!isDecimalDigits(whole))
         return std::nullopt;
-    if (dot >= 0 && !decodeDigits(text.mid(dot + 1), 10))
+    if (dot >= 0 && !isDecimalDigits(text.mid(dot + 1)))
         return std::nullopt;
     QString plain = text.toString();
     plain.remove(QLatin1Char('_'));
@@ -368,7 +384,8 @@ std::optional<QString> decodeString(QStringView quoted)
         if (c == quote)
             return std::nullopt; // an unescaped quote inside
         if (c != QLatin1Char('$')) {
-            result += c;
+            const std::optional<std::uint8_t> byte = quote == QLatin1Char('\'') ? windows1252Byte(c) : std::nullopt;
+            result += byte ? QChar(char16_t(*byte)) : c;
             continue;
         }
         if (++i >= inner.size())
@@ -393,6 +410,33 @@ std::optional<QString> decodeString(QStringView quoted)
         }
     }
     return result;
+}
+
+namespace {
+
+// Windows-1252's characters for 16#80..16#9F; the five bytes it leaves undefined keep the C1
+// control characters Latin-1 gives them.
+constexpr char16_t kWindows1252High[32] = {0x20AC, 0x0081, 0x201A, 0x0192, 0x201E, 0x2026, 0x2020, 0x2021, 0x02C6,
+    0x2030, 0x0160, 0x2039, 0x0152, 0x008D, 0x017D, 0x008F, 0x0090, 0x2018, 0x2019, 0x201C, 0x201D, 0x2022, 0x2013,
+    0x2014, 0x02DC, 0x2122, 0x0161, 0x203A, 0x0153, 0x009D, 0x017E, 0x0178};
+
+} // namespace
+
+std::optional<std::uint8_t> windows1252Byte(QChar c)
+{
+    const char16_t u = c.unicode();
+    if (u < 0x80 || (u >= 0xA0 && u <= 0xFF))
+        return static_cast<std::uint8_t>(u);
+    for (std::uint8_t i = 0; i < 32; ++i) {
+        if (kWindows1252High[i] == u)
+            return static_cast<std::uint8_t>(0x80 + i);
+    }
+    return std::nullopt;
+}
+
+QChar windows1252Char(std::uint8_t byte)
+{
+    return byte >= 0x80 && byte <= 0x9F ? QChar(kWindows1252High[byte - 0x80]) : QChar(char16_t(byte));
 }
 
 LiteralFamily literalFamilyOfPrefix(QStringView prefix)

@@ -42,7 +42,16 @@ std::optional<std::int64_t> decodeTimeOfDay(QStringView body);
 std::optional<std::int64_t> decodeDateAndTime(QStringView body);
 
 // 'text' or "text" including the quotes, with $ escapes ($$ $' $" $L $N $P $R $T $hh / $hhhh).
+// A 'STRING' holds bytes, as the characters U+0000..U+00FF: a character written in it stands for
+// its byte in Windows-1252 (so '€' is 16#80), $hh for the byte hh; a character Windows-1252 has no
+// byte for is kept as it is (and refused where a STRING is made of it).
 std::optional<QString> decodeString(QStringView quoted);
+
+// STRING holds bytes in CODESYS's code page, Windows-1252, which is Latin-1 but for 16#80..16#9F
+// (16#80 is €): the byte of a character (none when the code page has no such character), and the
+// character of a byte.
+std::optional<std::uint8_t> windows1252Byte(QChar c);
+QChar windows1252Char(std::uint8_t byte);
 
 // Which family a type prefix belongs to; Unknown for user types such as Color#Red.
 enum class LiteralFamily { None, Bool, Integer, Real, Duration, Date, TimeOfDay, DateAndTime, String, WString, Unknown };

@@ -263,7 +263,8 @@ void Parser::typeBlock(CompilationUnit &unit)
         decl.type = typeSpec();
         if (acceptOp(u":="))
             decl.init = initializer();
-        if (!acceptOp(u";")) {
+        // CODESYS (2.3 exports, 3.5, TwinCAT) writes END_STRUCT END_TYPE with no ';' between.
+        if (!acceptOp(u";") && !isWord("END_TYPE")) {
             error(afterPrevious(), QCoreApplication::translate("iec::interp::Compiler", "Missing ';' after the declaration of type %1.").arg(decl.name));
             synchronize(false);
         }

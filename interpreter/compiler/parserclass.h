@@ -27,6 +27,10 @@ using namespace ast;
 // programs commonly call a state variable Step.
 inline constexpr std::string_view kSoftKeywords[] = {"INTERVAL",  "PRIORITY",   "SINGLE",   "ON",       "FROM", "STEP", "TRANSITION",
                                               "ACTION",    "READ_ONLY",  "READ_WRITE", "CONSTANT", "RESOURCE", "TASK"};
+// The long date types of IEC 61131-3 ed.3, which CODESYS and TwinCAT do not have: their projects
+// use these words as names (OSCAT's CALENDAR has members LDT, LDATE and LTOD). Where a name can
+// stand they are names; where a type can, types.
+inline constexpr std::string_view kSoftTypeNames[] = {"LDATE", "LDT", "LTOD", "LDATE_AND_TIME", "LTIME_OF_DAY"};
 // IL operators that are also ST operators, and so never names in ST.
 inline constexpr std::string_view kStOperatorWords[] = {"AND", "OR", "XOR", "NOT", "MOD"};
 
@@ -176,6 +180,8 @@ private:
         const Token &t = tok(ahead);
         if (t.kind == TokenKind::Identifier)
             return true;
+        if (t.kind == TokenKind::TypeName)
+            return inList(text(t), kSoftTypeNames);
         if (t.kind != TokenKind::Keyword)
             return false;
         const QStringView word = text(t);

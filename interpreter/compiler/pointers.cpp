@@ -19,11 +19,31 @@ bool isPointer(const Type *t)
     return t && (t->kind == TypeKind::Pointer || t->kind == TypeKind::Interface);
 }
 
+// CODESYS's address of a STRING is that of its first character (OSCAT walks a string's bytes from
+// ADR(s)); here a string starts with its capacity and length, these 4 bytes before.
+constexpr std::uint32_t kStringHeader = 4;
+
 } // namespace
 
+// `address` moved by `bytes` (a UDINT operand), for the header of a string.
+std::uint32_t Codegen::offsetAddress(std::uint32_t address, std::int64_t bytes)
+{
+    ConstValue offset;
+    offset.kind = ConstValue::Kind::Int;
+    offset.i = bytes < 0 ? -bytes : bytes;
+    const Value moved = binary(bytes < 0 ? QStringLiteral("-") : QStringLiteral("+"), operandValue(address, elem(Elem::UDInt)),
+        constantValue(elem(Elem::UDInt), offset), {});
+    return materialize(moved);
+}
+
 // The place at `address` (an operand holding an image offset), checked for `type`'s size first.
+// A string's address is that of its characters; its place starts at its header.
 Place Codegen::checkedTarget(std::uint32_t address, const Type *type, const QString &text)
 {
+    if (isString(type)) {
+        instr(op::CheckPtr, 0, address, 0, std::max<std::uint32_t>(type->size - kStringHeader, 1));
+        address = offsetAddress(address, -std::int64_t(kStringHeader));
+    }
     instr(op::CheckPtr, 0, address, 0, std::max<std::uint32_t>(type->size, 1));
     Place p;
     p.kind = Place::Kind::Indirect;
@@ -81,6 +101,8 @@ Value Codegen::addressOf(const Expr &expr, const QString &function)
         instr(op::Lea, out, p.operand);
     else
         instr(op::Mov4, out, p.operand);
+    if (isString(p.type))
+        return operandValue(offsetAddress(out, kStringHeader), pointer);
     return operandValue(out, pointer);
 }
 

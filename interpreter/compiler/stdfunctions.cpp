@@ -289,9 +289,59 @@ std::optional<Value> foldLiteralShift(Codegen &g, std::uint16_t family, const Va
     return shifted;
 }
 
+// The bit string as wide as an integer type: INT -> WORD.
+Elem bitsOfSize(std::uint32_t size)
+{
+    return size == 1 ? Elem::Byte : size == 2 ? Elem::Word : size == 4 ? Elem::DWord : Elem::LWord;
+}
+
+// SHL(i, n) of an integer, which CODESYS accepts (OSCAT: SHL(year, 14) = 0): its bits are shifted
+// as those of the bit string of its size, and the result has its type; IEC wants a bit string, so
+// a warning says so. SHR of a signed integer keeps its sign, as in CODESYS (OSCAT's SET_DATE needs
+// SHR(-1, 1) = -1): a negative value is shifted as NOT SHR(NOT i, n).
+Value shiftInteger(Codegen &g, std::uint16_t family, const char *name, const Value &in, const Value &count, SourceLocation at)
+{
+    const Elem bitsElem = bitsOfSize(in.type->size);
+    g.warning(at, QCoreApplication::translate("iec::interp::Compiler",
+                      "%1 of %2: IEC 61131-3 shifts bit strings only; as in CODESYS, its bits are shifted as those of a %3.")
+                      .arg(QLatin1String(name), typeName(in.type), info(bitsElem).name));
+    const Value bits = g.convertExplicit(in, g.elem(bitsElem), at);
+    const Value n = g.convertExplicit(count, g.elem(Elem::ULInt), at);
+    if (!bits.valid() || !n.valid())
+        return {};
+    const auto shifted = [&](const Value &value) {
+        const std::uint32_t out = g.temp(bits.type);
+        g.instr(typedOp(family, vtOf(*bits.type)), out, g.materialize(value), g.materialize(n));
+        return g.operandValue(out, bits.type);
+    };
+    Value result = shifted(bits);
+    if (qstrcmp(name, "SHR") == 0 && !info(in.type->elem).isUnsigned) {
+        ConstValue ones;
+        ones.kind = ConstValue::Kind::Int;
+        ones.i = bits.type->size == 8 ? -1 : (std::int64_t(1) << (8 * bits.type->size)) - 1;
+        ones.bigUnsigned = bits.type->size == 8;
+        const Value allOnes = g.constantValue(bits.type, ones);
+        const Value keptSign = g.binary(QStringLiteral("XOR"), shifted(g.binary(QStringLiteral("XOR"), bits, allOnes, at)), allOnes, at);
+        ConstValue zero;
+        zero.kind = ConstValue::Kind::Int;
+        const Value negative = g.binary(QStringLiteral("<"), in, g.constantValue(in.type, zero), at);
+        result = select(g, negative, {result, keptSign}, "SHR", at, nullptr);
+    }
+    return g.convertExplicit(result, in.type, at);
+}
+
 Value shift(Codegen &g, std::uint16_t family, const char *name, std::vector<Value> &args, SourceLocation at, const Place *destination)
 {
     Value in = args[0];
+    if (in.untyped) {
+        // A negative literal takes the type of the signed integer the result goes to (as CODESYS:
+        // i := SHR(-8, 2) is -2).
+        const Type *destinationType = destination ? destination->type : nullptr;
+        if (in.kind == Value::Kind::Constant && in.constant.kind == ConstValue::Kind::Int && in.constant.i < 0
+            && !in.constant.bigUnsigned && destinationType && destinationType->kind == TypeKind::Elementary
+            && isIntegral(destinationType) && !isBits(destinationType) && !info(destinationType->elem).isUnsigned)
+            in = g.coerce(in, destinationType, at);
+    }
     if (const auto folded = foldLiteralShift(g, family, in, args[1]))
         return *folded;
     if (in.untyped) {
@@ -304,6 +354,8 @@ Value shift(Codegen &g, std::uint16_t family, const char *name, std::vector<Valu
     }
     if (!in.valid())
         return {};
+    if (isIntegral(in.type) && !isBits(in.type) && in.type->kind == TypeKind::Elementary)
+        return shiftInteger(g, family, name, in, args[1], at);
     if (!isBits(in.type) || in.type->elem == Elem::Bool) {
         g.error(at, QCoreApplication::translate("iec::interp::Compiler", "%1 needs a bit string (BYTE, WORD, DWORD, LWORD), not %2.").arg(QLatin1String(name), typeName(in.type)),
                 isIntegral(in.type) ? QCoreApplication::translate("iec::interp::Compiler", "convert it first, e.g. %1_TO_%2").arg(info(in.type->elem).name, info(Elem(int(Elem::Byte) + (in.type->size == 1 ? 0 : in.type->size == 2 ? 1 : in.type->size == 4 ? 2 : 3))).name) : QString());
@@ -567,6 +619,12 @@ const std::vector<StdFunction> &table()
         }
         // The virtual clock, for the standard timers.
         t.push_back({"__SYSTIME", {}, false, [](Codegen &g, std::vector<Value> &, SourceLocation, const Place *) {
+                         const std::uint32_t out = g.temp(g.elem(Elem::Time));
+                         g.instr(op::Now, out);
+                         return g.operandValue(out, g.elem(Elem::Time));
+                     }});
+        // CoDeSys 2.3's TIME(): the time since the PLC started, here the virtual clock.
+        t.push_back({"TIME", {}, false, [](Codegen &g, std::vector<Value> &, SourceLocation, const Place *) {
                          const std::uint32_t out = g.temp(g.elem(Elem::Time));
                          g.instr(op::Now, out);
                          return g.operandValue(out, g.elem(Elem::Time));

@@ -157,11 +157,13 @@ const Type *TypeTable::string(bool wide, std::uint32_t capacity)
         if (t->wide == wide && t->capacity == capacity)
             return t;
     }
-    // Layout: capacity (uint16), length (uint16), then the characters.
+    // Layout: capacity (uint16), length (uint16), then the characters and room for the NUL that
+    // ends them, as in CODESYS (a program that builds a string through a pointer writes it after
+    // the last character, even of a full string: OSCAT's BYTE_TO_STRH into its STRING(2)).
     Type *t = create(TypeKind::String, QStringLiteral("%1[%2]").arg(wide ? QStringLiteral("WSTRING") : QStringLiteral("STRING")).arg(capacity));
     t->wide = wide;
     t->capacity = capacity;
-    t->size = 4 + capacity * (wide ? 2 : 1);
+    t->size = 4 + (capacity + 1) * (wide ? 2 : 1);
     t->size = (t->size + 1) & ~1u;
     t->align = 2;
     m_strings.push_back(t);

@@ -90,7 +90,7 @@ QString formatElementary(const Type *type, const std::uint8_t *p)
     case Elem::DInt: return formatInteger(load<std::int32_t>(p));
     case Elem::LInt: return formatInteger(load<std::int64_t>(p));
     // CHAR and WCHAR as their literals: 'A', "A".
-    case Elem::Char: return formatString(QString(QChar(char16_t(load<std::uint8_t>(p)))));
+    case Elem::Char: return formatString(QString(windows1252Char(load<std::uint8_t>(p))));
     case Elem::WChar: return formatWString(QString(QChar(load<char16_t>(p))));
     case Elem::USInt: case Elem::Byte: return formatUnsigned(load<std::uint8_t>(p));
     case Elem::UInt: case Elem::Word: return formatUnsigned(load<std::uint16_t>(p));
@@ -118,10 +118,14 @@ QString formatAt(const Type *type, const std::uint8_t *p)
     case TypeKind::Interface:
         return formatElementary(type, p);
     case TypeKind::String: {
-        const std::uint16_t length = load<std::uint16_t>(p + 2);
+        // As the VM reads it (vmoperations.h StringRef): up to the first NUL, within the capacity.
         QString text;
-        for (int i = 0; i < length; ++i)
-            text += QChar(type->wide ? load<char16_t>(p + 4 + 2 * i) : char16_t(p[4 + i]));
+        for (std::uint32_t i = 0; i < type->capacity; ++i) {
+            const char16_t c = type->wide ? load<char16_t>(p + 4 + 2 * i) : p[4 + i];
+            if (c == 0)
+                break;
+            text += type->wide ? QChar(c) : windows1252Char(std::uint8_t(c));
+        }
         return type->wide ? formatWString(text) : formatString(text);
     }
     case TypeKind::Array: {
@@ -286,6 +290,20 @@ QString formatValue(const VariableRef &ref, const std::uint8_t *memory, const st
 
 namespace {
 
+// The byte a STRING or CHAR keeps for a character typed or decoded: a decoded '...' text holds its
+// bytes already (U+0000..U+00FF); a character beyond is looked up in Windows-1252 (€ is 16#80).
+std::optional<std::uint8_t> stringByte(QChar c)
+{
+    return c.unicode() <= 0xFF ? std::optional<std::uint8_t>(std::uint8_t(c.unicode())) : windows1252Byte(c);
+}
+
+QString notInCodePage(QChar c)
+{
+    return QCoreApplication::translate("iec::interp::Runtime",
+        "A STRING cannot hold %1 (it holds the characters of Windows-1252); use a WSTRING.")
+        .arg(c);
+}
+
 // -1, 0 or 1 as `value` is below, at or above `bound`.
 int compare(const IntegerValue &value, std::int64_t bound)
 {
@@ -345,12 +363,27 @@ std::optional<QString> writeLiteral(const VariableRef &ref, const QString &input
         }
         if (value.size() > qsizetype(type->capacity))
             return QCoreApplication::translate("iec::interp::Runtime", "The text is longer than the %1 characters of the string.").arg(type->capacity);
+        QByteArray bytes;
+        if (!type->wide) {
+            for (const QChar c : value) {
+                const std::optional<std::uint8_t> byte = stringByte(c);
+                if (!byte)
+                    return notInCodePage(c);
+                bytes.append(char(*byte));
+            }
+        }
         put<std::uint16_t>(p + 2, static_cast<std::uint16_t>(value.size()));
         for (qsizetype i = 0; i < value.size(); ++i) {
             if (type->wide)
                 put<char16_t>(p + 4 + 2 * i, value[i].unicode());
             else
-                p[4 + i] = static_cast<std::uint8_t>(value[i].unicode());
+                p[4 + i] = static_cast<std::uint8_t>(bytes[i]);
+        }
+        if (value.size() < qsizetype(type->capacity)) { // the NUL that ends it
+            if (type->wide)
+                put<char16_t>(p + 4 + 2 * value.size(), 0);
+            else
+                p[4 + value.size()] = 0;
         }
         return std::nullopt;
     }
@@ -377,9 +410,12 @@ std::optional<QString> writeLiteral(const VariableRef &ref, const QString &input
         const auto decoded = decodeString(parts.body);
         if (!decoded || decoded->size() != 1)
             return bad();
-        if (e == Elem::Char)
-            *p = static_cast<std::uint8_t>(decoded->front().unicode());
-        else
+        if (e == Elem::Char) {
+            const std::optional<std::uint8_t> byte = stringByte(decoded->front());
+            if (!byte)
+                return notInCodePage(decoded->front());
+            *p = *byte;
+        } else
             put<char16_t>(p, decoded->front().unicode());
         return std::nullopt;
     }

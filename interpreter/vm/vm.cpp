@@ -39,6 +39,7 @@ FaultKind Vm::execute(std::uint32_t entry, bool resuming)
     // The hot state lives in plain locals whose addresses are never taken, so the compiler keeps
     // them in registers although every store goes through a byte pointer that may alias anything.
     std::uint8_t *const mem = m_memory.data();
+    const std::uint8_t *const memEnd = mem + m_memory.size();
     std::uint8_t *inst = mem;
     // With the JIT, its copy of the code, where op::JitEnter marks the way into machine code; with
     // stops, the debugger's copy (op::Break at each stop), run without the JIT. Resuming without
@@ -73,10 +74,10 @@ FaultKind Vm::execute(std::uint32_t entry, bool resuming)
     // Macros, not lambdas: a lambda would capture `inst` as it was, or take its address.
 #define absolute(operand) static_cast<std::uint32_t>(P(operand) - mem)
 #define readInt(operand) static_cast<std::int64_t>(load<std::int32_t>(P(operand)))
-#define str(operand, wide) StringRef{P(operand), (wide)}
+#define str(operand, wide) StringRef{P(operand), (wide), memEnd}
     // Writes m_scratch[0, n) into a string; false when it does not fit.
     const auto writeString = [this](StringRef dst, int n) {
-        if (n > dst.capacity())
+        if (!dst.fits() || n > dst.capacity())
             return false;
         store<std::uint16_t>(dst.p + 2, static_cast<std::uint16_t>(n));
         for (int i = 0; i < n; ++i) {
@@ -84,6 +85,12 @@ FaultKind Vm::execute(std::uint32_t entry, bool resuming)
                 store<char16_t>(dst.p + 4 + 2 * i, m_scratch[size_t(i)]);
             else
                 dst.p[4 + i] = static_cast<std::uint8_t>(m_scratch[size_t(i)]);
+        }
+        if (n < dst.capacity()) { // the NUL that ends it (StringRef)
+            if (dst.wide)
+                store<char16_t>(dst.p + 4 + 2 * n, 0);
+            else
+                dst.p[4 + n] = 0;
         }
         return true;
     };

@@ -12,6 +12,8 @@
 
 #include <QString>
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -365,11 +367,34 @@ inline std::int64_t readIndex(const IndexDescriptor &dsc, const std::uint8_t *p)
 }
 
 // Strings in the image: capacity (uint16), length (uint16), then 1- or 2-byte characters.
+// A string in memory: capacity and length (16 bits each), then the characters, ended by a NUL
+// when shorter than the capacity. As in CODESYS, a string ends at its first NUL: a program may
+// build one through a pointer to its characters (OSCAT's BYTE_TO_STRH writes two characters and a
+// 0 from ADR of its result), so the length read is the NUL's position, and the stored one only
+// records what the VM wrote. The capacity is memory a pointer can overwrite too: it is not trusted
+// beyond `end`, the end of the memory the string lies in, and a string whose header does not fit
+// there is empty and holds nothing.
 struct StringRef {
     std::uint8_t *p;
     bool wide;
-    std::uint16_t capacity() const { return load<std::uint16_t>(p); }
-    std::uint16_t length() const { return load<std::uint16_t>(p + 2); }
+    const std::uint8_t *end;
+    bool fits() const { return end - p >= 4; }
+    std::uint16_t capacity() const
+    {
+        if (!fits())
+            return 0;
+        const std::ptrdiff_t room = (end - p - 4) / (wide ? 2 : 1);
+        return static_cast<std::uint16_t>(std::min<std::ptrdiff_t>(load<std::uint16_t>(p), room));
+    }
+    std::uint16_t length() const
+    {
+        const std::uint16_t limit = capacity();
+        for (std::uint16_t i = 0; i < limit; ++i) {
+            if (at(i) == 0)
+                return i;
+        }
+        return limit;
+    }
     char16_t at(int i) const { return wide ? load<char16_t>(p + 4 + 2 * i) : char16_t(p[4 + i]); }
 };
 

@@ -85,6 +85,7 @@ ReadResult readProject(const QByteArray &bytes)
     }
     checkNamespace(root, context);
     dropCharactersXmlDoesNotAllow(document, context);
+    keepFirstOfRepeatedAttributes(document, context);
     repairOldForms(root, context);
     result.isProject = true;
 

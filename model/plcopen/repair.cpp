@@ -1,5 +1,7 @@
 #include "model/plcopen/repair.h"
 
+#include <QSet>
+
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
@@ -203,6 +205,33 @@ void dropCharactersXmlDoesNotAllow(pugi::xml_document &document, ReadContext &co
                 "Characters XML does not allow (control characters, U+FFFE or U+FFFF) were left out of the "
                 "file, %1 in all, so that the project is saved as valid XML.")
                 .arg(dropped));
+}
+
+void keepFirstOfRepeatedAttributes(pugi::xml_document &document, ReadContext &context)
+{
+    QSet<QString> names; // as the model keeps them: bytes that are not UTF-8 read as U+FFFD
+    walkDescendants(document, [&](pugi::xml_node node) {
+        if (node.type() != pugi::node_element)
+            return false;
+        if (!node.first_attribute() || node.first_attribute() == node.last_attribute())
+            return true;
+        names.clear();
+        for (pugi::xml_attribute attribute = node.first_attribute(); attribute;) {
+            const pugi::xml_attribute next = attribute.next_attribute();
+            const QString name = QString::fromUtf8(attribute.name());
+            if (names.contains(name)) {
+                context.report(Diagnostic::Severity::Warning, node,
+                    QCoreApplication::translate("iec::model::plcopen::Reader",
+                        "<%1> has the attribute %2 more than once; the first is kept.")
+                        .arg(QString::fromUtf8(node.name()), name));
+                node.remove_attribute(attribute);
+            } else {
+                names.insert(name);
+            }
+            attribute = next;
+        }
+        return true;
+    });
 }
 
 void repairOldForms(pugi::xml_node root, ReadContext &context)

@@ -22,4 +22,8 @@ void repairOldForms(pugi::xml_node root, ReadContext &context);
 // warning at the first, so that what is read can be written back as valid XML.
 void dropCharactersXmlDoesNotAllow(pugi::xml_document &document, ReadContext &context);
 
+// An element may not have one attribute twice; pugixml reads it all the same. The first is kept,
+// with a warning, so that what is read is what is written (found by fuzz_plcopen).
+void keepFirstOfRepeatedAttributes(pugi::xml_document &document, ReadContext &context);
+
 } // namespace iec::model::plcopen

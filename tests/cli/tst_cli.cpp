@@ -30,6 +30,7 @@ private Q_SLOTS:
     void check_data();
     void check();
     void checkNamesGraphicalPousOfTheCorpus();
+    void codesysExportInWindows1252Runs();
     void processImageThroughSetAndWatch_data();
     void processImageThroughSetAndWatch();
     void loggerWritesToStderr();
@@ -419,6 +420,28 @@ void TestCli::check()
 
     const Result missing = cli({QStringLiteral("check"), dir.filePath(QStringLiteral("missing.st"))});
     QCOMPARE(missing.exitCode, 3);
+}
+
+// A CoDeSys 2.3 export (.exp, Windows-1252, its own comments): read, its umlauts and € kept.
+void TestCli::codesysExportInWindows1252Runs()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("PLC_PRG.EXP"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("\r\n(* @NESTEDCOMMENTS := 'Yes' *)\r\n(* @PATH := '' *)\r\n(* @OBJECTFLAGS := '0, 8' *)\r\n"
+               "PROGRAM PLC_PRG\r\nVAR\r\n\tMeldung : STRING := 'St\xF6rung \x80';\r\n\tn : INT;\r\nEND_VAR\r\n"
+               "(* @END_DECLARATION := '0' *)\r\nn := LEN(Meldung);\r\nEND_PROGRAM\r\n");
+    file.close();
+    const Result checked = cli({QStringLiteral("check"), path});
+    QCOMPARE(checked.exitCode, 0);
+    QCOMPARE(checked.out,
+        path + QStringLiteral(":7:1: warning: The file is not UTF-8: it was read as Windows-1252, the code page CoDeSys 2.3 "
+                              "writes, so that its umlauts and other special characters are kept.\n"));
+    const Result run = cli({QStringLiteral("run"), path, QStringLiteral("--cycles"), QStringLiteral("1"), QStringLiteral("--watch"),
+        QStringLiteral("PLC_PRG.Meldung"), QStringLiteral("--watch"), QStringLiteral("PLC_PRG.n")});
+    QCOMPARE(run.exitCode, 0);
+    QCOMPARE(run.out, QStringLiteral("PLC_PRG.Meldung = 'Störung €'\nPLC_PRG.n = 9\n"));
 }
 
 void TestCli::checkNamesGraphicalPousOfTheCorpus()

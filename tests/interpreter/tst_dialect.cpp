@@ -43,6 +43,8 @@ private Q_SLOTS:
     void pointerFaults();
     void references_data();
     void references() { check(); }
+    void oscatForms_data();
+    void oscatForms() { check(); }
     void controlFlow_data();
     void controlFlow() { check(); }
 };
@@ -145,6 +147,20 @@ void TestDialect::pointers_data()
     row("pointer to an element chosen at run time", "VAR arr : ARRAY[1..3] OF INT := [1, 2, 3]; i : INT := 2; p : POINTER TO INT; END_VAR\n"
                                                     "p := ADR(arr[i]); p^ := p^ * 10; i := i + 1;",
         {"=> arr=[1, 20, 3]", "=> arr=[1, 20, 30]"});
+    // As in CODESYS, a string's address is that of its first character and the string ends at its
+    // first NUL, so OSCAT's string functions work: they walk and build strings through pointers.
+    expr("a string's address is its first character", "s : STRING(10) := 'abc'; p : POINTER TO BYTE; b : BYTE; n : INT;",
+         "p := ADR(s); b := p^; p^ := 65; n := LEN(s);", "b=97; n=3; s='Abc'");
+    expr("a string ends at a NUL written through a pointer", "s : STRING(10) := 'abcdef'; p : POINTER TO BYTE; n : INT;",
+         "p := ADR(s) + 2; p^ := 0; n := LEN(s);", "n=2; s='ab'");
+    expr("a string built through a pointer", "s : STRING(10); p : POINTER TO BYTE; n : INT;",
+         "p := ADR(s); p^ := 72; p := p + 1; p^ := 105; p := p + 1; p^ := 0; n := LEN(s);", "n=2; s='Hi'");
+    row("a function result built through its address", "FUNCTION Hex : STRING(2)\nVAR_INPUT b : BYTE; END_VAR\nVAR p : POINTER TO BYTE; END_VAR\n"
+                                                       "p := ADR(Hex); p^ := 65 + SHR(b, 4); p := p + 1; p^ := 65 + (b AND 15); p := p + 1; p^ := 0;\n"
+                                                       "END_FUNCTION\nPROGRAM Main VAR s : STRING(2); k : BYTE := 7; END_VAR\ns := Hex(16#12);\nEND_PROGRAM",
+        {"=> s='BC'; k=7"});
+    expr("a pointer to a string", "s : STRING(10) := 'abc'; t : STRING(10); ps : POINTER TO STRING(10);",
+         "ps := ADR(s); t := ps^; ps^ := 'xy';", "s='xy'; t='abc'");
     expr("ref_to of edition 3", "r : REF_TO INT; x : INT := 4; y : INT;", "r := REF(x); y := r^ + 1;", "y=5");
     expr("and_then skips a null pointer", "p : POINTER TO INT; ok : BOOL := TRUE; other : BOOL;", "ok := p <> 0 AND_THEN p^ > 0; other := p = 0 OR_ELSE p^ > 0;",
          "ok=FALSE; other=TRUE");
@@ -188,6 +204,30 @@ void TestDialect::references_data()
     row("reference to a struct member", "TYPE Pair : STRUCT a : INT; b : INT; END_STRUCT; END_TYPE\n"
                                         "PROGRAM Main VAR s : Pair; r : REFERENCE TO INT; END_VAR\nr REF= s.b; r := 5;\nEND_PROGRAM",
         {"=> s=(a := 0, b := 5)"});
+}
+
+void TestDialect::oscatForms_data()
+{
+    columns();
+    // SHL/SHR of an integer shift its bits as those of the bit string of its size; SHR keeps the
+    // sign (OSCAT's SET_DATE: SHR(month - 4, 1) is -1 for March).
+    expr("shifts of integers", "a : INT; b : INT; c : INT; d : SINT; e : UINT; m : INT := 3;",
+         "a := SHR(m - 4, 1); b := SHR(INT#-8, 2); c := SHL(INT#3, 14); d := SHR(SINT#-128, 7); e := SHR(UINT#65535, 4);",
+         "a=-1; b=-2; c=-16384; d=-1; e=4095");
+    expr("a negative literal shifted", "a : INT;", "a := SHR(-8, 2);", "a=-2");
+    // A REAL written with more digits than 64 bits hold (OSCAT's PI) is rounded.
+    expr("long real literal", "r : LREAL := 3.14159265358979323846264338327950288;", "", "r=3.141592653589793");
+    // TIME() is the time since the start, here the virtual clock as the cycle begins.
+    row("time function", "VAR t : TIME; END_VAR\nt := TIME();", {"=> t=T#0s", "=> t=T#10ms"});
+    // CODESYS writes END_STRUCT END_TYPE without a ';'; the ed.3 long date types are names there.
+    row("struct without a semicolon and long date names", "TYPE Cal :\nSTRUCT\n\tLDT : DT;\n\tLDATE : DATE;\n\tLTOD : TOD;\nEND_STRUCT\nEND_TYPE\n"
+                                                         "PROGRAM Main VAR c : Cal; d : DATE; END_VAR\nc.LDATE := D#2024-02-03; d := c.LDATE;\nEND_PROGRAM",
+        {"=> d=D#2024-02-03"});
+    // TwinCAT's T_MaxString and the pointer-sized integers of CODESYS 3.5 and TwinCAT.
+    expr("vendor built-in types", "s : T_MaxString; x : __XINT := -5; u : UXINT; w : XWORD; n : INT;",
+         "s := 'abc'; n := LEN(s); u := 7; w := 16#FF;", "n=3; x=-5; u=7; w=255");
+    // A STRING holds Windows-1252 (CODESYS's code page): € is one byte.
+    expr("euro sign in a string", "s : STRING(10) := 'Öl €'; n : INT;", "n := LEN(s);", "n=4; s='Öl €'");
 }
 
 void TestDialect::controlFlow_data()

@@ -4,6 +4,7 @@
 #include "interpreter/frontend/iecprinter.h"
 #include "interpreter/frontend/iecreader.h"
 #include "interpreter/frontend/projectsource.h"
+#include "interpreter/frontend/sourcefile.h"
 #include "interpreter/runtime/runtime.h"
 
 #include "model/plcopen/reader.h"
@@ -27,6 +28,8 @@ private Q_SLOTS:
     void graphicalBodiesBecomeAComment();
     void reportsParseErrorsWithFileLines();
     void refusesCharactersAFileCannotKeep();
+    void sourceFilesAreUtf8OrWindows1252_data();
+    void sourceFilesAreUtf8OrWindows1252();
     void textAndModelRunAlike();
 };
 
@@ -264,6 +267,30 @@ void TestIecText::textAndModelRunAlike()
         (QStringList {QStringLiteral("0"), QStringLiteral("0"), QStringLiteral("0"), QStringLiteral("1"),
             QStringLiteral("2"), QStringLiteral("3")}));
     QCOMPARE(traceB, traceA);
+}
+
+// A CoDeSys 2.3 export is in Windows-1252: read as UTF-8, its umlauts would be lost.
+void TestIecText::sourceFilesAreUtf8OrWindows1252_data()
+{
+    QTest::addColumn<QByteArray>("bytes");
+    QTest::addColumn<QString>("text");
+    QTest::addColumn<int>("windows1252Line");
+    QTest::newRow("utf-8") << QByteArray("x := 'St\xC3\xB6rung \xE2\x82\xAC';") << QStringLiteral("x := 'Störung €';") << 0;
+    QTest::newRow("utf-8 with a byte order mark") << QByteArray("\xEF\xBB\xBFx := 1;") << QStringLiteral("x := 1;") << 0;
+    QTest::newRow("windows-1252") << QByteArray("(* ok *)\nx := 'St\xF6rung \x80';\n(* \x93quoted\x94 *)")
+                                  << QStringLiteral("(* ok *)\nx := 'Störung €';\n(* \u201Cquoted\u201D *)") << 2;
+    QTest::newRow("bytes windows-1252 leaves undefined") << QByteArray("\x81\x8D") << QStringLiteral("\u0081\u008D") << 1;
+    QTest::newRow("empty") << QByteArray() << QString() << 0;
+}
+
+void TestIecText::sourceFilesAreUtf8OrWindows1252()
+{
+    QFETCH(QByteArray, bytes);
+    QFETCH(QString, text);
+    QFETCH(int, windows1252Line);
+    const frontend::SourceText source = frontend::decodeSourceFile(bytes);
+    QCOMPARE(source.text, text);
+    QCOMPARE(source.windows1252Line, windows1252Line);
 }
 
 QTEST_GUILESS_MAIN(TestIecText)

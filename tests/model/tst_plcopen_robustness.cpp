@@ -256,6 +256,12 @@ void TestPlcopenRobustness::hostileInput_data()
                                             "The attribute x=\"nan\" of <position> has an invalid value; it is "
                                             "kept as written.");
 
+    QByteArray repeated = head + "<types><dataTypes/><pous><pou name=\"P\" pouType=\"program\" color=\"red\" "
+                                 "pouType=\"function\" color=\"blue\"><body><ST><xhtml:p>x := 1;</xhtml:p></ST></body>"
+                                 "</pou></pous></types>" + tail;
+    QTest::newRow("repeated attribute")
+        << repeated << QStringLiteral("<pou> has the attribute pouType more than once; the first is kept.");
+
     QTest::newRow("not PLCopen") << QByteArray("<html><body/></html>")
                                  << QStringLiteral(
                                         "The root element is <html>, not <project>: this is not a PLCopen XML file.");

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <QByteArray>
+#include <QString>
+
+namespace iec::interp::frontend {
+
+// The text of an IEC source file (.st, .exp). UTF-8, with or without a byte order mark; bytes that
+// are not UTF-8 mean the file is in Windows-1252, the code page CoDeSys 2.3 and TwinCAT 2 write
+// their exports in (read as UTF-8, its umlauts would become U+FFFD and be lost on saving).
+struct SourceText {
+    QString text;
+    int windows1252Line = 0; // the first line that is not UTF-8 (1-based); 0: the file is UTF-8
+};
+
+[[nodiscard]] SourceText decodeSourceFile(const QByteArray &bytes);
+
+// What to tell the user about a file read as Windows-1252 (translated).
+[[nodiscard]] QString windows1252Note();
+
+} // namespace iec::interp::frontend
