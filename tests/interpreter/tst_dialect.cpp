@@ -159,6 +159,10 @@ void TestDialect::pointers_data()
                                                        "p := ADR(Hex); p^ := 65 + SHR(b, 4); p := p + 1; p^ := 65 + (b AND 15); p := p + 1; p^ := 0;\n"
                                                        "END_FUNCTION\nPROGRAM Main VAR s : STRING(2); k : BYTE := 7; END_VAR\ns := Hex(16#12);\nEND_PROGRAM",
         {"=> s='BC'; k=7"});
+    // A pointer that overwrites a string's capacity and length cannot make it reach past its memory:
+    // it still ends at its NUL (this read outside the image before; found with OSCAT's UPPERCASE).
+    expr("a string header overwritten through a pointer", "s : STRING(4) := 'ab'; t : STRING(80); p : POINTER TO WORD; n : INT;",
+         "p := ADR(s) - 4; p^ := 16#FFFF; p := p + 2; p^ := 16#FFFF; n := LEN(s); t := CONCAT(s, 'c');", "n=2; t='abc'");
     expr("a pointer to a string", "s : STRING(10) := 'abc'; t : STRING(10); ps : POINTER TO STRING(10);",
          "ps := ADR(s); t := ps^; ps^ := 'xy';", "s='xy'; t='abc'");
     expr("ref_to of edition 3", "r : REF_TO INT; x : INT := 4; y : INT;", "r := REF(x); y := r^ + 1;", "y=5");
