@@ -75,7 +75,8 @@ private:
 ImportExport::Format ImportExport::formatOf(const QString &path)
 {
     const QString suffix = QFileInfo(path).suffix().toLower();
-    return suffix == QLatin1String("st") || suffix == QLatin1String("iec") || suffix == QLatin1String("txt")
+    return suffix == QLatin1String("st") || suffix == QLatin1String("exp") || suffix == QLatin1String("iec")
+            || suffix == QLatin1String("txt")
         ? Format::IecText
         : Format::PlcOpenXml;
 }

@@ -3,6 +3,7 @@
 #include "interpreter/compiler/literals.h"
 
 #include <QCoreApplication>
+#include <QRegularExpression>
 #include <QStringDecoder>
 
 namespace iec::interp::frontend {
@@ -26,6 +27,18 @@ int firstLineNotUtf8(const QByteArray &bytes)
     return 1;
 }
 
+// \r\n and a lone \r become \n; export marker lines become empty.
+void tidyLines(QString &text)
+{
+    text.replace(QLatin1String("\r\n"), QLatin1String("\n"));
+    text.replace(QLatin1Char('\r'), QLatin1Char('\n'));
+    if (!text.contains(QLatin1String("(* @")))
+        return;
+    static const QRegularExpression marker(QStringLiteral(R"(^[ \t]*\(\* @[A-Z_]+ := '[^'\n]*' \*\)[ \t]*$)"),
+        QRegularExpression::MultilineOption);
+    text.replace(marker, QString());
+}
+
 } // namespace
 
 SourceText decodeSourceFile(const QByteArray &bytes)
@@ -33,16 +46,16 @@ SourceText decodeSourceFile(const QByteArray &bytes)
     QStringDecoder utf8(QStringDecoder::Utf8, QStringDecoder::Flag::Stateless);
     SourceText source;
     source.text = utf8.decode(bytes);
-    if (!utf8.hasError()) {
-        if (source.text.startsWith(QChar(0xFEFF)))
-            source.text.remove(0, 1);
-        return source;
+    if (utf8.hasError()) {
+        source.windows1252Line = firstLineNotUtf8(bytes);
+        source.text.clear();
+        source.text.reserve(bytes.size());
+        for (const char byte : bytes)
+            source.text.append(windows1252Char(static_cast<std::uint8_t>(byte)));
+    } else if (source.text.startsWith(QChar(0xFEFF))) {
+        source.text.remove(0, 1);
     }
-    source.windows1252Line = firstLineNotUtf8(bytes);
-    source.text.clear();
-    source.text.reserve(bytes.size());
-    for (const char byte : bytes)
-        source.text.append(windows1252Char(static_cast<std::uint8_t>(byte)));
+    tidyLines(source.text);
     return source;
 }
 

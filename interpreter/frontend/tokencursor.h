@@ -80,8 +80,10 @@ private:
 inline QString bodyText(QStringView source, int from, int to)
 {
     QStringView body = source.mid(from, to - from);
-    const qsizetype newline = body.indexOf(u'\n');
-    if (newline >= 0 && body.left(newline).trimmed().isEmpty())
+    // The rest of the line before it (END_VAR's), and empty lines (where a CoDeSys 2.3 export had
+    // its (* @END_DECLARATION *) marker, sourcefile.h).
+    for (qsizetype newline = body.indexOf(u'\n'); newline >= 0 && body.left(newline).trimmed().isEmpty();
+         newline = body.indexOf(u'\n'))
         body = body.mid(newline + 1);
     while (!body.isEmpty() && body.back().isSpace())
         body.chop(1);

@@ -322,6 +322,24 @@ void TestMainWindow::iecTextOpensAsAnUntitledProject()
     QVERIFY2(error.startsWith(QStringLiteral("broken.st, line 2: ")), qPrintable(error));
     QVERIFY(window.projectModel().project() == before);
     QVERIFY(window.messagesPane().model().rowCount() >= 1);
+
+    // A CoDeSys 2.3 export: .exp, in Windows-1252; its umlauts are kept and a warning says how it
+    // was read.
+    const QString exported = dir.filePath(QStringLiteral("PLC_PRG.EXP"));
+    QFile exp(exported);
+    QVERIFY(exp.open(QIODevice::WriteOnly)
+        && exp.write("(* @NESTEDCOMMENTS := 'Yes' *)\r\nPROGRAM PLC_PRG\r\nVAR\r\n\tText : STRING := 'St\xF6rung';\r\nEND_VAR\r\n"
+                     "(* @END_DECLARATION := '0' *)\r\nText := 'Gr\xFC\xDF';\r\nEND_PROGRAM\r\n") > 0);
+    exp.close();
+    QVERIFY2(window.openProject(exported, &error), qPrintable(error));
+    const iec::model::Pou *plc = window.projectModel().project().findPou(QStringLiteral("PLC_PRG"));
+    QVERIFY(plc && plc->body());
+    QCOMPARE(plc->body()->text(), QStringLiteral("Text := 'Grüß';"));
+    const MessageListModel &messages = window.messagesPane().model();
+    QCOMPARE(messages.rowCount(), 1);
+    QCOMPARE(messages.message(0).severity, Message::Severity::Warning);
+    QCOMPARE(messages.message(0).line, 4);
+    QVERIFY2(messages.message(0).text.startsWith(QStringLiteral("The file is not UTF-8")), qPrintable(messages.message(0).text));
 }
 
 namespace {

@@ -281,6 +281,10 @@ void TestIecText::sourceFilesAreUtf8OrWindows1252_data()
                                   << QStringLiteral("(* ok *)\nx := 'Störung €';\n(* \u201Cquoted\u201D *)") << 2;
     QTest::newRow("bytes windows-1252 leaves undefined") << QByteArray("\x81\x8D") << QStringLiteral("\u0081\u008D") << 1;
     QTest::newRow("empty") << QByteArray() << QString() << 0;
+    QTest::newRow("line ends and export markers")
+        << QByteArray("(* @NESTEDCOMMENTS := 'Yes' *)\r\nPROGRAM P\r\nVAR x : INT; END_VAR\r\n  (* @END_DECLARATION := '0' *)\r\n"
+                      "x := 1; (* @KEPT := 'inline' *)\rEND_PROGRAM")
+        << QStringLiteral("\nPROGRAM P\nVAR x : INT; END_VAR\n\nx := 1; (* @KEPT := 'inline' *)\nEND_PROGRAM") << 0;
 }
 
 void TestIecText::sourceFilesAreUtf8OrWindows1252()
