@@ -342,6 +342,10 @@ public:
     // The POU being compiled.
     PouInfo *m_pou = nullptr;
     const PouInfo *m_declaring = nullptr; // the POU whose variables are being laid out
+    // The units being compiled, and whether their global variables are declared yet: before, a
+    // global CONSTANT is known by its value (earlyGlobalConstant), as array bounds need it.
+    std::vector<const ast::CompilationUnit *> m_units;
+    bool m_globalsDeclared = false;
     QString m_pouName;
     std::uint32_t m_tempTop = 0;
     std::uint32_t m_tempMax = 0;
@@ -370,6 +374,7 @@ public:
     void packRungs();
     Value lookupName(const QString &name, SourceLocation at);
     Place namePlace(const ast::Expr &expr, bool reportUnknown);
+    std::optional<Place> earlyGlobalConstant(const QString &name);
     Place globalPlace(const GlobalVar &global, const QString &name);
     bool typedLiteralFits(const ConstValue &value, const Type *type, const ast::Expr &expr);
     void addToGlobalList(const QString &list, const QString &variable);

@@ -294,6 +294,7 @@ void Codegen::compileActionBody(PouInfo &pou, const SfcAction &action, int modul
 
 std::shared_ptr<Module> Codegen::run(const std::vector<const CompilationUnit *> &units)
 {
+    m_units = units;
     const CompilationUnit &library = standardLibrary();
     const bool util = utilNamesUsed(units);
     for (const CompilationUnit *u : units)
@@ -344,6 +345,7 @@ std::shared_ptr<Module> Codegen::run(const std::vector<const CompilationUnit *> 
             declareGlobals(r.globals);
         m_pouName.clear();
     }
+    m_globalsDeclared = true;
 
     // Static memory of functions, and the initial values that reset VAR_TEMP and function variables.
     for (PouInfo &p : m_pous) {

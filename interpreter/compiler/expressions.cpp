@@ -3,8 +3,10 @@
 #include "interpreter/compiler/typeutil.h"
 
 #include <QCoreApplication>
+
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 namespace iec::interp::detail {
 
@@ -213,6 +215,55 @@ bool Codegen::typedLiteralFits(const ConstValue &value, const Type *type, const 
     return false;
 }
 
+// A global CONSTANT by its value, before the global variables are declared: the POUs and types are
+// laid out first, and CODESYS projects size arrays and strings with global constants
+// (STR : STRING(STRING_LENGTH), ARRAY[0..N] OF ...). Nothing when `name` is no such constant.
+std::optional<Place> Codegen::earlyGlobalConstant(const QString &name)
+{
+    std::vector<const std::vector<VarSection> *> lists;
+    const ConfigurationDecl *config = nullptr;
+    for (const CompilationUnit *u : m_units) {
+        lists.push_back(&u->globals);
+        if (!config && !u->configurations.empty())
+            config = &u->configurations.front();
+    }
+    if (config) {
+        lists.push_back(&config->globals);
+        for (const ResourceDecl &r : config->resources)
+            lists.push_back(&r.globals);
+    }
+    for (const std::vector<VarSection> *sections : lists) {
+        for (const VarSection &section : *sections) {
+            if (!section.constant)
+                continue;
+            for (const VarDecl &v : section.vars) {
+                if (v.name.compare(name, Qt::CaseInsensitive) != 0 || v.init.kind != Initializer::Kind::Expression)
+                    continue;
+                // Evaluated in the global scope, once (evalConstOnce also finds a constant that
+                // is defined in terms of itself).
+                PouInfo *const pou = std::exchange(m_pou, nullptr);
+                const PouInfo *const declaring = std::exchange(m_declaring, nullptr);
+                const Type *type = resolveType(v.type);
+                bool reported = false;
+                const auto value = evalConstOnce(*v.init.value, true, reported);
+                const Value typed = value && type ? coerce(*value, type, v.location) : Value{};
+                m_pou = pou;
+                m_declaring = declaring;
+                if (typed.kind != Value::Kind::Constant)
+                    return std::nullopt;
+                Place p;
+                p.text = name;
+                p.kind = Place::Kind::Constant;
+                p.type = type;
+                p.constant = typed.constant;
+                p.readOnly = true;
+                return p;
+            }
+        }
+    }
+    return std::nullopt;
+}
+
 // A global variable by its declaration (also reached as List.Variable through a global list).
 Place Codegen::globalPlace(const GlobalVar &global, const QString &name)
 {
@@ -317,6 +368,10 @@ Place Codegen::namePlace(const Expr &expr, bool reportUnknown)
     }
     if (const auto it = m_globals.constFind(key(name)); it != m_globals.constEnd())
         return globalPlace(*it, name);
+    if (!m_globalsDeclared) {
+        if (std::optional<Place> constant = earlyGlobalConstant(name))
+            return *constant;
+    }
     if (const auto it = m_enumValues.constFind(key(name)); it != m_enumValues.constEnd()) {
         if (it->ambiguous) {
             error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "%1 is a value of several enumerations.").arg(name),

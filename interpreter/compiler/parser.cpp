@@ -262,7 +262,7 @@ void Parser::typeBlock(CompilationUnit &unit)
         }
         decl.type = typeSpec();
         if (acceptOp(u":="))
-            decl.init = initializer();
+            decl.init = declarationInitializer();
         // CODESYS (2.3 exports, 3.5, TwinCAT) writes END_STRUCT END_TYPE with no ';' between.
         if (!acceptOp(u";") && !isWord("END_TYPE")) {
             error(afterPrevious(), QCoreApplication::translate("iec::interp::Compiler", "Missing ';' after the declaration of type %1.").arg(decl.name));
@@ -423,7 +423,7 @@ void Parser::varDeclarations(std::vector<VarDecl> &out, std::string_view end)
         TypeSpec type = typeSpec();
         Initializer init;
         if (acceptOp(u":="))
-            init = initializer();
+            init = declarationInitializer();
         else if (isOp(u"="))
             error(here(), QCoreApplication::translate("iec::interp::Compiler", "An initial value is given with ':=', not '='."),
                   QCoreApplication::translate("iec::interp::Compiler", "write %1 : ... := value;").arg(names.front().name));
@@ -531,6 +531,60 @@ TypeSpec Parser::typeSpec()
     return spec;
 }
 
+// One value of an array's initial values, or n(value) repeated n times.
+void Parser::arrayItem(Initializer &init)
+{
+    std::optional<Expr> repeat;
+    if (!atEnd() && tok().kind == TokenKind::IntegerLiteral && isOp(u"(", 1)) {
+        repeat = expression(9); // just the literal
+        ++m_pos;                // (
+        Initializer item;
+        if (!isOp(u")"))
+            item = initializer();
+        expectOp(u")", QCoreApplication::translate("iec::interp::Compiler", "')' after the repeated value"));
+        init.items.push_back(std::move(item));
+    } else {
+        init.items.push_back(initializer());
+    }
+    init.repeats.push_back(std::move(repeat));
+}
+
+// The initial value of a declaration. CoDeSys 2.3 writes an array's values without brackets
+// (FACTS : ARRAY[0..12] OF DINT := 1, 1, 2, 6, ...; or := 10(0), 5;), which is read as [...].
+Initializer Parser::declarationInitializer()
+{
+    const bool bare = !isOp(u"[") && !isOp(u"(")
+        && ((!atEnd() && tok().kind == TokenKind::IntegerLiteral && isOp(u"(", 1)) || continuesWithComma());
+    if (!bare)
+        return initializer();
+    Initializer list;
+    list.location = here();
+    list.kind = Initializer::Kind::Array;
+    do
+        arrayItem(list);
+    while (acceptOp(u","));
+    return list;
+}
+
+// Whether the value that starts here is followed by a ',' at the same depth before the ';' that
+// ends the declaration.
+bool Parser::continuesWithComma() const
+{
+    int depth = 0;
+    for (size_t ahead = 0; !atEnd(ahead); ++ahead) {
+        if (isOp(u"(", ahead) || isOp(u"[", ahead))
+            ++depth;
+        else if (isOp(u")", ahead) || isOp(u"]", ahead))
+            --depth;
+        else if (depth == 0 && isOp(u",", ahead))
+            return true;
+        else if (depth < 0 || isOp(u";", ahead) || isOp(u":=", ahead)
+                 || (tok(ahead).kind == TokenKind::Keyword && text(ahead).startsWith(u"END_", Qt::CaseInsensitive)))
+            return false;
+    }
+    return false;
+}
+
 Initializer Parser::initializer()
 {
     Initializer init;
@@ -547,21 +601,9 @@ Initializer Parser::initializer()
         init.kind = Initializer::Kind::Array;
         if (acceptOp(u"]"))
             return init;
-        do {
-            std::optional<Expr> repeat;
-            if (!atEnd() && tok().kind == TokenKind::IntegerLiteral && isOp(u"(", 1)) {
-                repeat = expression(9); // just the literal
-                ++m_pos;                // (
-                Initializer item;
-                if (!isOp(u")"))
-                    item = initializer();
-                expectOp(u")", QCoreApplication::translate("iec::interp::Compiler", "')' after the repeated value"));
-                init.items.push_back(std::move(item));
-            } else {
-                init.items.push_back(initializer());
-            }
-            init.repeats.push_back(std::move(repeat));
-        } while (acceptOp(u","));
+        do
+            arrayItem(init);
+        while (acceptOp(u","));
         expectOp(u"]", QCoreApplication::translate("iec::interp::Compiler", "']' at the end of the array's initial values"));
         return init;
     }

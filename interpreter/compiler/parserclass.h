@@ -387,6 +387,9 @@ private:
     void varDeclarations(std::vector<VarDecl> &out, std::string_view end);
     TypeSpec typeSpec();
     Initializer initializer();
+    Initializer declarationInitializer();
+    void arrayItem(Initializer &init);
+    bool continuesWithComma() const;
     Body body(std::initializer_list<std::string_view> ends);
     bool looksLikeIl() const;
     bool looksLikeSfc() const;

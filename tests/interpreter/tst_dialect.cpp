@@ -230,6 +230,15 @@ void TestDialect::oscatForms_data()
     // TwinCAT's T_MaxString and the pointer-sized integers of CODESYS 3.5 and TwinCAT.
     expr("vendor built-in types", "s : T_MaxString; x : __XINT := -5; u : UXINT; w : XWORD; n : INT;",
          "s := 'abc'; n := LEN(s); u := 7; w := 16#FF;", "n=3; x=-5; u=7; w=255");
+    // Global constants size arrays and strings, in types and in POUs (OSCAT: STRING(STRING_LENGTH)).
+    row("global constants in declarations", "VAR_GLOBAL CONSTANT\nN : INT := 3;\nLEN_S : INT := N * 2;\nEND_VAR\n"
+                                            "TYPE Buf : ARRAY[0..N] OF INT; END_TYPE\n"
+                                            "FUNCTION F : INT\nVAR_INPUT s : STRING(LEN_S); END_VAR\nF := LEN(s) + SIZEOF(s);\nEND_FUNCTION\n"
+                                            "PROGRAM Main\nVAR b : Buf; x : INT; n : INT; END_VAR\nx := F('abc'); n := SIZEOF(b);\nEND_PROGRAM",
+        {"=> x=15; n=8"}); // LEN 3 + SIZEOF 12 (capacity, length, 6 characters and the NUL, even)
+    // CoDeSys 2.3 writes an array's initial values without brackets.
+    expr("array values without brackets", "a : ARRAY[0..5] OF INT := 1, 2, 3(7); b : ARRAY[1..3] OF BOOL := TRUE, FALSE, TRUE; c : INT := MAX(1, 2);",
+         "", "a=[1, 2, 7, 7, 7, 0]; b=[TRUE, FALSE, TRUE]; c=2");
     // A STRING holds Windows-1252 (CODESYS's code page): € is one byte.
     expr("euro sign in a string", "s : STRING(10) := 'Öl €'; n : INT;", "n := LEN(s);", "n=4; s='Öl €'");
 }
