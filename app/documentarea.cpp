@@ -463,13 +463,32 @@ bool DocumentArea::goToDefinition(const BodyRef &from, const QString &path)
     return false;
 }
 
+namespace {
+
+// In a diagram, a name written as a box's instance has the box's type (Blinker on a BLINK box).
+QString instanceTypeIn(const model::Body &body, const QString &name)
+{
+    if (const std::vector<model::Element> *elements = body.elements()) {
+        for (const model::Element &element : *elements) {
+            const auto *block = std::get_if<model::Block>(&element);
+            if (block && block->instanceName && block->instanceName->compare(name, Qt::CaseInsensitive) == 0)
+                return block->typeName;
+        }
+    }
+    return {};
+}
+
+} // namespace
+
 editors::DeclarationRow DocumentArea::proposeDeclaration(const BodyRef &ref, const QString &name) const
 {
     const model::Body *body = m_projectModel.body(ref);
     editors::DeclarationRow row;
     row.name = name;
-    row.type = guessVariableType(m_projectModel.project(), ref.pou, body ? body->text() : QString(), name,
-        body && body->language() == model::BodyLanguage::IL);
+    row.type = body ? instanceTypeIn(*body, name) : QString();
+    if (row.type.isEmpty())
+        row.type = guessVariableType(m_projectModel.project(), ref.pou, body ? body->text() : QString(), name,
+            body && body->language() == model::BodyLanguage::IL);
     return row;
 }
 

@@ -83,6 +83,7 @@ private Q_SLOTS:
     void completionComesFromTheModel();
     void autoDeclareGuessesTheType_data();
     void autoDeclareGuessesTheType();
+    void autoDeclareInADiagramTakesTheBoxType();
     void importMergesAndExportWritesTheSelection();
 
 private:
@@ -1148,6 +1149,18 @@ void TestMainWindow::autoDeclareGuessesTheType()
     const iec::model::BodyRef main {pouNamed(window, QStringLiteral("Main")), {}, {}};
     QVERIFY(window.projectModel().setBodyText(main, body));
     QCOMPARE(window.documents().proposeDeclaration(main, name).type, type);
+}
+
+// In a diagram, an instance name proposes its box's type (not BOOL), whatever the variable is
+// called; a name that is no instance is guessed as before.
+void TestMainWindow::autoDeclareInADiagramTakesTheBoxType()
+{
+    MainWindow window;
+    QVERIFY(window.openProject(QStringLiteral(IEC_SOURCE_DIR "/resources/examples/staggered_fans.xml")));
+    const iec::model::BodyRef main {pouNamed(window, QStringLiteral("Main")), {}, {}};
+    QCOMPARE(window.documents().proposeDeclaration(main, QStringLiteral("Delay2")).type, QStringLiteral("TON"));
+    QCOMPARE(window.documents().proposeDeclaration(main, QStringLiteral("running")).type, QStringLiteral("RS"));
+    QCOMPARE(window.documents().proposeDeclaration(main, QStringLiteral("Lamp")).type, QStringLiteral("BOOL"));
 }
 
 void TestMainWindow::importMergesAndExportWritesTheSelection()
