@@ -148,8 +148,13 @@ bool dropDisallowed(const char *value, std::string &kept, qsizetype &dropped)
         if (const int length = disallowedLength(text + at)) {
             ++dropped;
             at += std::size_t(length);
-        } else {
-            kept.push_back(char(text[at++]));
+            continue;
+        }
+        kept.push_back(char(text[at++]));
+        // What is kept may join into U+FFFE or U+FFFF across a dropped character (EF 01 BF BE).
+        if (kept.size() >= 3 && disallowedLength(reinterpret_cast<const unsigned char *>(kept.data() + kept.size() - 3)) == 3) {
+            kept.resize(kept.size() - 3);
+            ++dropped;
         }
     }
     return true;
