@@ -232,7 +232,9 @@ template<class A, class V> void Schema<DataType>::describe(A &a, V &type)
                     .arg(QString::fromUtf8(localName(a.node()))));
             return;
         }
-        const char *name = localName(node);
+        // <IN:/> has an empty local name: the whole name is kept, so it is written as it was read
+        // (found by fuzz_plcopen).
+        const char *name = *localName(node) ? localName(node) : node.name();
         a.markKnown(name);
         auto is = [name](const char *candidate) { return std::strcmp(name, candidate) == 0; };
         if (std::ranges::any_of(kElementaryTypeNames, is)) {
