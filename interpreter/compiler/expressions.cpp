@@ -217,22 +217,24 @@ bool Codegen::typedLiteralFits(const ConstValue &value, const Type *type, const 
 
 // A global CONSTANT by its value, before the global variables are declared: the POUs and types are
 // laid out first, and CODESYS projects size arrays and strings with global constants
-// (STR : STRING(STRING_LENGTH), ARRAY[0..N] OF ...). Nothing when `name` is no such constant.
+// (STR : STRING(STRING_LENGTH), ARRAY[0..N] OF ...). Nothing when `name` is no such constant; an
+// invalid place when it is one without a value (its declaration's message says why).
 std::optional<Place> Codegen::earlyGlobalConstant(const QString &name)
 {
-    std::vector<const std::vector<VarSection> *> lists;
+    // Each list with the name its messages go under (declareGlobals's).
+    std::vector<std::pair<const std::vector<VarSection> *, QString>> lists;
     const ConfigurationDecl *config = nullptr;
     for (const CompilationUnit *u : m_units) {
-        lists.push_back(&u->globals);
+        lists.emplace_back(&u->globals, QString());
         if (!config && !u->configurations.empty())
             config = &u->configurations.front();
     }
     if (config) {
-        lists.push_back(&config->globals);
+        lists.emplace_back(&config->globals, config->name);
         for (const ResourceDecl &r : config->resources)
-            lists.push_back(&r.globals);
+            lists.emplace_back(&r.globals, config->name);
     }
-    for (const std::vector<VarSection> *sections : lists) {
+    for (const auto &[sections, owner] : lists) {
         for (const VarSection &section : *sections) {
             if (!section.constant)
                 continue;
@@ -243,14 +245,16 @@ std::optional<Place> Codegen::earlyGlobalConstant(const QString &name)
                 // is defined in terms of itself).
                 PouInfo *const pou = std::exchange(m_pou, nullptr);
                 const PouInfo *const declaring = std::exchange(m_declaring, nullptr);
+                const QString pouName = std::exchange(m_pouName, owner);
                 const Type *type = resolveType(v.type);
                 bool reported = false;
                 const auto value = evalConstOnce(*v.init.value, true, reported);
                 const Value typed = value && type ? coerce(*value, type, v.location) : Value{};
                 m_pou = pou;
                 m_declaring = declaring;
+                m_pouName = pouName;
                 if (typed.kind != Value::Kind::Constant)
-                    return std::nullopt;
+                    return Place {}; // found, and its own message says why it has no value
                 Place p;
                 p.text = name;
                 p.kind = Place::Kind::Constant;
@@ -607,6 +611,10 @@ Value Codegen::read(const Place &p, bool mayFuse)
             instr(loads[p.type->size], t, p.operand);
         else
             instr(op::LoadN, t, p.operand, 0, p.type->size);
+        // A string reached through an address (VAR_IN_OUT, a pointer) may be longer than its
+        // declared type: the copy is of the declared size, so its capacity is the declared one.
+        if (p.type->kind == TypeKind::String)
+            instr(op::Mov2, t, constantOperand(p.type, ConstValue {}));
         return operandValue(t, p.type);
     }
     case Place::Kind::Bit:
@@ -693,6 +701,13 @@ void Codegen::store(const Place &p, Value value, SourceLocation at)
             instr(typedOp(op::SetBit, vtOf(*p.type)), current.operand, materialize(v), 0, static_cast<std::uint32_t>(p.bit));
         else
             instr(op::StrMov, current.operand, materialize(v), 0, 0, p.type->wide ? 3 : 0);
+        if (p.type->kind == TypeKind::String) {
+            // The characters only: the string's own capacity stays (it may be larger than the
+            // declared one the copy had).
+            constexpr std::uint32_t header = 4;
+            instr(op::StoreN, offsetAddress(p.operand, header), current.operand + header, 0, p.type->size - header);
+            return;
+        }
         const std::uint16_t storeOp = p.type->size <= 8 && stores[p.type->size] != op::Nop ? stores[p.type->size] : std::uint16_t(op::StoreN);
         instr(storeOp, p.operand, current.operand, 0, p.type->size);
         return;

@@ -133,7 +133,9 @@ std::optional<Value> Codegen::pointerFunction(const QString &name, const std::ve
             return Value{};
         ConstValue c;
         c.kind = ConstValue::Kind::Int;
-        c.i = type->size;
+        // A string's size as CODESYS counts it, its characters and the NUL (ADR(s) + SIZEOF(s) is
+        // just past it); the capacity and length before them are not the program's.
+        c.i = isString(type) ? (type->capacity + 1) * (type->wide ? 2 : 1) : type->size;
         return constantValue(elem(Elem::LInt), c, true);
     }
     // __ISVALIDREF(r): whether the reference r refers to a variable.
@@ -171,7 +173,9 @@ void Codegen::referenceAssignment(const Stmt &s)
         return;
     }
     slot.type = elem(Elem::UDInt);
-    store(slot, operandValue(inOutAddress(target), elem(Elem::UDInt)), s.location);
+    // A reference to a string holds its characters' address, as ADR does (checkedTarget).
+    const std::uint32_t address = inOutAddress(target);
+    store(slot, operandValue(isString(target.type) ? offsetAddress(address, kStringHeader) : address, elem(Elem::UDInt)), s.location);
 }
 
 // Addresses compute as UDINT: p + n and p - n move by n bytes (CODESYS), p - q is their

@@ -6,6 +6,8 @@
 #include <QRegularExpression>
 #include <QStringDecoder>
 
+#include <optional>
+
 namespace iec::interp::frontend {
 
 namespace {
@@ -43,8 +45,16 @@ void tidyLines(QString &text)
 
 SourceText decodeSourceFile(const QByteArray &bytes)
 {
-    QStringDecoder utf8(QStringDecoder::Utf8, QStringDecoder::Flag::Stateless);
     SourceText source;
+    // A byte order mark of UTF-16 or UTF-32 (Windows editors save so): that encoding.
+    if (const std::optional<QStringConverter::Encoding> marked = QStringConverter::encodingForData(bytes);
+        marked && *marked != QStringConverter::Utf8) {
+        QStringDecoder wide(*marked);
+        source.text = wide.decode(bytes);
+        tidyLines(source.text);
+        return source;
+    }
+    QStringDecoder utf8(QStringDecoder::Utf8, QStringDecoder::Flag::Stateless);
     source.text = utf8.decode(bytes);
     if (utf8.hasError()) {
         source.windows1252Line = firstLineNotUtf8(bytes);

@@ -5,9 +5,10 @@
 
 namespace iec::interp::frontend {
 
-// The text of an IEC source file (.st, .exp). UTF-8, with or without a byte order mark; bytes that
-// are not UTF-8 mean the file is in Windows-1252, the code page CoDeSys 2.3 and TwinCAT 2 write
-// their exports in (read as UTF-8, its umlauts would become U+FFFD and be lost on saving). Lines
+// The text of an IEC source file (.st, .exp). UTF-8, with or without a byte order mark (UTF-16 and
+// UTF-32 with theirs); bytes that are not UTF-8 mean the file is in Windows-1252, the code page
+// CoDeSys 2.3 and TwinCAT 2 write their exports in (read as UTF-8, its umlauts would become U+FFFD
+// and be lost on saving; a file mixing both is read as Windows-1252 throughout). Lines
 // end in \n (a project file keeps no \r). The lines of CoDeSys 2.3's export markers, such as
 // (* @END_DECLARATION := '0' *), are left empty: they say where the export's parts are, not what
 // the program does, and would otherwise start each body (lines keep their numbers).

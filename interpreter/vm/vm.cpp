@@ -86,7 +86,8 @@ FaultKind Vm::execute(std::uint32_t entry, bool resuming)
             else
                 dst.p[4 + i] = static_cast<std::uint8_t>(m_scratch[size_t(i)]);
         }
-        if (n < dst.capacity()) { // the NUL that ends it (StringRef)
+        // The NUL that ends it (StringRef); a full string has room for it too, unless its header lies.
+        if (dst.p + 4 + (n + 1) * (dst.wide ? 2 : 1) <= dst.end) {
             if (dst.wide)
                 store<char16_t>(dst.p + 4 + 2 * n, 0);
             else
@@ -242,8 +243,9 @@ FaultKind Vm::execute(std::uint32_t entry, bool resuming)
             })
             IEC_ALL_VT(FromStr, {
                 const StringRef s = str(ip->b, (ip->aux & 1) != 0);
-                QString text(s.length(), Qt::Uninitialized);
-                for (int k = 0; k < s.length(); ++k)
+                const int length = s.length(); // a scan for the NUL: once
+                QString text(length, Qt::Uninitialized);
+                for (int k = 0; k < length; ++k)
                     text[k] = QChar(s.at(k));
                 SET(fromText<Ty>(text.trimmed(), static_cast<TextFormat>(ip->aux >> 1)));
             })
@@ -451,12 +453,13 @@ FaultKind Vm::execute(std::uint32_t entry, bool resuming)
         L_StrCmp: {
             const bool wide = ip->aux != 0;
             const StringRef b = str(ip->b, wide), c = str(ip->c, wide);
-            const int n = std::min(b.length(), c.length());
+            const int bLength = b.length(), cLength = c.length();
+            const int n = std::min(bLength, cLength);
             int result = 0;
             for (int k = 0; k < n && result == 0; ++k)
                 result = b.at(k) < c.at(k) ? -1 : b.at(k) > c.at(k) ? 1 : 0;
             if (result == 0)
-                result = b.length() < c.length() ? -1 : b.length() > c.length() ? 1 : 0;
+                result = bLength < cLength ? -1 : bLength > cLength ? 1 : 0;
             store<std::int32_t>(P(ip->a), result);
             NEXT();
         }
@@ -507,11 +510,12 @@ FaultKind Vm::execute(std::uint32_t entry, bool resuming)
         L_StrReplace: {
             const bool wide = ip->aux != 0;
             const StringRef s = str(ip->b, wide), with = str(ip->c, wide);
-            const int from = static_cast<int>(clampInt(readInt(ip->d + 4) - 1, 0, s.length()));
-            const int len = static_cast<int>(clampInt(readInt(ip->d), 0, s.length() - from));
+            const int length = s.length();
+            const int from = static_cast<int>(clampInt(readInt(ip->d + 4) - 1, 0, length));
+            const int len = static_cast<int>(clampInt(readInt(ip->d), 0, length - from));
             int n = copyInto(s, 0, from, 0);
             n = copyInto(with, 0, with.length(), n);
-            n = copyInto(s, from + len, s.length() - from - len, n);
+            n = copyInto(s, from + len, length - from - len, n);
             if (!writeString(str(ip->a, wide), n))
                 FAULT(FaultKind::StringOverflow);
             NEXT();
@@ -519,12 +523,13 @@ FaultKind Vm::execute(std::uint32_t entry, bool resuming)
         L_StrFind: {
             const bool wide = ip->aux != 0;
             const StringRef s = str(ip->b, wide), what = str(ip->c, wide);
+            const int length = s.length(), whatLength = what.length(); // scans for the NUL: once
             int found = 0;
-            for (int k = 0; what.length() > 0 && k + what.length() <= s.length() && found == 0; ++k) {
+            for (int k = 0; whatLength > 0 && k + whatLength <= length && found == 0; ++k) {
                 int m = 0;
-                while (m < what.length() && s.at(k + m) == what.at(m))
+                while (m < whatLength && s.at(k + m) == what.at(m))
                     ++m;
-                if (m == what.length())
+                if (m == whatLength)
                     found = k + 1;
             }
             store<std::int32_t>(P(ip->a), found);
@@ -536,8 +541,9 @@ FaultKind Vm::execute(std::uint32_t entry, bool resuming)
         L_Log: {
             if (log.size() < kMaxLog) {
                 const StringRef text = str(ip->b, false);
+                const int length = text.length();
                 QString message;
-                for (int i = 0; i < text.length(); ++i)
+                for (int i = 0; i < length; ++i)
                     message += QChar(text.at(i));
                 log.push_back({load<std::int16_t>(P(ip->a)), message});
             }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
+#include <cstdint>
 #include <cstring>
 #include <string>
 #include <string_view>
@@ -112,13 +113,17 @@ qsizetype mendNulReference(QByteArray &bytes, qsizetype at)
     if (hex)
         ++digits;
     qsizetype end = digits;
-    bool zero = true;
+    // As pugixml adds the digits up: in 32 bits that wrap, so &#4294967296; is a NUL too. Such a
+    // value ends in an even digit (in hexadecimal 0), so one more in the last digit makes it 1.
+    std::uint32_t value = 0;
     while (end < bytes.size() && (hex ? std::isxdigit(uchar(bytes[end])) : std::isdigit(uchar(bytes[end])))) {
-        zero = zero && bytes[end] == '0';
+        const char c = bytes[end];
+        const std::uint32_t digit = std::isdigit(uchar(c)) ? std::uint32_t(c - '0') : std::uint32_t((c | 0x20) - 'a' + 10);
+        value = value * (hex ? 16u : 10u) + digit;
         ++end;
     }
-    if (end > digits && end < bytes.size() && bytes[end] == ';' && zero)
-        bytes[end - 1] = '1';
+    if (end > digits && end < bytes.size() && bytes[end] == ';' && value == 0)
+        bytes[end - 1] = char(bytes[end - 1] + 1);
     return end;
 }
 
@@ -241,19 +246,27 @@ void keepFirstOfRepeatedAttributes(pugi::xml_document &document, ReadContext &co
         if (!node.first_attribute() || node.first_attribute() == node.last_attribute())
             return true;
         names.clear();
-        for (pugi::xml_attribute attribute = node.first_attribute(); attribute;) {
-            const pugi::xml_attribute next = attribute.next_attribute();
+        std::vector<std::pair<std::string, std::string>> kept;
+        bool repeated = false;
+        for (pugi::xml_attribute attribute : node.attributes()) {
             const QString name = QString::fromUtf8(attribute.name());
             if (names.contains(name)) {
-                context.report(Diagnostic::Severity::Warning, node,
-                    QCoreApplication::translate("iec::model::plcopen::Reader",
-                        "<%1> has the attribute %2 more than once; the first is kept.")
-                        .arg(QString::fromUtf8(node.name()), name));
-                node.remove_attribute(attribute);
+                if (!repeated)
+                    context.report(Diagnostic::Severity::Warning, node,
+                        QCoreApplication::translate("iec::model::plcopen::Reader",
+                            "<%1> has the attribute %2 more than once; the first is kept.")
+                            .arg(QString::fromUtf8(node.name()), name));
+                repeated = true;
             } else {
                 names.insert(name);
+                kept.emplace_back(attribute.name(), attribute.value());
             }
-            attribute = next;
+        }
+        // Removing one attribute walks the list: all go, and the first of each comes back.
+        if (repeated) {
+            node.remove_attributes();
+            for (const auto &[name, value] : kept)
+                node.append_attribute(name.c_str()).set_value(value.c_str());
         }
         return true;
     });

@@ -163,6 +163,16 @@ void TestDialect::pointers_data()
     // it still ends at its NUL (this read outside the image before; found with OSCAT's UPPERCASE).
     expr("a string header overwritten through a pointer", "s : STRING(4) := 'ab'; t : STRING(80); p : POINTER TO WORD; n : INT;",
          "p := ADR(s) - 4; p^ := 16#FFFF; p := p + 2; p^ := 16#FFFF; n := LEN(s); t := CONCAT(s, 'c');", "n=2; t='abc'");
+    // A reference holds the characters' address too; what it refers to is the whole string.
+    expr("a reference to a string", "s : STRING(10) := 'abc'; r : REFERENCE TO STRING(10); p : POINTER TO BYTE; n : INT;",
+         "r REF= s; r := CONCAT(r, 'd'); p := ADR(r); n := LEN(r);", "s='abcd'; n=4");
+    // A STRING(80) passed to a VAR_IN_OUT STRING(10) is read and written through its first 10
+    // characters; its own capacity stays 80.
+    row("a longer string through a shorter in-out", "FUNCTION Put : BOOL\nVAR_IN_OUT s : STRING(10); END_VAR\nVAR_INPUT t : STRING(20); END_VAR\n"
+                                                    "s := t; Put := TRUE;\nEND_FUNCTION\n"
+                                                    "PROGRAM Main VAR long : STRING(80) := 'abcdefghijklmnopqrstuvwxyz'; ok : BOOL; n : INT; END_VAR\n"
+                                                    "ok := Put(s := long, t := 'xyz'); n := LEN(long); long := CONCAT(long, '0123456789');\nEND_PROGRAM",
+        {"=> long='xyz0123456789'; n=3"});
     expr("a pointer to a string", "s : STRING(10) := 'abc'; t : STRING(10); ps : POINTER TO STRING(10);",
          "ps := ADR(s); t := ps^; ps^ := 'xy';", "s='xy'; t='abc'");
     expr("ref_to of edition 3", "r : REF_TO INT; x : INT := 4; y : INT;", "r := REF(x); y := r^ + 1;", "y=5");
@@ -235,7 +245,7 @@ void TestDialect::oscatForms_data()
                                             "TYPE Buf : ARRAY[0..N] OF INT; END_TYPE\n"
                                             "FUNCTION F : INT\nVAR_INPUT s : STRING(LEN_S); END_VAR\nF := LEN(s) + SIZEOF(s);\nEND_FUNCTION\n"
                                             "PROGRAM Main\nVAR b : Buf; x : INT; n : INT; END_VAR\nx := F('abc'); n := SIZEOF(b);\nEND_PROGRAM",
-        {"=> x=15; n=8"}); // LEN 3 + SIZEOF 12 (capacity, length, 6 characters and the NUL, even)
+        {"=> x=10; n=8"}); // LEN 3 + SIZEOF 7 (6 characters and the NUL, as CODESYS counts)
     // CoDeSys 2.3 writes an array's initial values without brackets.
     expr("array values without brackets", "a : ARRAY[0..5] OF INT := 1, 2, 3(7); b : ARRAY[1..3] OF BOOL := TRUE, FALSE, TRUE; c : INT := MAX(1, 2);",
          "", "a=[1, 2, 7, 7, 7, 0]; b=[TRUE, FALSE, TRUE]; c=2");

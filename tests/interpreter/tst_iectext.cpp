@@ -281,6 +281,8 @@ void TestIecText::sourceFilesAreUtf8OrWindows1252_data()
                                   << QStringLiteral("(* ok *)\nx := 'Störung €';\n(* \u201Cquoted\u201D *)") << 2;
     QTest::newRow("bytes windows-1252 leaves undefined") << QByteArray("\x81\x8D") << QStringLiteral("\u0081\u008D") << 1;
     QTest::newRow("empty") << QByteArray() << QString() << 0;
+    QTest::newRow("utf-16 with its byte order mark") << QByteArray("\xFF\xFEx\0 \0:\0=\0 \0'\0\xD6\0'\0;\0", 20)
+                                                     << QStringLiteral("x := 'Ö';") << 0;
     QTest::newRow("line ends and export markers")
         << QByteArray("(* @NESTEDCOMMENTS := 'Yes' *)\r\nPROGRAM P\r\nVAR x : INT; END_VAR\r\n  (* @END_DECLARATION := '0' *)\r\n"
                       "x := 1; (* @KEPT := 'inline' *)\rEND_PROGRAM")

@@ -342,6 +342,9 @@ void TestPlcopenRobustness::charactersXmlDoesNotAllowAreLeftOutWhenRead_data()
     QTest::newRow("reference to NUL") << QByteArray("n") << QByteArray("a := 1;&#0; b := 2;") << "n" << text << 1 << 2;
     QTest::newRow("hexadecimal reference to NUL")
         << QByteArray("n") << QByteArray("a := 1;&#x0000; b := 2;") << "n" << text << 1 << 2;
+    // pugixml adds a reference's digits up in 32 bits that wrap: these are NULs too.
+    QTest::newRow("references that wrap to NUL")
+        << QByteArray("n") << QByteArray("a := 1;&#4294967296;&#x100000000; b := 2;") << "n" << text << 2 << 2;
     QTest::newRow("raw NUL") << QByteArray("n") << QByteArray("a := 1;\0 b := 2;", 16) << "n" << text << 1 << 2;
     QTest::newRow("raw escape") << QByteArray("n") << QByteArray("a := 1;\x1b b := 2;") << "n" << text << 1 << 2;
     QTest::newRow("U+FFFF and U+FFFE")
