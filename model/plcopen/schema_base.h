@@ -232,9 +232,7 @@ template<class A, class V> void Schema<DataType>::describe(A &a, V &type)
                     .arg(QString::fromUtf8(localName(a.node()))));
             return;
         }
-        // <IN:/> has an empty local name: the whole name is kept, so it is written as it was read
-        // (found by fuzz_plcopen).
-        const char *name = *localName(node) ? localName(node) : node.name();
+        const char *name = localName(node);
         a.markKnown(name);
         auto is = [name](const char *candidate) { return std::strcmp(name, candidate) == 0; };
         if (std::ranges::any_of(kElementaryTypeNames, is)) {
@@ -256,12 +254,15 @@ template<class A, class V> void Schema<DataType>::describe(A &a, V &type)
         } else if (is("pointer")) {
             a.read(node, type.kind.template emplace<PointerType>());
         } else {
-            // A type name the XSD does not know (LTIME, vendor types): keep it as an elementary name.
-            type.kind = ElementaryType {QString::fromUtf8(name)};
+            // A type name the XSD does not know (LTIME, vendor types): keep it as an elementary name,
+            // without its namespace prefix. A local name that is empty or has a ':' itself (<IN:/>,
+            // <a::B/>) is kept whole, else each round would lose a part (found by fuzz_plcopen).
+            const char *kept = *name && !std::strchr(name, ':') ? name : node.name();
+            type.kind = ElementaryType {QString::fromUtf8(kept)};
             a.context().report(Diagnostic::Severity::Warning, node,
                 QCoreApplication::translate("iec::model::plcopen::Reader",
                     "The data type <%1> is not in the PLCopen schema; it is kept by name.")
-                    .arg(QString::fromUtf8(name)));
+                    .arg(QString::fromUtf8(kept)));
         }
     } else {
         std::visit(
