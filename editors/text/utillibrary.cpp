@@ -97,14 +97,14 @@ StdPou fromDefinition(const interp::ast::Pou &pou, const UtilEntry &entry)
 
 QList<StdPou> utilLibraryPous()
 {
-    using C = StdPou::Category;
     // Compiled inline (stdfunctions.cpp), so not among the definitions.
-    QList<StdPou> pous = {
-        {QStringLiteral("BCD_TO_INT"), StdPou::Kind::Function, C::BcdConversion, {{QStringLiteral("B"), QStringLiteral("BYTE")}},
-            {}, QStringLiteral("INT"), findEntry(QStringLiteral("BCD_TO_INT"))->description, QStringLiteral("Util")},
-        {QStringLiteral("INT_TO_BCD"), StdPou::Kind::Function, C::BcdConversion, {{QStringLiteral("I"), QStringLiteral("INT")}},
-            {}, QStringLiteral("BYTE"), findEntry(QStringLiteral("INT_TO_BCD"))->description, QStringLiteral("Util")},
+    const auto bcd = [](const QString &name, const QString &input, const QString &from, const QString &to) {
+        const UtilEntry *entry = findEntry(name);
+        return StdPou {name, StdPou::Kind::Function, entry->category, {{input, from}}, {}, to, entry->description,
+            QString::fromLatin1(entry->library)};
     };
+    QList<StdPou> pous = {bcd(QStringLiteral("BCD_TO_INT"), QStringLiteral("B"), QStringLiteral("BYTE"), QStringLiteral("INT")),
+        bcd(QStringLiteral("INT_TO_BCD"), QStringLiteral("I"), QStringLiteral("INT"), QStringLiteral("BYTE"))};
     for (const interp::ast::Pou &pou : interp::utilLibrary().pous) {
         if (const UtilEntry *entry = findEntry(pou.name))
             pous.append(fromDefinition(pou, *entry));

@@ -618,17 +618,14 @@ const std::vector<StdFunction> &table()
                          }});
         }
         // The virtual clock, for the standard timers.
-        t.push_back({"__SYSTIME", {}, false, [](Codegen &g, std::vector<Value> &, SourceLocation, const Place *) {
-                         const std::uint32_t out = g.temp(g.elem(Elem::Time));
-                         g.instr(op::Now, out);
-                         return g.operandValue(out, g.elem(Elem::Time));
-                     }});
-        // CoDeSys 2.3's TIME(): the time since the PLC started, here the virtual clock.
-        t.push_back({"TIME", {}, false, [](Codegen &g, std::vector<Value> &, SourceLocation, const Place *) {
-                         const std::uint32_t out = g.temp(g.elem(Elem::Time));
-                         g.instr(op::Now, out);
-                         return g.operandValue(out, g.elem(Elem::Time));
-                     }});
+        // CoDeSys 2.3's TIME() is the time since the PLC started: the same virtual clock.
+        const auto now = [](Codegen &g, std::vector<Value> &, SourceLocation, const Place *) {
+            const std::uint32_t out = g.temp(g.elem(Elem::Time));
+            g.instr(op::Now, out);
+            return g.operandValue(out, g.elem(Elem::Time));
+        };
+        t.push_back({"__SYSTIME", {}, false, now});
+        t.push_back({"TIME", {}, false, now});
         // Beremiz LOGGER's message (utillib.cpp): a statement, no value.
         t.push_back({"__LOG", {"LEVEL", "MSG"}, false, [](Codegen &g, std::vector<Value> &a, SourceLocation at, const Place *) {
                          const Value level = a[0].type->kind == TypeKind::Enum ? g.convertExplicit(a[0], g.elem(Elem::Int), at)
