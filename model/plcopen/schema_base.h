@@ -234,6 +234,7 @@ template<class A, class V> void Schema<DataType>::describe(A &a, V &type)
         }
         const char *name = localName(node);
         a.markKnown(name);
+        a.markRead(node);
         auto is = [name](const char *candidate) { return std::strcmp(name, candidate) == 0; };
         if (std::ranges::any_of(kElementaryTypeNames, is)) {
             type.kind = ElementaryType {QString::fromUtf8(name)};

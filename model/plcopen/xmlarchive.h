@@ -148,6 +148,7 @@ public:
     {
         markKnown(container);
         if (const pugi::xml_node node = firstChild(container)) {
+            markRead(node);
             XmlIn sub(node, m_context);
             sub.children(name, values.emplace());
             sub.finishWithoutExtras();
@@ -159,6 +160,7 @@ public:
     {
         markKnown(container);
         if (const pugi::xml_node node = firstChild(container)) {
+            markRead(node);
             XmlIn sub(node, m_context);
             sub.children(name, values);
             sub.finishWithoutExtras();
@@ -170,6 +172,7 @@ public:
     {
         markKnown(container);
         if (const pugi::xml_node node = firstChild(container)) {
+            markRead(node);
             XmlIn sub(node, m_context);
             sub.child(name, value);
             sub.finishWithoutExtras();
@@ -220,10 +223,14 @@ public:
     void finishWithoutExtras();
 
     void markKnown(const char *name) { m_knownChildren.push_back(name); }
+    // The child elements whose content went into the model. A child with a known name that was not
+    // read is a repeat of one the XSD allows once: finish() keeps it, like an unknown element.
+    void markRead(pugi::xml_node child) { m_readChildren.push_back(child.internal_object()); }
     [[nodiscard]] pugi::xml_node firstChild(const char *name) const;
 
     template<class T> void read(pugi::xml_node node, T &value)
     {
+        markRead(node);
         if (m_context.depth >= ReadContext::kMaxDepth) {
             m_context.report(Diagnostic::Severity::Error, node,
                 QCoreApplication::translate("iec::model::plcopen::Reader",
@@ -284,11 +291,13 @@ private:
     [[nodiscard]] bool isKnownChild(const char *name) const;
     [[nodiscard]] bool isKnownAttribute(const char *name) const;
     void collectUnknown(Extras *extras);
+    static QString unreadElementMessage(const char *name, const QString &parent, bool known, bool kept);
 
     pugi::xml_node m_node;
     ReadContext &m_context;
     std::vector<const char *> m_knownAttributes;
     std::vector<const char *> m_knownChildren;
+    std::vector<const pugi::xml_node_struct *> m_readChildren;
     std::vector<const char *> m_badAttributes; // present but unparsable: kept verbatim in Extras
     bool m_finished = false;
 };

@@ -51,17 +51,20 @@ pugi::xml_node XmlIn::firstChild(const char *name) const
 void XmlIn::text(const char *name, QString &value)
 {
     markKnown(name);
-    if (const pugi::xml_node node = firstChild(name))
+    if (const pugi::xml_node node = firstChild(name)) {
+        markRead(node);
         value = QString::fromUtf8(node.text().get());
-    else
+    } else
         reportMissing("element", name);
 }
 
 void XmlIn::text(const char *name, std::optional<QString> &value)
 {
     markKnown(name);
-    if (const pugi::xml_node node = firstChild(name))
+    if (const pugi::xml_node node = firstChild(name)) {
+        markRead(node);
         value = QString::fromUtf8(node.text().get());
+    }
 }
 
 void XmlIn::reportMissing(const char *what, const char *name)
@@ -119,25 +122,42 @@ void XmlIn::collectUnknown(Extras *extras)
                            "iec::model::plcopen::Reader", "Unknown attribute '%1' on <%2> is ignored.")
                              .arg(QString::fromUtf8(name), element));
     }
+    std::ranges::sort(m_readChildren);
+    auto wasRead
+        = [this](pugi::xml_node node) { return std::ranges::binary_search(m_readChildren, node.internal_object()); };
     QString anchor;
     for (pugi::xml_node node = m_node.first_child(); node; node = node.next_sibling()) {
         if (node.type() != pugi::node_element)
             continue;
         const char *name = localName(node);
-        if (isKnownChild(name)) {
+        const bool known = isKnownChild(name);
+        if (known && wasRead(node)) {
             anchor = QString::fromUtf8(name);
             continue;
         }
+        // A repeat of an element the XSD allows once is kept where it stood, after the first: written
+        // back in place, the same one is read first again (fuzz_plcopen found repeated <interface>s).
         if (extras)
             extras->elements.push_back({anchor, rawXml(node)});
-        m_context.report(Diagnostic::Severity::Warning, node,
-            extras
-                ? QCoreApplication::translate(
-                    "iec::model::plcopen::Reader", "Unknown element <%1> in <%2> is kept as it is.")
-                      .arg(QString::fromUtf8(name), element)
-                : QCoreApplication::translate("iec::model::plcopen::Reader", "Unknown element <%1> in <%2> is ignored.")
-                      .arg(QString::fromUtf8(name), element));
+        m_context.report(Diagnostic::Severity::Warning, node, unreadElementMessage(name, element, known, extras));
     }
+}
+
+QString XmlIn::unreadElementMessage(const char *name, const QString &parent, bool known, bool kept)
+{
+    const QString child = QString::fromUtf8(name);
+    if (known)
+        return kept ? QCoreApplication::translate("iec::model::plcopen::Reader",
+                   "<%1> in <%2> is more than the file format allows there; it is kept as it is, but not read.")
+                          .arg(child, parent)
+                    : QCoreApplication::translate("iec::model::plcopen::Reader",
+                        "<%1> in <%2> is more than the file format allows there; it is ignored.")
+                          .arg(child, parent);
+    return kept
+        ? QCoreApplication::translate("iec::model::plcopen::Reader", "Unknown element <%1> in <%2> is kept as it is.")
+              .arg(child, parent)
+        : QCoreApplication::translate("iec::model::plcopen::Reader", "Unknown element <%1> in <%2> is ignored.")
+              .arg(child, parent);
 }
 
 void XmlIn::finish(Extras &extras)
@@ -186,11 +206,13 @@ void XmlIn::addData(AddData &entries, bool required)
             reportMissing("element", "addData");
         return;
     }
+    markRead(addData);
     XmlIn list(addData, m_context);
     list.markKnown("data");
     for (pugi::xml_node data = addData.first_child(); data; data = data.next_sibling()) {
         if (data.type() != pugi::node_element || !hasLocalName(data, "data"))
             continue;
+        list.markRead(data);
         AddDataEntry &entry = entries.emplace_back();
         XmlIn entryIn(data, m_context);
         entryIn.attr("name", entry.name);

@@ -76,6 +76,8 @@ private Q_SLOTS:
     void charactersXmlDoesNotAllowAreLeftOutWhenRead_data();
     void charactersXmlDoesNotAllowAreLeftOutWhenRead();
     void charactersXmlDoesNotAllowAreNeverWritten();
+    void repeatedElementsAreKeptWhereTheyStood_data();
+    void repeatedElementsAreKeptWhereTheyStood();
 };
 
 void TestPlcopenRobustness::truncatedInputIsAnErrorWithALine()
@@ -426,6 +428,97 @@ void TestPlcopenRobustness::charactersXmlDoesNotAllowAreNeverWritten()
     QCOMPARE(read.project.contentHeader.name, QStringLiteral("Plant 2"));
     QCOMPARE(read.project.types.pous.front().documentation->text, QStringLiteral("Pasted text"));
     QCOMPARE(read.project.types.pous.front().body()->text(), QStringLiteral("a := 1; (* pasted  *)\nb := 2;"));
+}
+
+void TestPlcopenRobustness::repeatedElementsAreKeptWhereTheyStood_data()
+{
+    QTest::addColumn<QByteArray>("pouContent"); // the children of <pou name="P">, each on its own line
+    QTest::addColumn<QString>("readVariables"); // the variables of the interface that is read
+    QTest::addColumn<QString>("readText"); // the text of the body that is read
+    QTest::addColumn<QString>("warning"); // "line: message"
+    QTest::addColumn<QByteArrayList>("writtenOrder"); // strings that follow each other in the written file
+
+    const QByteArray interfaceA
+        = "<interface><localVars><variable name=\"A\"><type><BOOL/></type></variable></localVars></interface>\n";
+    const QByteArray interfaceB
+        = "<interface><localVars><variable name=\"B\"><type><INT/></type></variable></localVars></interface>\n";
+    const QByteArray bodyOne = "<body><ST><xhtml:p>A := TRUE;</xhtml:p></ST></body>\n";
+    const QString extraPou
+        = QStringLiteral("in <pou> is more than the file format allows there; it is kept as it is, but not read.");
+    QTest::newRow("a second interface after the first")
+        << interfaceA + interfaceB + bodyOne << QStringLiteral("A") << QStringLiteral("A := TRUE;")
+        << QStringLiteral("4:1: <interface> ") + extraPou << QByteArrayList {"name=\"A\"", "name=\"B\"", "A := TRUE;"};
+    // Bodies may repeat, so the second interface follows the last body when written.
+    QTest::newRow("a second interface after the body")
+        << interfaceA + bodyOne + interfaceB << QStringLiteral("A") << QStringLiteral("A := TRUE;")
+        << QStringLiteral("5:1: <interface> ") + extraPou << QByteArrayList {"name=\"A\"", "A := TRUE;", "name=\"B\""};
+    QTest::newRow("three interfaces among unknown elements")
+        << interfaceA + "<vendorFirst/>\n" + interfaceB + "<vendorSecond/>\n" + interfaceB + bodyOne
+        << QStringLiteral("A") << QStringLiteral("A := TRUE;")
+        << QStringLiteral("4:1: Unknown element <vendorFirst> in <pou> is kept as it is.\n5:1: <interface> ") + extraPou
+            + QStringLiteral("\n6:1: Unknown element <vendorSecond> in <pou> is kept as it is.\n7:1: <interface> ")
+            + extraPou
+        << QByteArrayList {"name=\"A\"", "<vendorFirst", "name=\"B\"", "<vendorSecond", "name=\"B\"", "A := TRUE;"};
+    QTest::newRow("a body with two texts")
+        << interfaceA + "<body><ST><xhtml:p>A := TRUE;</xhtml:p></ST>\n<ST><xhtml:p>A := FALSE;</xhtml:p></ST></body>\n"
+        << QStringLiteral("A") << QStringLiteral("A := TRUE;")
+        << QStringLiteral(
+               "5:1: <ST> in <body> is more than the file format allows there; it is kept as it is, but not read.")
+        << QByteArrayList {"A := TRUE;", "A := FALSE;"};
+    QTest::newRow("a variable with two types")
+        << QByteArray("<interface><localVars><variable name=\"A\"><type><BOOL/></type>\n<type><INT/></type>"
+                      "</variable></localVars></interface>\n")
+            + bodyOne
+        << QStringLiteral("A") << QStringLiteral("A := TRUE;")
+        << QStringLiteral("4:1: <type> in <variable> is more than the file format allows there; it is kept as it is, "
+                          "but not read.")
+        << QByteArrayList {"<BOOL", "<INT", "A := TRUE;"};
+}
+
+// A file may repeat an element the XSD allows once (fuzz_plcopen made one with three <interface>s).
+// The first is read; the others are kept where they stood, so the file written reads the same.
+void TestPlcopenRobustness::repeatedElementsAreKeptWhereTheyStood()
+{
+    QFETCH(QByteArray, pouContent);
+    QFETCH(QString, readVariables);
+    QFETCH(QString, readText);
+    QFETCH(QString, warning);
+    QFETCH(QByteArrayList, writtenOrder);
+    const QByteArray file
+        = "<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\" xmlns:xhtml=\"http://www.w3.org/1999/xhtml\">"
+          "<fileHeader companyName=\"c\" productName=\"p\" productVersion=\"1\" "
+          "creationDateTime=\"2020-01-01T00:00:00\"/><contentHeader name=\"n\"><coordinateInfo><fbd>"
+          "<scaling x=\"1\" y=\"1\"/></fbd><ld><scaling x=\"1\" y=\"1\"/></ld><sfc><scaling x=\"1\" "
+          "y=\"1\"/></sfc></coordinateInfo></contentHeader>\n<types><dataTypes/><pous><pou name=\"P\" "
+          "pouType=\"program\">\n"
+        + pouContent + "</pou></pous></types><instances><configurations/></instances></project>";
+
+    const plcopen::ReadResult read = plcopen::readProject(file);
+    QVERIFY2(read.ok, qPrintable(diagnosticsText(read.diagnostics)));
+    const Pou &pou = read.project.types.pous.front();
+    QStringList variables;
+    for (const VarList &list : pou.pouInterface->varLists)
+        for (const Variable &variable : list.variables)
+            variables << variable.name;
+    QCOMPARE(variables.join(QLatin1Char(' ')), readVariables);
+    QCOMPARE(pou.body()->text(), readText);
+    QCOMPARE(diagnosticsText(read.diagnostics), warning + QLatin1Char('\n'));
+
+    const QByteArray written = plcopen::writeProject(read.project);
+    qsizetype at = 0;
+    for (const QByteArray &next : writtenOrder) {
+        const qsizetype found = written.indexOf(next, at);
+        QVERIFY2(found >= 0,
+            qPrintable(QStringLiteral("%1 does not follow at %2 in\n%3")
+                           .arg(QString::fromUtf8(next))
+                           .arg(at)
+                           .arg(QString::fromUtf8(written))));
+        at = found + next.size();
+    }
+    const plcopen::ReadResult again = plcopen::readProject(written);
+    QCOMPARE(diagnosticsText(again.diagnostics).count(QStringLiteral("more than the file format allows")),
+        warning.count(QStringLiteral("more than the file format allows")));
+    QCOMPARE(firstDifference(read.project, again.project), QString());
 }
 
 QTEST_GUILESS_MAIN(TestPlcopenRobustness)
