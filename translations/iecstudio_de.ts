@@ -6641,6 +6641,18 @@ Automatisch gespeichert: %2</translation>
             <source>The file is not UTF-8: it was read as Windows-1252, the code page CoDeSys 2.3 writes, so that its umlauts and other special characters are kept.</source>
             <translation>Die Datei ist nicht in UTF-8: Sie wurde als Windows-1252 gelesen, die Codepage, in der CoDeSys 2.3 schreibt, damit ihre Umlaute und anderen Sonderzeichen erhalten bleiben.</translation>
         </message>
+        <message>
+            <source>%1 is a variable, not a constant: it has no value before the program runs.</source>
+            <translation>%1 ist eine Variable, keine Konstante: Sie hat keinen Wert, bevor das Programm läuft.</translation>
+        </message>
+        <message>
+            <source>declare it in VAR CONSTANT with an initial value</source>
+            <translation>deklarieren Sie sie in VAR CONSTANT mit einem Anfangswert</translation>
+        </message>
+        <message>
+            <source>CoDeSys 2.3 exported this %1 body in its own graphical form, which IEC Studio does not read; it is kept below as a comment. Export the POU from CoDeSys as PLCopen XML to open it as a diagram.</source>
+            <translation>CoDeSys 2.3 hat diesen %1-Rumpf in seiner eigenen grafischen Form exportiert, die IEC Studio nicht liest; er bleibt unten als Kommentar erhalten. Exportieren Sie den Baustein aus CoDeSys als PLCopen XML, um ihn als Diagramm zu öffnen.</translation>
+        </message>
     </context>
     <context>
         <name>iec::interp::Condition</name>
@@ -7086,6 +7098,14 @@ Automatisch gespeichert: %2</translation>
         <message>
             <source>&lt;%1&gt; has the attribute %2 more than once; the first is kept.</source>
             <translation>&lt;%1&gt; hat das Attribut %2 mehrmals; das erste wird behalten.</translation>
+        </message>
+        <message>
+            <source>&lt;%1&gt; in &lt;%2&gt; is more than the file format allows there; it is kept as it is, but not read.</source>
+            <translation>&lt;%1&gt; in &lt;%2&gt; ist mehr, als das Dateiformat dort erlaubt; es wird unverändert behalten, aber nicht gelesen.</translation>
+        </message>
+        <message>
+            <source>&lt;%1&gt; in &lt;%2&gt; is more than the file format allows there; it is ignored.</source>
+            <translation>&lt;%1&gt; in &lt;%2&gt; ist mehr, als das Dateiformat dort erlaubt; es wird ignoriert.</translation>
         </message>
     </context>
     <context>

@@ -6635,6 +6635,18 @@ Autosaved: %2</source>
             <source>The file is not UTF-8: it was read as Windows-1252, the code page CoDeSys 2.3 writes, so that its umlauts and other special characters are kept.</source>
             <translation>该文件不是 UTF-8 编码：已按 Windows-1252（CoDeSys 2.3 使用的代码页）读取，以保留其中的变音字母和其他特殊字符。</translation>
         </message>
+        <message>
+            <source>%1 is a variable, not a constant: it has no value before the program runs.</source>
+            <translation>%1 是变量，不是常量：程序运行之前它没有值。</translation>
+        </message>
+        <message>
+            <source>declare it in VAR CONSTANT with an initial value</source>
+            <translation>在 VAR CONSTANT 中声明它并给出初始值</translation>
+        </message>
+        <message>
+            <source>CoDeSys 2.3 exported this %1 body in its own graphical form, which IEC Studio does not read; it is kept below as a comment. Export the POU from CoDeSys as PLCopen XML to open it as a diagram.</source>
+            <translation>CoDeSys 2.3 以其自有的图形格式导出了此 %1 程序体，IEC Studio 无法读取；它作为注释保留在下方。请在 CoDeSys 中将该 POU 导出为 PLCopen XML，即可作为图表打开。</translation>
+        </message>
     </context>
     <context>
         <name>iec::interp::Condition</name>
@@ -7079,6 +7091,14 @@ Autosaved: %2</source>
         <message>
             <source>&lt;%1&gt; has the attribute %2 more than once; the first is kept.</source>
             <translation>&lt;%1&gt; 多次出现属性 %2；保留第一个。</translation>
+        </message>
+        <message>
+            <source>&lt;%1&gt; in &lt;%2&gt; is more than the file format allows there; it is kept as it is, but not read.</source>
+            <translation>&lt;%2&gt; 中的 &lt;%1&gt; 超出了文件格式在此处允许的数量；它按原样保留，但不会被读取。</translation>
+        </message>
+        <message>
+            <source>&lt;%1&gt; in &lt;%2&gt; is more than the file format allows there; it is ignored.</source>
+            <translation>&lt;%2&gt; 中的 &lt;%1&gt; 超出了文件格式在此处允许的数量；已忽略。</translation>
         </message>
     </context>
     <context>

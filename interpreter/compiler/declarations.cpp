@@ -98,10 +98,15 @@ const Type *Codegen::namedType(const QString &name, SourceLocation at, bool repo
             return nullptr;
         }
         m_typesInProgress.insert(k, true);
-        const QString savedPou = m_pouName;
-        m_pouName.clear();
+        // A type is declared outside every POU: the variables of the POU that uses it first are not
+        // in its scope (ARRAY[0..N] is the global N, even where that POU has an n of its own).
+        const QString savedPou = std::exchange(m_pouName, QString());
+        PouInfo *const savedCompiling = std::exchange(m_pou, nullptr);
+        const PouInfo *const savedDeclaring = std::exchange(m_declaring, nullptr);
         const Type *resolved = resolveType(decl->type, decl->name);
         m_pouName = savedPou;
+        m_pou = savedCompiling;
+        m_declaring = savedDeclaring;
         m_typesInProgress.remove(k);
         if (!resolved)
             return nullptr;

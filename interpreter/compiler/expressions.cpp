@@ -349,12 +349,21 @@ Place Codegen::namePlace(const Expr &expr, bool reportUnknown)
         && currentClass() >= 0)
         return selfPointer(name.compare(QLatin1String("SUPER"), Qt::CaseInsensitive) == 0, expr.location);
     if (m_declaring && m_declaring->ast) {
-        // While a POU's variables are laid out, its own CONSTANTs are known by their values.
+        // While a POU's variables are laid out, its own CONSTANTs are known by their values. Its own
+        // variables hide a global constant of the same name, and have no value yet.
         for (const VarSection &section : m_declaring->ast->sections) {
-            if (!section.constant)
+            if (section.kind == VarKind::External || section.kind == VarKind::Global)
                 continue;
             for (const VarDecl &v : section.vars) {
-                if (v.name.compare(name, Qt::CaseInsensitive) != 0 || v.init.kind != Initializer::Kind::Expression)
+                if (v.name.compare(name, Qt::CaseInsensitive) != 0)
+                    continue;
+                if (!section.constant) {
+                    if (reportUnknown)
+                        error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "%1 is a variable, not a constant: it has no value before the program runs.").arg(name),
+                              QCoreApplication::translate("iec::interp::Compiler", "declare it in VAR CONSTANT with an initial value"));
+                    return {};
+                }
+                if (v.init.kind != Initializer::Kind::Expression)
                     continue;
                 const Type *type = resolveType(v.type);
                 bool reported = false;
@@ -390,6 +399,14 @@ Place Codegen::namePlace(const Expr &expr, bool reportUnknown)
     }
     if (const int pou = m_pouIndex.value(key(name), -1); pou >= 0 && m_pous[size_t(pou)].kind == PouKind::Program && m_pous[size_t(pou)].programInstances == 1)
         return programPlace(m_pous[size_t(pou)], name, expr.location); // PRG1.Out (CODESYS)
+    if (key(name) == QLatin1String("MAX_STRING_LENGTH")) { // TwinCAT's Tc2_System: T_MaxString's length
+        p.kind = Place::Kind::Constant;
+        p.type = elem(Elem::UDInt);
+        p.constant.kind = ConstValue::Kind::Int;
+        p.constant.i = 255;
+        p.readOnly = true;
+        return p;
+    }
     if (reportUnknown && !unusableVar(name)) {
         if (m_pouIndex.contains(key(name)))
             error(expr.location, QCoreApplication::translate("iec::interp::Compiler", "%1 is a POU, not a variable.").arg(name));

@@ -553,7 +553,8 @@ void Parser::arrayItem(Initializer &init)
 // (FACTS : ARRAY[0..12] OF DINT := 1, 1, 2, 6, ...; or := 10(0), 5;), which is read as [...].
 Initializer Parser::declarationInitializer()
 {
-    const bool bare = !isOp(u"[") && !isOp(u"(")
+    // An array of structures: := (x := 1, y := 2), (x := 3, y := 4);
+    const bool bare = !isOp(u"[")
         && ((!atEnd() && tok().kind == TokenKind::IntegerLiteral && isOp(u"(", 1)) || continuesWithComma());
     if (!bare)
         return initializer();
@@ -578,7 +579,7 @@ bool Parser::continuesWithComma() const
             --depth;
         else if (depth == 0 && isOp(u",", ahead))
             return true;
-        else if (depth < 0 || isOp(u";", ahead) || isOp(u":=", ahead)
+        else if (depth < 0 || isOp(u";", ahead) || (depth == 0 && isOp(u":=", ahead))
                  || (tok(ahead).kind == TokenKind::Keyword && text(ahead).startsWith(u"END_", Qt::CaseInsensitive)))
             return false;
     }

@@ -41,6 +41,37 @@ void tidyLines(QString &text)
     text.replace(marker, QString());
 }
 
+// CoDeSys 2.3 exports an LD, FBD, CFC or SFC body as its own graphical form (_LD_BODY, _NETWORKS : 2,
+// _LD_CONTACT, ...), which is not IEC text. Each such body is turned into a comment, line by line so
+// that the file keeps its line numbers and the POU keeps the content, headed by an {error} pragma:
+// the parser reports it at the body, under the POU's name, and reads the rest of the file.
+void commentOutGraphicalBodies(QString &text)
+{
+    if (!text.contains(QLatin1String("_BODY")))
+        return;
+    static const QRegularExpression start(QStringLiteral(R"(^[ \t]*_([A-Z]+)_BODY[ \t]*$)"));
+    static const QRegularExpression end(
+        QStringLiteral(R"(^[ \t]*END_(PROGRAM|FUNCTION_BLOCK|FUNCTION|ACTION|TRANSITION|METHOD|PROPERTY)[ \t;]*$)"));
+    QStringList lines = text.split(QLatin1Char('\n'));
+    bool inside = false;
+    for (QString &line : lines) {
+        if (inside && end.match(line).hasMatch()) {
+            inside = false;
+        } else if (inside) {
+            line.prepend(QLatin1String("// "));
+        } else if (const QRegularExpressionMatch match = start.match(line); match.hasMatch()) {
+            inside = true;
+            QString message = QCoreApplication::translate("iec::interp::Compiler",
+                "CoDeSys 2.3 exported this %1 body in its own graphical form, which IEC Studio does not read; it is kept "
+                "below as a comment. Export the POU from CoDeSys as PLCopen XML to open it as a diagram.")
+                                  .arg(match.captured(1));
+            message.replace(QLatin1Char('}'), QLatin1Char(')')).remove(QLatin1Char('\''));
+            line = QStringLiteral("{error '%1'} // %2").arg(message, line.trimmed());
+        }
+    }
+    text = lines.join(QLatin1Char('\n'));
+}
+
 } // namespace
 
 SourceText decodeSourceFile(const QByteArray &bytes)
@@ -52,6 +83,7 @@ SourceText decodeSourceFile(const QByteArray &bytes)
         QStringDecoder wide(*marked);
         source.text = wide.decode(bytes);
         tidyLines(source.text);
+        commentOutGraphicalBodies(source.text);
         return source;
     }
     QStringDecoder utf8(QStringDecoder::Utf8, QStringDecoder::Flag::Stateless);
@@ -66,6 +98,7 @@ SourceText decodeSourceFile(const QByteArray &bytes)
         source.text.remove(0, 1);
     }
     tidyLines(source.text);
+    commentOutGraphicalBodies(source.text);
     return source;
 }
 

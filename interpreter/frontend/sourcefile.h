@@ -11,7 +11,9 @@ namespace iec::interp::frontend {
 // and be lost on saving; a file mixing both is read as Windows-1252 throughout). Lines
 // end in \n (a project file keeps no \r). The lines of CoDeSys 2.3's export markers, such as
 // (* @END_DECLARATION := '0' *), are left empty: they say where the export's parts are, not what
-// the program does, and would otherwise start each body (lines keep their numbers).
+// the program does, and would otherwise start each body (lines keep their numbers). A body CoDeSys 2.3
+// exported in its graphical form (_LD_BODY, _FBD_BODY, ...) becomes a comment headed by an
+// {error '...'} pragma, so that compiling it says why instead of failing on its first line.
 struct SourceText {
     QString text;
     int windows1252Line = 0; // the first line that is not UTF-8 (1-based); 0: the file is UTF-8

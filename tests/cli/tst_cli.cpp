@@ -31,6 +31,7 @@ private Q_SLOTS:
     void check();
     void checkNamesGraphicalPousOfTheCorpus();
     void codesysExportInWindows1252Runs();
+    void codesysGraphicalBodyIsNamed();
     void processImageThroughSetAndWatch_data();
     void processImageThroughSetAndWatch();
     void loggerWritesToStderr();
@@ -442,6 +443,27 @@ void TestCli::codesysExportInWindows1252Runs()
         QStringLiteral("PLC_PRG.Meldung"), QStringLiteral("--watch"), QStringLiteral("PLC_PRG.n")});
     QCOMPARE(run.exitCode, 0);
     QCOMPARE(run.out, QStringLiteral("PLC_PRG.Meldung = 'Störung €'\nPLC_PRG.n = 9\n"));
+}
+
+// CoDeSys 2.3 exports LD, FBD, CFC and SFC bodies in a graphical form of its own: one error at such a
+// body, naming its POU, and the POUs beside it are still read.
+void TestCli::codesysGraphicalBodyIsNamed()
+{
+    QTemporaryDir dir;
+    const QString path = writeFile(dir, QStringLiteral("EXPORT.EXP"),
+        QStringLiteral("(* @NESTEDCOMMENTS := 'Yes' *)\r\n(* @PATH := '' *)\r\nPROGRAM LdProg\r\nVAR\r\n\ta : BOOL;\r\n\tx : BOOL;\r\nEND_VAR\r\n"
+        "(* @END_DECLARATION := '0' *)\r\n_LD_BODY\r\n_NETWORKS : 1\r\n_NETWORK\r\n\r\n_COMMENT\r\n''\r\n_END_COMMENT\r\n"
+        "_LD_ASSIGN\r\n_LD_CONTACT\r\na\r\n_EXPRESSION\r\n_POSITIV\r\n_EXPRESSION\r\n_POSITIV\r\n\r\nENABLELIST : 0\r\n"
+        "ENABLELIST_END\r\n_OUTPUTS : 1\r\n_OUTPUT\r\n_POSITIV\r\n_NO_SET\r\nx\r\nEND_PROGRAM\r\n\r\n"
+        "(* @NESTEDCOMMENTS := 'Yes' *)\r\nPROGRAM PLC_PRG\r\nVAR\r\n\tn : INT;\r\nEND_VAR\r\n"
+        "(* @END_DECLARATION := '0' *)\r\nn := n + 1;\r\nn := n + ;\r\nEND_PROGRAM\r\n"));
+    const Result checked = cli({QStringLiteral("check"), path});
+    QCOMPARE(checked.exitCode, 1);
+    QCOMPARE(checked.out,
+        path + QStringLiteral(":LdProg:9:1: error: CoDeSys 2.3 exported this LD body in its own graphical form, which IEC "
+                              "Studio does not read; it is kept below as a comment. Export the POU from CoDeSys as PLCopen "
+                              "XML to open it as a diagram.\n")
+            + path + QStringLiteral(":PLC_PRG:40:10: error: Expected a value, a variable or a function call but found ';'.\n"));
 }
 
 void TestCli::checkNamesGraphicalPousOfTheCorpus()

@@ -240,6 +240,11 @@ void TestDialect::oscatForms_data()
     // TwinCAT's T_MaxString and the pointer-sized integers of CODESYS 3.5 and TwinCAT.
     expr("vendor built-in types", "s : T_MaxString; x : __XINT := -5; u : UXINT; w : XWORD; n : INT;",
          "s := 'abc'; n := LEN(s); u := 7; w := 16#FF;", "n=3; x=-5; u=7; w=255");
+    // TwinCAT's MAX_STRING_LENGTH (Tc2_System), unless the project declares its own.
+    expr("twincat string length constant", "m : UDINT; b : ARRAY[0..MAX_STRING_LENGTH] OF BYTE; n : UDINT;",
+         "m := MAX_STRING_LENGTH; n := SIZEOF(b);", "m=255; n=256");
+    row("own max string length", "VAR_GLOBAL CONSTANT MAX_STRING_LENGTH : INT := 80; END_VAR\nPROGRAM Main VAR m : INT; END_VAR\nm := MAX_STRING_LENGTH;\nEND_PROGRAM",
+        {"=> m=80"});
     // Global constants size arrays and strings, in types and in POUs (OSCAT: STRING(STRING_LENGTH)).
     row("global constants in declarations", "VAR_GLOBAL CONSTANT\nN : INT := 3;\nLEN_S : INT := N * 2;\nEND_VAR\n"
                                             "TYPE Buf : ARRAY[0..N] OF INT; END_TYPE\n"
@@ -249,6 +254,9 @@ void TestDialect::oscatForms_data()
     // CoDeSys 2.3 writes an array's initial values without brackets.
     expr("array values without brackets", "a : ARRAY[0..5] OF INT := 1, 2, 3(7); b : ARRAY[1..3] OF BOOL := TRUE, FALSE, TRUE; c : INT := MAX(1, 2);",
          "", "a=[1, 2, 7, 7, 7, 0]; b=[TRUE, FALSE, TRUE]; c=2");
+    row("array of structures without brackets", "TYPE P : STRUCT x : INT; y : INT; END_STRUCT END_TYPE\n"
+                                                "PROGRAM Main VAR a : ARRAY[1..3] OF P := (x := 1, y := 2), (x := 3), 1((y := 9)); p : P := (x := 4); END_VAR\nEND_PROGRAM",
+        {"=> a=[(x := 1, y := 2), (x := 3, y := 0), (x := 0, y := 9)]; p=(x := 4, y := 0)"});
     // A STRING holds Windows-1252 (CODESYS's code page): € is one byte.
     expr("euro sign in a string", "s : STRING(10) := 'Öl €'; n : INT;", "n := LEN(s);", "n=4; s='Öl €'");
 }

@@ -287,6 +287,18 @@ void TestIecText::sourceFilesAreUtf8OrWindows1252_data()
         << QByteArray("(* @NESTEDCOMMENTS := 'Yes' *)\r\nPROGRAM P\r\nVAR x : INT; END_VAR\r\n  (* @END_DECLARATION := '0' *)\r\n"
                       "x := 1; (* @KEPT := 'inline' *)\rEND_PROGRAM")
         << QStringLiteral("\nPROGRAM P\nVAR x : INT; END_VAR\n\nx := 1; (* @KEPT := 'inline' *)\nEND_PROGRAM") << 0;
+    // A body in CoDeSys 2.3's graphical export form becomes a comment under an {error} pragma, up to
+    // the end of its POU; a name that only starts like an end (END_X) does not end it.
+    const QString notRead = QStringLiteral("{error 'CoDeSys 2.3 exported this %1 body in its own graphical form, which IEC "
+                                           "Studio does not read; it is kept below as a comment. Export the POU from "
+                                           "CoDeSys as PLCopen XML to open it as a diagram.'} // _%1_BODY");
+    QTest::newRow("graphical bodies")
+        << QByteArray("PROGRAM L\r\nVAR x : BOOL; END_VAR\r\n_LD_BODY\r\n_NETWORKS : 1\r\n_LD_CONTACT\r\nEND_X\r\nEND_PROGRAM\r\n"
+                      "FUNCTION_BLOCK F\r\n  _FBD_BODY  \r\n_ASSIGN\r\n  END_FUNCTION_BLOCK\r\nPROGRAM S\r\nx := 1;\r\nEND_PROGRAM")
+        << QStringLiteral("PROGRAM L\nVAR x : BOOL; END_VAR\n") + notRead.arg(QStringLiteral("LD"))
+            + QStringLiteral("\n// _NETWORKS : 1\n// _LD_CONTACT\n// END_X\nEND_PROGRAM\nFUNCTION_BLOCK F\n")
+            + notRead.arg(QStringLiteral("FBD")) + QStringLiteral("\n// _ASSIGN\n  END_FUNCTION_BLOCK\nPROGRAM S\nx := 1;\nEND_PROGRAM")
+        << 0;
 }
 
 void TestIecText::sourceFilesAreUtf8OrWindows1252()

@@ -95,6 +95,9 @@ void TestSemantics::diagnostics_data()
         "Main:4:1: error: The value 101 is outside the range 0..100 of Percent.");
     row("action with arguments", "PROGRAM Main\nVAR n : INT; END_VAR\nReset(1);\nACTION Reset:\nn := 0;\nEND_ACTION\nEND_PROGRAM",
         "Main:3:1: error: The action Main.Reset takes no arguments.");
+    // A POU's own variable hides the global constant of its name, and has no value while it is laid out.
+    row("a variable as an array bound", "VAR_GLOBAL CONSTANT N : INT := 3; END_VAR\nPROGRAM Main\nVAR N : INT := 5; a : ARRAY[0..N] OF INT; END_VAR\na[0] := 1;\nEND_PROGRAM",
+        "Main:3:32: error: N is a variable, not a constant: it has no value before the program runs. (hint: declare it in VAR CONSTANT with an initial value)");
     row("program selection", "PROGRAM A\nEND_PROGRAM\nPROGRAM B\nEND_PROGRAM\nCONFIGURATION C\nTASK T(INTERVAL := T#10ms);\nPROGRAM P WITH T : Nope;\nEND_CONFIGURATION",
         "C:7:9: error: There is no PROGRAM called Nope.");
 }
