@@ -79,12 +79,15 @@ void repairDateTime(pugi::xml_node header, ReadContext &context)
             .arg(QString::fromStdString(value), QString::fromStdString(mended)));
 }
 
-// UTF-16 and UTF-32 (with or without a byte order mark) have NUL bytes in every character; pugixml
-// converts them, and their NULs are not looked for.
+// UTF-16 and UTF-32 have NUL bytes in every character; pugixml converts them, and their NULs are
+// not looked for. The test is pugixml's own guess (a byte order mark, or '<' in the first one, two
+// or four bytes), so that a UTF-8 file that merely starts with a NUL still has it mended.
 bool isWideEncoding(const QByteArray &bytes)
 {
-    return bytes.size() >= 2
-        && (bytes.startsWith("\xFE\xFF") || bytes.startsWith("\xFF\xFE") || bytes[0] == '\0' || bytes[1] == '\0');
+    const QByteArrayView start = QByteArrayView(bytes).first(std::min<qsizetype>(bytes.size(), 4));
+    return start.startsWith("\xFE\xFF") || start.startsWith("\xFF\xFE") || start.startsWith(QByteArrayView("\0<", 2))
+        || start.startsWith(QByteArrayView("<\0", 2)) || start.startsWith(QByteArrayView("\0\0\0<", 4))
+        || start.startsWith(QByteArrayView("\0\0\xFE\xFF", 4));
 }
 
 // The end of the markup that starts at `at` and holds no character references (a CDATA section,

@@ -76,6 +76,7 @@ private Q_SLOTS:
     void charactersXmlDoesNotAllowAreLeftOutWhenRead_data();
     void charactersXmlDoesNotAllowAreLeftOutWhenRead();
     void charactersXmlDoesNotAllowAreNeverWritten();
+    void leadingNulBytesAreNotTakenForUtf16();
     void repeatedElementsAreKeptWhereTheyStood_data();
     void repeatedElementsAreKeptWhereTheyStood();
 };
@@ -428,6 +429,22 @@ void TestPlcopenRobustness::charactersXmlDoesNotAllowAreNeverWritten()
     QCOMPARE(read.project.contentHeader.name, QStringLiteral("Plant 2"));
     QCOMPARE(read.project.types.pous.front().documentation->text, QStringLiteral("Pasted text"));
     QCOMPARE(read.project.types.pous.front().body()->text(), QStringLiteral("a := 1; (* pasted  *)\nb := 2;"));
+}
+
+// A file is UTF-16 or UTF-32 only when pugixml would guess so ('<' among its first bytes); before,
+// any NUL among the first two bytes made the reader skip its NUL mending, and the file did not read.
+void TestPlcopenRobustness::leadingNulBytesAreNotTakenForUtf16()
+{
+    const QByteArray project = "<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\"><fileHeader companyName=\"c\" "
+                               "productName=\"p\" productVersion=\"1\" creationDateTime=\"2020-01-01T00:00:00\"/>"
+                               "<contentHeader name=\"n\"><coordinateInfo><fbd><scaling x=\"1\" y=\"1\"/></fbd><ld>"
+                               "<scaling x=\"1\" y=\"1\"/></ld><sfc><scaling x=\"1\" y=\"1\"/></sfc></coordinateInfo>"
+                               "</contentHeader><types><dataTypes/><pous/></types><instances><configurations/></instances>"
+                               "</project>";
+    const plcopen::ReadResult read = plcopen::readProject(QByteArray("\0\0", 2) + project);
+    QVERIFY2(read.ok, qPrintable(diagnosticsText(read.diagnostics)));
+    QCOMPARE(diagnosticsText(read.diagnostics), QString());
+    QCOMPARE(read.project.contentHeader.name, QStringLiteral("n"));
 }
 
 void TestPlcopenRobustness::repeatedElementsAreKeptWhereTheyStood_data()
