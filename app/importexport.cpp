@@ -94,6 +94,7 @@ ImportExport::Read ImportExport::read(const QString &path)
                 .line = diagnostic.line,
                 .column = diagnostic.column});
         }
+        result.whole = xml.ok;
         if (!xml.fileError && xml.isProject)
             result.project = std::move(xml.project);
         else if (result.messages.isEmpty())
@@ -122,6 +123,7 @@ ImportExport::Read ImportExport::read(const QString &path)
             .line = diagnostic.location.line,
             .column = diagnostic.location.column});
     }
+    result.whole = !iec.diagnostics.hasUnrequestedErrors();
     result.project = std::move(iec.project);
     return result;
 }

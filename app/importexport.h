@@ -33,6 +33,9 @@ public:
     struct Read {
         std::optional<model::Project> project; // empty when nothing could be read
         QList<Message> messages; // the reader's diagnostics, located in the file
+        // Every part of the file is in `project`: no error but the text's own {error} pragmas
+        // (such as the one over a body CoDeSys 2.3 exported in its graphical form).
+        bool whole = true;
     };
     // Reads a PLCopen XML file (from any tool) or IEC 61131-3 text.
     [[nodiscard]] static Read read(const QString &path);

@@ -470,11 +470,11 @@ bool MainWindow::loadIecText(const QString &path, QString *error)
     m_messages->model().setMessages(QStringLiteral("import"), read.messages);
     const auto firstError = std::find_if(read.messages.cbegin(), read.messages.cend(),
         [](const Message &message) { return message.severity == Message::Severity::Error; });
-    if (read.project && firstError == read.messages.cend()) {
+    if (read.project && read.whole) { // its {error} pragmas stay listed, and the build lists them again
         adoptProject(std::move(*read.project));
         return true;
     }
-    // A text without a project always comes with an error (ImportExport::read).
+    // A text without a project, or with part of it not read, always comes with an error.
     if (error && firstError != read.messages.cend()) {
         const QString fileName = QFileInfo(path).fileName();
         *error = firstError->line > 0 ? tr("%1, line %2: %3").arg(fileName, QString::number(firstError->line), firstError->text)

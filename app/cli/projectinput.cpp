@@ -73,7 +73,7 @@ LoadedUnit loadUnit(const QString &path, interp::Diagnostics &diagnostics, QText
             return {ExitIoError, {}};
         interp::Diagnostics parsing;
         LoadedUnit loaded {ExitOk, {interp::parseUnit(*text, parsing), false}};
-        loaded.unit.parseErrors = parsing.hasErrors();
+        loaded.unit.parseErrors = parsing.hasUnrequestedErrors();
         diagnostics.append(parsing);
         return loaded;
     }

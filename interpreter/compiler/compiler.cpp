@@ -613,7 +613,7 @@ std::shared_ptr<const Module> compileText(QStringView source, Diagnostics &diagn
     std::shared_ptr<const Module> module;
     runOnCompilerStack([&] {
         const ast::CompilationUnit unit = parseUnit(source, diagnostics);
-        if (!diagnostics.hasErrors())
+        if (!diagnostics.hasUnrequestedErrors()) // an {error} pragma: the rest is checked too
             module = compile({&unit}, diagnostics, options);
     });
     return module;

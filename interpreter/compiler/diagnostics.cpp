@@ -19,6 +19,13 @@ void Diagnostics::error(const QString &pou, SourceLocation at, const QString &me
     ++m_errors;
 }
 
+void Diagnostics::requestedError(const QString &pou, SourceLocation at, const QString &message)
+{
+    m_list.push_back({Diagnostic::Severity::Error, pou, at, message, {}, true});
+    ++m_errors;
+    ++m_requestedErrors;
+}
+
 void Diagnostics::warning(const QString &pou, SourceLocation at, const QString &message, const QString &hint)
 {
     m_list.push_back({Diagnostic::Severity::Warning, pou, at, message, hint});
@@ -28,8 +35,10 @@ void Diagnostics::append(const Diagnostics &other)
 {
     for (const Diagnostic &d : other.m_list) {
         m_list.push_back(d);
-        if (d.severity == Diagnostic::Severity::Error)
+        if (d.severity == Diagnostic::Severity::Error) {
             ++m_errors;
+            m_requestedErrors += d.requested ? 1 : 0;
+        }
     }
 }
 

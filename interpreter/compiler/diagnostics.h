@@ -28,6 +28,9 @@ struct Diagnostic {
     SourceLocation location;
     QString message; // one sentence a student understands
     QString hint;    // what to do, when it is obvious; may be empty
+    // An {error '...'} pragma: the author's own message. The text around it read fine, so it is
+    // still type checked and opened in the IDE; the program does not run.
+    bool requested = false;
 
     // "Main:3:7: error: ... (hint: ...)"
     QString toString() const;
@@ -38,13 +41,17 @@ class Diagnostics
 public:
     void error(const QString &pou, SourceLocation at, const QString &message, const QString &hint = {});
     void warning(const QString &pou, SourceLocation at, const QString &message, const QString &hint = {});
+    void requestedError(const QString &pou, SourceLocation at, const QString &message);
     bool hasErrors() const { return m_errors > 0; }
+    // Errors other than requested ones: the text did not read, or the program is wrong.
+    bool hasUnrequestedErrors() const { return m_errors > m_requestedErrors; }
     const std::vector<Diagnostic> &all() const { return m_list; }
     void append(const Diagnostics &other);
 
 private:
     std::vector<Diagnostic> m_list;
     int m_errors = 0;
+    int m_requestedErrors = 0;
 };
 
 } // namespace iec::interp

@@ -232,7 +232,7 @@ private:
         if (word == QLatin1String("warning")) {
             m_diagnostics.warning(pou, at, message);
         } else if (word == QLatin1String("error")) {
-            m_diagnostics.error(pou, at, message);
+            m_diagnostics.requestedError(pou, at, message);
         } else if (!known.contains(word)) {
             m_diagnostics.warning(pou, at, QCoreApplication::translate("iec::interp::Compiler", "The pragma {%1} means nothing to IEC Studio; it is ignored.").arg(body.left(40)));
         }

@@ -237,7 +237,7 @@ ProjectUnit buildUnit(const model::Project &project, Diagnostics &diagnostics)
     ProjectUnit result;
     // Parsing and lowering on the compiler's stack, like the compile (limits.h).
     runOnCompilerStack([&] { result.unit = parseProjectText(project, parsing); });
-    result.parseErrors = parsing.hasErrors();
+    result.parseErrors = parsing.hasUnrequestedErrors();
     diagnostics.append(parsing);
     return result;
 }

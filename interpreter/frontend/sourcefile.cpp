@@ -44,7 +44,7 @@ void tidyLines(QString &text)
 // CoDeSys 2.3 exports an LD, FBD, CFC or SFC body as its own graphical form (_LD_BODY, _NETWORKS : 2,
 // _LD_CONTACT, ...), which is not IEC text. Each such body is turned into a comment, line by line so
 // that the file keeps its line numbers and the POU keeps the content, headed by an {error} pragma:
-// the parser reports it at the body, under the POU's name, and reads the rest of the file.
+// the parser reports it at the body, under the POU's name, and the rest of the file is still checked.
 void commentOutGraphicalBodies(QString &text)
 {
     if (!text.contains(QLatin1String("_BODY")))
@@ -52,10 +52,13 @@ void commentOutGraphicalBodies(QString &text)
     static const QRegularExpression start(QStringLiteral(R"(^[ \t]*_([A-Z]+)_BODY[ \t]*$)"));
     static const QRegularExpression end(
         QStringLiteral(R"(^[ \t]*END_(PROGRAM|FUNCTION_BLOCK|FUNCTION|ACTION|TRANSITION|METHOD|PROPERTY)[ \t;]*$)"));
+    // Where the next POU starts, should the body's end be missing: it is not swallowed too.
+    static const QRegularExpression next(
+        QStringLiteral(R"(^[ \t]*((PROGRAM|FUNCTION_BLOCK|FUNCTION|TYPE|CONFIGURATION)[ \t]+\S|VAR_GLOBAL\b))"));
     QStringList lines = text.split(QLatin1Char('\n'));
     bool inside = false;
     for (QString &line : lines) {
-        if (inside && end.match(line).hasMatch()) {
+        if (inside && (end.match(line).hasMatch() || next.match(line).hasMatch())) {
             inside = false;
         } else if (inside) {
             line.prepend(QLatin1String("// "));

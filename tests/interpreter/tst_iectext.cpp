@@ -299,6 +299,12 @@ void TestIecText::sourceFilesAreUtf8OrWindows1252_data()
             + QStringLiteral("\n// _NETWORKS : 1\n// _LD_CONTACT\n// END_X\nEND_PROGRAM\nFUNCTION_BLOCK F\n")
             + notRead.arg(QStringLiteral("FBD")) + QStringLiteral("\n// _ASSIGN\n  END_FUNCTION_BLOCK\nPROGRAM S\nx := 1;\nEND_PROGRAM")
         << 0;
+    // Without its END_PROGRAM the body ends where the next POU starts; that one is read.
+    QTest::newRow("graphical body without its end")
+        << QByteArray("PROGRAM L\n_SFC_BODY\n_STEP\nVAR_GLOBAL\nEND_VAR\nPROGRAM M\nEND_PROGRAM")
+        << QStringLiteral("PROGRAM L\n") + notRead.arg(QStringLiteral("SFC"))
+            + QStringLiteral("\n// _STEP\nVAR_GLOBAL\nEND_VAR\nPROGRAM M\nEND_PROGRAM")
+        << 0;
 }
 
 void TestIecText::sourceFilesAreUtf8OrWindows1252()

@@ -98,6 +98,9 @@ void TestSemantics::diagnostics_data()
     // A POU's own variable hides the global constant of its name, and has no value while it is laid out.
     row("a variable as an array bound", "VAR_GLOBAL CONSTANT N : INT := 3; END_VAR\nPROGRAM Main\nVAR N : INT := 5; a : ARRAY[0..N] OF INT; END_VAR\na[0] := 1;\nEND_PROGRAM",
         "Main:3:32: error: N is a variable, not a constant: it has no value before the program runs. (hint: declare it in VAR CONSTANT with an initial value)");
+    // The author's own {error}: the rest is still checked, and the program does not run.
+    row("error pragma", "PROGRAM Main\nVAR x : INT; END_VAR\n{error 'not finished'}\nx := y;\nEND_PROGRAM",
+        "Main:3:1: error: not finished\nMain:4:6: error: Unknown variable 'y'. (hint: declare it in a VAR section)");
     row("program selection", "PROGRAM A\nEND_PROGRAM\nPROGRAM B\nEND_PROGRAM\nCONFIGURATION C\nTASK T(INTERVAL := T#10ms);\nPROGRAM P WITH T : Nope;\nEND_CONFIGURATION",
         "C:7:9: error: There is no PROGRAM called Nope.");
 }
