@@ -48,7 +48,7 @@ int runConvert(const QStringList &arguments, Io io)
     const QString &input = arguments.at(0);
     const QString &output = arguments.at(1);
     if (formatOf(input) == FileFormat::Other || formatOf(output) == FileFormat::Other) {
-        io.err << "iecstudio-cli: convert reads and writes PLCopen XML (.xml) and IEC text (.st).\n";
+        io.err << "iecstudio-cli: convert reads PLCopen XML (.xml) and IEC text (.st, .exp) and writes .xml or .st.\n";
         return ExitUsage;
     }
     LoadedProject loaded = loadProject(input, io.err);

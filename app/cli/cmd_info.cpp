@@ -2,6 +2,7 @@
 
 #include "app/cli/commands.h"
 #include "app/cli/diagnostics.h"
+#include "app/cli/projectinput.h"
 
 #include "model/plcopen/reader.h"
 #include "model/statistics.h"
@@ -72,18 +73,26 @@ int runInfo(const QStringList &arguments, Io io)
         io.err << "Usage: iecstudio-cli info FILE [--json]\n";
         return ExitUsage;
     }
+    const auto print = [&](const model::Project &project) {
+        const model::ProjectStatistics stats = model::statistics(project);
+        if (json)
+            printJson(project.contentHeader.name, stats, io.out);
+        else
+            printText(project.contentHeader.name, stats, io.out);
+    };
+    if (formatOf(files.front()) == FileFormat::St) { // IEC text (.st, .exp), read as check reads it
+        const LoadedProject loaded = loadProject(files.front(), io.err);
+        if (loaded.status != ExitIoError)
+            print(loaded.project);
+        return loaded.status;
+    }
     const model::plcopen::ReadResult result = model::plcopen::readProjectFile(files.front());
     printDiagnostics(files.front(), result.diagnostics, io.err);
     if (result.fileError)
         return ExitIoError;
     if (!result.isProject)
         return ExitFailed; // nothing to count
-    const model::ProjectStatistics stats = model::statistics(result.project);
-    const QString name = result.project.contentHeader.name;
-    if (json)
-        printJson(name, stats, io.out);
-    else
-        printText(name, stats, io.out);
+    print(result.project);
     return result.ok ? ExitOk : ExitFailed;
 }
 

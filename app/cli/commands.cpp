@@ -28,7 +28,7 @@ int printUsage(QTextStream &stream)
 {
     stream << "Usage: iecstudio-cli COMMAND [ARGUMENTS]\n\n"
            << "IEC Studio on the command line: check, inspect, convert, run and render IEC 61131-3 projects\n"
-           << "(PLCopen XML or IEC textual .st).\n\n"
+           << "(PLCopen XML, or IEC text: .st, and CoDeSys 2.3 exports, .exp).\n\n"
            << "Commands:\n";
     for (const Command &command : kCommands)
         stream << "  " << qSetFieldWidth(10) << Qt::left << command.name << qSetFieldWidth(0) << command.summary

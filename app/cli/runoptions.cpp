@@ -91,7 +91,7 @@ std::optional<RunOptions> parseRunOptions(const QStringList &arguments, QString 
             return std::nullopt;
     }
     if (options.file.isEmpty()) {
-        error = QStringLiteral("run needs a FILE (.xml or .st).");
+        error = QStringLiteral("run needs a FILE (.xml, .st or .exp).");
         return std::nullopt;
     }
     return options;

@@ -32,6 +32,7 @@ private Q_SLOTS:
     void checkNamesGraphicalPousOfTheCorpus();
     void codesysExportInWindows1252Runs();
     void codesysGraphicalBodyIsNamed();
+    void infoCountsIecText();
     void processImageThroughSetAndWatch_data();
     void processImageThroughSetAndWatch();
     void loggerWritesToStderr();
@@ -446,7 +447,7 @@ void TestCli::codesysExportInWindows1252Runs()
 }
 
 // CoDeSys 2.3 exports LD, FBD, CFC and SFC bodies in a graphical form of its own: one error at such a
-// body, naming its POU, and the POUs beside it are still read.
+// body, naming its POU, and the POUs beside it are still checked.
 void TestCli::codesysGraphicalBodyIsNamed()
 {
     QTemporaryDir dir;
@@ -456,14 +457,34 @@ void TestCli::codesysGraphicalBodyIsNamed()
         "_LD_ASSIGN\r\n_LD_CONTACT\r\na\r\n_EXPRESSION\r\n_POSITIV\r\n_EXPRESSION\r\n_POSITIV\r\n\r\nENABLELIST : 0\r\n"
         "ENABLELIST_END\r\n_OUTPUTS : 1\r\n_OUTPUT\r\n_POSITIV\r\n_NO_SET\r\nx\r\nEND_PROGRAM\r\n\r\n"
         "(* @NESTEDCOMMENTS := 'Yes' *)\r\nPROGRAM PLC_PRG\r\nVAR\r\n\tn : INT;\r\nEND_VAR\r\n"
-        "(* @END_DECLARATION := '0' *)\r\nn := n + 1;\r\nn := n + ;\r\nEND_PROGRAM\r\n"));
+        "(* @END_DECLARATION := '0' *)\r\nn := n + 1;\r\nm := 2;\r\nEND_PROGRAM\r\n"));
     const Result checked = cli({QStringLiteral("check"), path});
     QCOMPARE(checked.exitCode, 1);
     QCOMPARE(checked.out,
         path + QStringLiteral(":LdProg:9:1: error: CoDeSys 2.3 exported this LD body in its own graphical form, which IEC "
                               "Studio does not read; it is kept below as a comment. Export the POU from CoDeSys as PLCopen "
                               "XML to open it as a diagram.\n")
-            + path + QStringLiteral(":PLC_PRG:40:10: error: Expected a value, a variable or a function call but found ';'.\n"));
+            + path + QStringLiteral(":PLC_PRG:40:1: error: Unknown variable 'm'. (hint: declare it in a VAR section)\n"));
+}
+
+void TestCli::infoCountsIecText()
+{
+    QTemporaryDir dir;
+    const QString path = writeFile(dir, QStringLiteral("two.st"),
+        QStringLiteral("PROGRAM Main\nVAR x : INT; END_VAR\nx := x + 1;\nEND_PROGRAM\n"
+                       "FUNCTION_BLOCK Fb\nVAR_INPUT a : BOOL; b : INT; END_VAR\nEND_FUNCTION_BLOCK\n"));
+    const Result info = cli({QStringLiteral("info"), path});
+    QCOMPARE(info.err, QString());
+    QCOMPARE(info.exitCode, 0);
+    QCOMPARE(info.out,
+        QStringLiteral("project: two\nPOUs: 2\n  function: 0\n  functionBlock: 1\n  program: 1\nPOUs by language:\n"
+                       "  FBD: 0\n  IL: 0\n  LD: 0\n  SFC: 0\n  ST: 2\n  none: 0\ndata types: 0\nvariables: 3\n"
+                       "actions: 0\ntransitions: 0\ngraphical elements: 0\n"));
+    // Text that does not read: its errors, and exit 1.
+    const QString broken = writeFile(dir, QStringLiteral("broken.st"), QStringLiteral("PROGRAM Main\nx := ;\nEND_PROGRAM\n"));
+    const Result failed = cli({QStringLiteral("info"), broken});
+    QCOMPARE(failed.exitCode, 1);
+    QCOMPARE(failed.err, broken + QStringLiteral(":Main:2:6: error: Expected a value, a variable or a function call but found ';'.\n"));
 }
 
 void TestCli::checkNamesGraphicalPousOfTheCorpus()
@@ -537,7 +558,7 @@ void TestCli::usageErrors_data()
     QTest::addColumn<QStringList>("arguments");
     QTest::addColumn<QString>("firstLine");
     QTest::newRow("run without file") << QStringList {QStringLiteral("run")}
-                                      << QStringLiteral("iecstudio-cli: run needs a FILE (.xml or .st).");
+                                      << QStringLiteral("iecstudio-cli: run needs a FILE (.xml, .st or .exp).");
     QTest::newRow("bad cycles") << QStringList {QStringLiteral("run"), QStringLiteral("x.st"),
         QStringLiteral("--cycles"), QStringLiteral("many")}
                                 << QStringLiteral(
@@ -554,7 +575,7 @@ void TestCli::usageErrors_data()
         QStringLiteral("x")} << QStringLiteral("iecstudio-cli: --set needs NAME=VALUE or NAME=VALUE@CYCLE, not 'x'.");
     QTest::newRow("convert to .txt")
         << QStringList {QStringLiteral("convert"), QStringLiteral("a.xml"), QStringLiteral("b.txt")}
-        << QStringLiteral("iecstudio-cli: convert reads and writes PLCopen XML (.xml) and IEC text (.st).");
+        << QStringLiteral("iecstudio-cli: convert reads PLCopen XML (.xml) and IEC text (.st, .exp) and writes .xml or .st.");
 }
 
 void TestCli::usageErrors()
