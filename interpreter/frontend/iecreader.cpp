@@ -525,6 +525,15 @@ InterfaceText readInterfaceText(QStringView text)
 
 TextReadResult readIecText(QStringView text, const QString &projectName)
 {
+    // Line ends as the file reader leaves them (decodeSourceFile): an XML file keeps no CR, so a
+    // body holding one would read back from the saved project as another text (found by fuzz_iectext).
+    QString withoutCr;
+    if (text.contains(QLatin1Char('\r'))) {
+        withoutCr = text.toString();
+        withoutCr.replace(QLatin1String("\r\n"), QLatin1String("\n"));
+        withoutCr.replace(QLatin1Char('\r'), QLatin1Char('\n'));
+        text = withoutCr;
+    }
     TextReadResult result;
     result.project = emptyProject(projectName);
     reportUnstorableCharacters(text, result.diagnostics);
