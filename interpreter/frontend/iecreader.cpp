@@ -7,6 +7,7 @@
 #include "interpreter/compiler/parser.h"
 #include "interpreter/frontend/codesysmembers.h"
 #include "interpreter/frontend/iecprinter.h"
+#include "interpreter/frontend/sourcefile.h"
 #include "interpreter/frontend/tokencursor.h"
 #include "interpreter/sfc/sfctext.h"
 
@@ -530,8 +531,7 @@ TextReadResult readIecText(QStringView text, const QString &projectName)
     QString withoutCr;
     if (text.contains(QLatin1Char('\r'))) {
         withoutCr = text.toString();
-        withoutCr.replace(QLatin1String("\r\n"), QLatin1String("\n"));
-        withoutCr.replace(QLatin1Char('\r'), QLatin1Char('\n'));
+        useLfLineEnds(withoutCr);
         text = withoutCr;
     }
     TextReadResult result;

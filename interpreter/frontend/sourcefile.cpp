@@ -32,8 +32,7 @@ int firstLineNotUtf8(const QByteArray &bytes)
 // \r\n and a lone \r become \n; export marker lines become empty.
 void tidyLines(QString &text)
 {
-    text.replace(QLatin1String("\r\n"), QLatin1String("\n"));
-    text.replace(QLatin1Char('\r'), QLatin1Char('\n'));
+    useLfLineEnds(text);
     if (!text.contains(QLatin1String("(* @")))
         return;
     static const QRegularExpression marker(QStringLiteral(R"(^[ \t]*\(\* @[A-Z_]+ := '[^'\n]*' \*\)[ \t]*$)"),
@@ -76,6 +75,12 @@ void commentOutGraphicalBodies(QString &text)
 }
 
 } // namespace
+
+void useLfLineEnds(QString &text)
+{
+    text.replace(QLatin1String("\r\n"), QLatin1String("\n"));
+    text.replace(QLatin1Char('\r'), QLatin1Char('\n'));
+}
 
 SourceText decodeSourceFile(const QByteArray &bytes)
 {

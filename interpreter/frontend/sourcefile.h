@@ -21,6 +21,9 @@ struct SourceText {
 
 [[nodiscard]] SourceText decodeSourceFile(const QByteArray &bytes);
 
+// CR LF and a lone CR become LF (an XML file keeps no CR either).
+void useLfLineEnds(QString &text);
+
 // What to tell the user about a file read as Windows-1252 (translated).
 [[nodiscard]] QString windows1252Note();
 
